@@ -1,0 +1,51 @@
+// Pieces every subcommand shares: exit codes, options, loading inputs, printing errors.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/diagnostics.hpp"
+#include "harness/vulkan_harness.hpp"
+#include "library/shader_library.hpp"
+#include "load/material_desc.hpp"
+
+namespace mb::cli {
+
+// Documented in docs/cli.md.
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitCheckFailed = 1,   // validation/eval found errors beyond tolerance (or layer messages)
+  kExitUsage = 2,         // bad command line
+  kExitInputError = 3,    // bad input file: JSON, unknown brick, GLSL error, missing file
+  kExitDeviceError = 4,   // no Vulkan device, or a Vulkan failure
+  kExitInternalError = 5  // a bug in matbricks
+};
+
+struct GlobalOptions {
+  std::string shaderlib;         // --shaderlib; empty = default root
+  std::string device;            // --device substring
+  bool vulkanValidation = false; // --vk-validation or MATBRICKS_VALIDATION=1
+  std::string diagnosticsFormat = "text";  // --diagnostics-format text|json
+};
+
+ShaderLibrary loadLibrary(const GlobalOptions& g);
+// Loads every material, collecting the diagnostics of all files before failing.
+std::vector<MaterialDesc> loadMaterials(const std::vector<std::string>& paths, const ShaderLibrary& lib);
+std::unique_ptr<harness::VulkanHarness> openDevice(const GlobalOptions& g);
+// Prints validation-layer messages to stderr; returns true if there were any.
+bool reportLayerMessages(const harness::VulkanHarness& gpu);
+
+void printDiagnostics(const std::vector<Diagnostic>& diags, const GlobalOptions& g);
+
+// Subcommands: each registers itself on `app` and returns the code to exit with.
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+Command addCompileCommand(CLI::App& app, GlobalOptions& g);
+Command addValidateCommand(CLI::App& app, GlobalOptions& g);
+Command addBricksCommand(CLI::App& app, GlobalOptions& g);
+Command addEvalCommand(CLI::App& app, GlobalOptions& g);
+
+}  // namespace mb::cli

@@ -1,0 +1,75 @@
+// matbricks validate: run probes on the GPU against the double references.
+#include <iostream>
+
+#include "cli/cli_common.hpp"
+#include "permute/permutation.hpp"
+#include "validate/validation.hpp"
+
+namespace mb::cli {
+namespace {
+
+struct ValidateArgs {
+  std::vector<std::string> materials;
+  std::vector<std::string> bricks;
+  bool allBricks = false;
+  uint64_t samples = 4096;
+  uint64_t seed = 1;
+  bool json = false;
+};
+
+int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
+  if (a.materials.empty() && a.bricks.empty() && !a.allBricks)
+    throw CLI::ValidationError("validate", "give MATERIAL files, --brick ID or --all-bricks");
+  ShaderLibrary lib = loadLibrary(g);
+  std::vector<MaterialDesc> materials = loadMaterials(a.materials, lib);
+  std::vector<const Brick*> bricks;
+  if (a.allBricks) {
+    for (const auto& b : lib.bricks()) bricks.push_back(&b);
+  }
+  for (const auto& id : a.bricks) {
+    const Brick* b = lib.findBrick(id);
+    if (!b) {
+      throw DiagnosticError({{Severity::Error, "E-UNKNOWN-BRICK", {"<command line>", 0, 0},
+                              "unknown brick '" + id + "'", didYouMean(id, lib.brickIds())}});
+    }
+    bricks.push_back(b);
+  }
+  auto gpu = openDevice(g);
+
+  std::vector<ValidationRecord> records;
+  for (const Brick* b : bricks)
+    records.push_back(validateProbe(*gpu, buildBrickProbe(lib, *b), "brick", a.samples, a.seed));
+  for (const auto& perm : permutationsFor(materials))
+    records.push_back(validateProbe(*gpu, buildPermutationProbe(lib, perm), "permutation", a.samples, a.seed));
+
+  bool allPassed = true;
+  for (const auto& r : records) allPassed = allPassed && r.passed();
+  if (a.json) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& r : records) out.push_back(toJson(r));
+    std::cout << out.dump(2) << "\n";
+  } else {
+    std::cout << "device: " << gpu->deviceName() << "\n" << formatValidationTable(records);
+    for (const auto& r : records)
+      if (!r.passed())
+        std::cout << "worst input of " << r.key << ": " << r.worstInput << "\n";
+  }
+  bool layerMessages = reportLayerMessages(*gpu);
+  return allPassed && !layerMessages ? kExitOk : kExitCheckFailed;
+}
+
+}  // namespace
+
+Command addValidateCommand(CLI::App& app, GlobalOptions& g) {
+  auto args = std::make_shared<ValidateArgs>();
+  CLI::App* cmd = app.add_subcommand("validate", "Run permutations and bricks on the GPU and compare with the double-precision references");
+  cmd->add_option("materials", args->materials, "Material JSON files")->check(CLI::ExistingFile);
+  cmd->add_option("--brick", args->bricks, "Validate this brick (repeatable)");
+  cmd->add_flag("--all-bricks", args->allBricks, "Validate every brick of the library");
+  cmd->add_option("--samples", args->samples, "Samples per permutation or brick")->check(CLI::Range(uint64_t{1}, uint64_t{50000000}));
+  cmd->add_option("--seed", args->seed, "Sampler seed");
+  cmd->add_flag("--json", args->json, "One JSON record per permutation or brick");
+  return {cmd, [args, &g] { return runValidate(*args, g); }};
+}
+
+}  // namespace mb::cli

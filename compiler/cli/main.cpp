@@ -1,0 +1,47 @@
+// matbricks: the command-line front end. Each subcommand lives in its own cmd_*.cpp.
+#include <iostream>
+
+#include "cli/cli_common.hpp"
+#include "compile/glsl_compiler.hpp"
+
+using namespace mb;
+using namespace mb::cli;
+
+int main(int argc, char** argv) {
+  CLI::App app{"matbricks " MB_VERSION ": PBR brick library, material compiler and validator"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("matbricks " MB_VERSION " (") + toolchainVersion() + ")");
+  GlobalOptions g;
+  app.add_option("--shaderlib", g.shaderlib, "Brick library root (default: $MATBRICKS_SHADERLIB or the source tree's shaderlib/)");
+  app.add_option("--device", g.device, "Vulkan device: case-insensitive substring of its name (default: lavapipe)");
+  app.add_flag("--vk-validation", g.vulkanValidation, "Enable the Khronos validation layer; any message fails the run");
+  app.add_option("--diagnostics-format", g.diagnosticsFormat, "How errors are printed")
+      ->check(CLI::IsMember({"text", "json"}));
+
+  std::vector<Command> commands{addCompileCommand(app, g), addValidateCommand(app, g),
+                                addBricksCommand(app, g), addEvalCommand(app, g)};
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitUsage;
+  }
+  try {
+    for (auto& c : commands)
+      if (c.app->parsed()) return c.run();
+  } catch (const DiagnosticError& e) {
+    printDiagnostics(e.diagnostics(), g);
+    return kExitInputError;
+  } catch (const CLI::Error& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitUsage;
+  } catch (const harness::HarnessError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitDeviceError;
+  } catch (const std::exception& e) {
+    std::cerr << "internal error: " << e.what() << "\n";
+    return kExitInternalError;
+  }
+  return kExitUsage;
+}

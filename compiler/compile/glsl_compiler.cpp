@@ -1,0 +1,195 @@
+#include "compile/glsl_compiler.hpp"
+
+#include <chrono>
+#include <map>
+#include <mutex>
+#include <regex>
+#include <sstream>
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+#include <glslang/build_info.h>
+#include <spirv-tools/libspirv.hpp>
+#include <spirv-tools/optimizer.hpp>
+
+namespace mb {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// glslang must be initialized once per process (the ~130 ms first-compile cost is paid once).
+void ensureGlslangInitialized() {
+  static std::once_flag once;
+  std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+constexpr auto kTargetEnv = SPV_ENV_VULKAN_1_1;
+
+// Maps (file, line) of the emitted source, as its #line directives define them, to the text
+// of that line, so a diagnostic can name a column (glslang 12 reports none).
+class LineMap {
+ public:
+  LineMap(const std::string& source, const std::string& displayName) {
+    std::istringstream in(source);
+    std::string text, file = displayName;
+    int line = 1;
+    static const std::regex lineDirective(R"(^\s*#\s*line\s+(\d+)(?:\s+\"([^\"]*)\")?)");
+    while (std::getline(in, text)) {
+      std::smatch m;
+      if (std::regex_search(text, m, lineDirective)) {
+        line = std::stoi(m[1].str());
+        if (m[2].matched) file = m[2].str();
+        continue;
+      }
+      lines_[{file, line}] = text;
+      ++line;
+    }
+  }
+  const std::string* find(const std::string& file, int line) const {
+    auto it = lines_.find({file, line});
+    return it == lines_.end() ? nullptr : &it->second;
+  }
+
+ private:
+  std::map<std::pair<std::string, int>, std::string> lines_;
+};
+
+// Turns glslang's info log ("ERROR: file:line: 'tok' : message") into diagnostics.
+std::vector<Diagnostic> parseInfoLog(const std::string& log, const LineMap& lines,
+                                     const std::string& displayName) {
+  std::vector<Diagnostic> out;
+  std::istringstream in(log);
+  std::string text;
+  static const std::regex entry(R"(^(ERROR|WARNING): (.*):(\d+): (.*)$)");
+  static const std::regex quoted(R"('([^']+)')");
+  while (std::getline(in, text)) {
+    std::smatch m;
+    if (!std::regex_match(text, m, entry)) {
+      // Summary lines such as "ERROR: 1 compilation errors.  No code generated." add nothing.
+      continue;
+    }
+    std::string body = m[4].str();
+    while (!body.empty() && body.back() == ' ') body.pop_back();
+    // glslang follows a fatal error with "'' : compilation terminated": it adds nothing.
+    if (body.find("compilation terminated") != std::string::npos) continue;
+    Diagnostic d;
+    d.severity = m[1] == "ERROR" ? Severity::Error : Severity::Warning;
+    d.code = "E-GLSL";
+    d.where.file = m[2].str() == "0" ? displayName : m[2].str();
+    d.where.line = std::stoi(m[3].str());
+    d.message = "GLSL: " + body;
+    d.where.column = 1;
+    std::smatch q;
+    if (std::regex_search(body, q, quoted)) {
+      if (const std::string* src = lines.find(d.where.file, d.where.line)) {
+        auto pos = src->find(q[1].str());
+        if (pos != std::string::npos) d.where.column = static_cast<int>(pos) + 1;
+      }
+    }
+    if (d.severity == Severity::Error) out.push_back(d);
+  }
+  if (out.empty()) {
+    out.push_back({Severity::Error, "E-GLSL", {displayName, 0, 0}, "GLSL: " + log, ""});
+  }
+  return out;
+}
+
+std::vector<uint32_t> frontEnd(const std::string& source, const std::string& displayName) {
+  ensureGlslangInitialized();
+  glslang::TShader shader(EShLangCompute);
+  const char* text = source.c_str();
+  const char* name = displayName.c_str();
+  shader.setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
+  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
+  const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+  if (!shader.parse(GetDefaultResources(), 450, false, messages)) {
+    throw DiagnosticError(parseInfoLog(shader.getInfoLog(), LineMap(source, displayName), displayName));
+  }
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages)) {
+    throw DiagnosticError({{Severity::Error, "E-GLSL-LINK", {displayName, 0, 0},
+                            std::string("GLSL link: ") + program.getInfoLog(), ""}});
+  }
+  glslang::SpvOptions options;
+  options.disableOptimizer = true;  // spirv-opt runs below, with the performance recipe
+  options.generateDebugInfo = false;
+  std::vector<uint32_t> spirv;
+  spv::SpvBuildLogger logger;
+  glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), spirv, &logger, &options);
+  return spirv;
+}
+
+void validateSpirv(const std::vector<uint32_t>& spirv, const std::string& displayName,
+                   const char* stage) {
+  spvtools::SpirvTools tools(kTargetEnv);
+  std::string messages;
+  tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t& pos,
+                               const char* msg) {
+    messages += "[word " + std::to_string(pos.index) + "] " + msg + "; ";
+  });
+  if (!tools.Validate(spirv)) {
+    throw DiagnosticError({{Severity::Error, "E-SPIRV-VAL", {displayName, 0, 0},
+                            std::string("spirv-val rejected the module ") + stage + ": " + messages,
+                            ""}});
+  }
+}
+
+}  // namespace
+
+CompileResult compileComputeGlsl(const std::string& source, const std::string& displayName,
+                                 const CompileOptions& options) {
+  CompileResult result;
+  auto t0 = Clock::now();
+  std::vector<uint32_t> spirv = frontEnd(source, displayName);
+  result.frontEndMs = msSince(t0);
+
+  auto t1 = Clock::now();
+  if (options.validate) validateSpirv(spirv, displayName, "after glslang");
+  if (options.optimize) {
+    // spvtools::Optimizer is single-use: one per compile.
+    spvtools::Optimizer optimizer(kTargetEnv);
+    std::string messages;
+    optimizer.SetMessageConsumer([&](spv_message_level_t level, const char*, const spv_position_t&,
+                                     const char* msg) {
+      if (level <= SPV_MSG_ERROR) messages += std::string(msg) + "; ";
+    });
+    optimizer.RegisterPerformancePasses();
+    std::vector<uint32_t> optimized;
+    if (!optimizer.Run(spirv.data(), spirv.size(), &optimized)) {
+      throw DiagnosticError({{Severity::Error, "E-SPIRV-OPT", {displayName, 0, 0},
+                              "spirv-opt failed: " + messages, ""}});
+    }
+    spirv = std::move(optimized);
+    if (options.validate) validateSpirv(spirv, displayName, "after spirv-opt");
+  }
+  result.optimizeMs = msSince(t1);
+  result.spirv = std::move(spirv);
+  return result;
+}
+
+std::string toolchainVersion() {
+  std::ostringstream s;
+  s << "glslang " << GLSLANG_VERSION_MAJOR << "." << GLSLANG_VERSION_MINOR << "."
+    << GLSLANG_VERSION_PATCH << GLSLANG_VERSION_FLAVOR << "; " << spvSoftwareVersionString();
+  return s.str();
+}
+
+size_t spirvInstructionCount(const std::vector<uint32_t>& spirv) {
+  size_t count = 0;
+  for (size_t i = 5; i < spirv.size();) {  // 5-word header
+    uint32_t words = spirv[i] >> 16;
+    if (words == 0) break;
+    i += words;
+    ++count;
+  }
+  return count;
+}
+
+}  // namespace mb

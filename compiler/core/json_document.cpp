@@ -1,0 +1,175 @@
+#include "core/json_document.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace mb {
+
+SourceLocation locationOfOffset(const std::string& text, size_t offset, const std::string& file) {
+  SourceLocation loc{file, 1, 1};
+  for (size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++loc.line;
+      loc.column = 1;
+    } else {
+      ++loc.column;
+    }
+  }
+  return loc;
+}
+
+std::string JsonDocument::escape(const std::string& token) {
+  std::string out;
+  for (char c : token) {
+    if (c == '~') out += "~0";
+    else if (c == '/') out += "~1";
+    else out += c;
+  }
+  return out;
+}
+
+namespace {
+
+// Walks valid JSON text and records positions. It never needs to report errors itself:
+// nlohmann has already accepted the text.
+class PositionScanner {
+ public:
+  PositionScanner(const std::string& text, std::map<std::string, size_t>& values,
+                  std::map<std::string, size_t>& keys)
+      : t_(text), values_(values), keys_(keys) {}
+
+  void run() {
+    skipSpace();
+    value("");
+  }
+
+ private:
+  void skipSpace() {
+    while (i_ < t_.size() && (t_[i_] == ' ' || t_[i_] == '\t' || t_[i_] == '\n' || t_[i_] == '\r'))
+      ++i_;
+  }
+  std::string stringToken() {  // at the opening quote; returns the decoded-enough key
+    std::string s;
+    ++i_;
+    while (i_ < t_.size() && t_[i_] != '"') {
+      if (t_[i_] == '\\') {
+        s += t_[i_++];
+      }
+      if (i_ < t_.size()) s += t_[i_++];
+    }
+    ++i_;
+    return s;
+  }
+  void value(const std::string& ptr) {
+    values_[ptr] = i_;
+    if (i_ >= t_.size()) return;
+    char c = t_[i_];
+    if (c == '{') {
+      ++i_;
+      skipSpace();
+      while (i_ < t_.size() && t_[i_] != '}') {
+        size_t keyPos = i_;
+        std::string raw = stringToken();
+        // Keys with escapes are rare in our formats; decode them through nlohmann.
+        std::string key = nlohmann::json::parse("\"" + raw + "\"").get<std::string>();
+        std::string child = ptr + "/" + JsonDocument::escape(key);
+        keys_[child] = keyPos;
+        skipSpace();
+        ++i_;  // ':'
+        skipSpace();
+        value(child);
+        skipSpace();
+        if (i_ < t_.size() && t_[i_] == ',') {
+          ++i_;
+          skipSpace();
+        }
+      }
+      ++i_;
+    } else if (c == '[') {
+      ++i_;
+      skipSpace();
+      size_t index = 0;
+      while (i_ < t_.size() && t_[i_] != ']') {
+        value(ptr + "/" + std::to_string(index++));
+        skipSpace();
+        if (i_ < t_.size() && t_[i_] == ',') {
+          ++i_;
+          skipSpace();
+        }
+      }
+      ++i_;
+    } else if (c == '"') {
+      stringToken();
+    } else {
+      while (i_ < t_.size() && std::string_view(",]} \t\r\n").find(t_[i_]) == std::string_view::npos)
+        ++i_;
+    }
+  }
+
+  const std::string& t_;
+  std::map<std::string, size_t>& values_;
+  std::map<std::string, size_t>& keys_;
+  size_t i_ = 0;
+};
+
+}  // namespace
+
+JsonDocument JsonDocument::parse(const std::string& text, const std::string& file) {
+  JsonDocument doc;
+  doc.file_ = file;
+  try {
+    doc.root_ = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    // e.byte is 1-based and points just past the offending character.
+    size_t offset = e.byte > 0 ? e.byte - 1 : 0;
+    std::string what = e.what();
+    // nlohmann's message: "[json.exception.parse_error.101] parse error at line 3, column 5:
+    // syntax error while parsing object - unexpected '}'; expected string literal"
+    auto pos = what.find("syntax error");
+    std::string msg = pos != std::string::npos ? what.substr(pos) : what;
+    throw DiagnosticError({{Severity::Error, "E-JSON-SYNTAX", locationOfOffset(text, offset, file),
+                            "invalid JSON: " + msg, ""}});
+  }
+  std::map<std::string, size_t> values, keys;
+  PositionScanner(text, values, keys).run();
+  std::vector<size_t> lineStarts{0};
+  for (size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\n') lineStarts.push_back(i + 1);
+  auto at = [&](size_t off) {
+    auto it = std::upper_bound(lineStarts.begin(), lineStarts.end(), off);
+    size_t line = static_cast<size_t>(it - lineStarts.begin());
+    return SourceLocation{file, static_cast<int>(line), static_cast<int>(off - lineStarts[line - 1] + 1)};
+  };
+  for (auto& [p, off] : values) doc.values_[p] = at(off);
+  for (auto& [p, off] : keys) doc.keys_[p] = at(off);
+  return doc;
+}
+
+JsonDocument JsonDocument::load(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw DiagnosticError({{Severity::Error, "E-FILE-NOT-FOUND", {path, 0, 0},
+                            "cannot open file: expected a readable JSON file", ""}});
+  }
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse(ss.str(), path);
+}
+
+SourceLocation JsonDocument::valueAt(const std::string& pointer) const {
+  std::string p = pointer;
+  while (true) {
+    auto it = values_.find(p);
+    if (it != values_.end()) return it->second;
+    if (p.empty()) return {file_, 1, 1};
+    p = p.substr(0, p.rfind('/'));
+  }
+}
+
+SourceLocation JsonDocument::keyAt(const std::string& pointer) const {
+  auto it = keys_.find(pointer);
+  return it != keys_.end() ? it->second : valueAt(pointer);
+}
+
+}  // namespace mb

@@ -1,0 +1,34 @@
+#include "emit/glsl_writer.hpp"
+
+#include <charconv>
+
+namespace mb {
+
+void GlslWriter::line(const std::string& text) {
+  out_ += text;
+  out_ += '\n';
+  ++lines_;
+}
+
+void GlslWriter::include(const std::string& sourcePath, const std::string& text) {
+  line("#line 1 \"" + sourcePath + "\"");
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    line(text.substr(start, end - start));
+    start = end + 1;
+  }
+  // The directive names the number of the line that follows it.
+  line("#line " + std::to_string(lines_ + 2) + " \"" + displayName_ + "\"");
+}
+
+std::string glslFloat(double value) {
+  char buf[64];
+  auto res = std::to_chars(buf, buf + sizeof buf, static_cast<float>(value));
+  std::string s(buf, res.ptr);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // "1" -> "1.0"
+  return s;
+}
+
+}  // namespace mb

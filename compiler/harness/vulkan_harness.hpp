@@ -1,0 +1,79 @@
+// A minimal Vulkan compute harness: runs a probe kernel over N records of floats and
+// returns the outputs and the GPU time measured with timestamp queries.
+//
+// Kernel contract (emit/probe writes kernels that follow it):
+//   layout(local_size_x = 64) in;
+//   layout(std430, set = 0, binding = 0) readonly buffer MbIn  { float mbIn[];  };
+//   layout(std430, set = 0, binding = 1) writeonly buffer MbOut { float mbOut[]; };
+//   layout(push_constant) uniform MbPush { uint count; } mbPush;
+// Record i of the current chunk reads mbIn[i*inStride ...] and writes mbOut[i*outStride ...];
+// invocations with i >= count return at once. The harness splits a run into chunks so that
+// no dispatch exceeds maxComputeWorkGroupCount[0] groups and no bound range exceeds
+// maxStorageBufferRange, binding each chunk's sub-ranges (aligned to
+// minStorageBufferOffsetAlignment).
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace mb::harness {
+
+// No usable Vulkan instance or device, or a Vulkan call failed. The message is one line.
+class HarnessError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct DeviceOptions {
+  // Case-insensitive substring of the device name to pick; empty = prefer lavapipe
+  // ("llvmpipe"), else the first device with a compute queue.
+  std::string device;
+  // Enable VK_LAYER_KHRONOS_validation and capture every message it emits.
+  bool validation = false;
+  // Test hook: cap chunk sizes below the device limits (0 = use device limits).
+  uint32_t maxRecordsPerChunk = 0;
+};
+
+struct RunResult {
+  std::vector<float> outputs;  // count * outStride floats
+  double gpuMs = 0.0;          // sum over chunks of timestamp deltas
+  uint32_t chunks = 0;
+  // False when the queue has no timestamps (timestampValidBits == 0): gpuMs is then the
+  // host-measured time from submit to fence signal.
+  bool gpuTimestamps = true;
+};
+
+class Kernel;
+
+class VulkanHarness {
+ public:
+  // Throws HarnessError("no Vulkan device ...") when there is none.
+  explicit VulkanHarness(const DeviceOptions& options = {});
+  ~VulkanHarness();
+  VulkanHarness(const VulkanHarness&) = delete;
+  VulkanHarness& operator=(const VulkanHarness&) = delete;
+
+  std::string deviceName() const;
+  bool isLavapipe() const;
+  uint32_t maxWorkGroupCountX() const;
+  uint64_t maxStorageBufferRange() const;
+
+  // Creates the compute pipeline for a kernel following the contract above.
+  std::shared_ptr<Kernel> createKernel(const std::vector<uint32_t>& spirv);
+
+  // Runs `count` records. `inputs` holds count * inStride floats.
+  RunResult run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride,
+                uint32_t outStride, uint64_t count);
+
+  // Messages the validation layer emitted so far (empty when validation is off).
+  std::vector<std::string> validationMessages() const;
+  void clearValidationMessages();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace mb::harness

@@ -1,0 +1,118 @@
+// The brick library as data: slots (shared signatures), bricks (GLSL + citation + domain +
+// tolerance) and shading models (skeleton + inputs), read from shaderlib/manifest.json.
+#pragma once
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/diagnostics.hpp"
+#include "library/value_type.hpp"
+
+namespace mb {
+
+struct SlotParam {
+  std::string name;
+  ValueType type;
+};
+
+// A role in a lobe. All bricks of a slot share `returns` and `params`.
+struct Slot {
+  std::string name;
+  std::string description;
+  ValueType returns = ValueType::Float;
+  std::vector<SlotParam> params;
+};
+
+// Inclusive range of a scalar probe input, or of each component of a vector input.
+struct Range {
+  double lo = 0.0;
+  double hi = 1.0;
+};
+
+// Where the sampler may go for a Geometry input: n.v and n.l are drawn in these ranges.
+struct GeometryDomain {
+  Range NoV{1e-3, 1.0};
+  Range NoL{0.0, 1.0};
+};
+
+struct Tolerance {
+  double abs = 0.0;  // absolute part
+  double rel = 0.0;  // relative part: pass when |gpu-ref| <= abs + rel*|ref|
+  std::string reason;
+};
+
+struct Brick {
+  std::string id;
+  std::string slot;
+  std::string file;      // relative to the shaderlib root, e.g. "specular_d/d_ggx.glsl"
+  std::string function;  // GLSL function name defined in `file`
+  std::string name;      // human-readable name
+  std::string citation;  // paper / seed the formula comes from
+  // Other GLSL units (ids of "units") it needs. Manifest key "requires"; renamed here because
+  // `requires` is a C++20 keyword.
+  std::vector<std::string> requiredUnits;
+  std::map<std::string, Range> domain;  // per scalar/vector param
+  GeometryDomain geometry;
+  Tolerance tolerance;
+  std::string notes;  // precision notes
+};
+
+// Shared GLSL that is not a brick (common helpers).
+struct Unit {
+  std::string id;
+  std::string file;
+};
+
+struct ModelInput {
+  std::string name;  // name in material JSON and in the MaterialInputs struct
+  ValueType type = ValueType::Float;
+  std::vector<double> defaultValue;
+  Range range;
+  std::string description;
+};
+
+struct ShadingModel {
+  std::string name;
+  std::string description;
+  std::string skeleton;  // GLSL file relative to the shaderlib root
+  std::vector<std::string> requiredUnits;  // units (manifest key "requires")
+  std::vector<std::string> slots;  // slots a material of this model must fill
+  std::vector<ModelInput> inputs;
+};
+
+class ShaderLibrary {
+ public:
+  // Reads `<root>/manifest.json`; throws DiagnosticError with file:line:col on bad data.
+  static ShaderLibrary load(const std::filesystem::path& root);
+  // The default root: $MATBRICKS_SHADERLIB, else the source tree's shaderlib/.
+  static std::filesystem::path defaultRoot();
+
+  const std::filesystem::path& root() const { return root_; }
+  const std::vector<Slot>& slots() const { return slots_; }
+  const std::vector<Brick>& bricks() const { return bricks_; }
+  const std::vector<ShadingModel>& models() const { return models_; }
+  const std::vector<Unit>& units() const { return units_; }
+
+  const Slot* findSlot(const std::string& name) const;
+  const Brick* findBrick(const std::string& id) const;
+  const ShadingModel* findModel(const std::string& name) const;
+  const Unit* findUnit(const std::string& id) const;
+  std::vector<std::string> brickIds() const;
+  std::vector<std::string> bricksOfSlot(const std::string& slot) const;
+
+  // Reads a file under the root (cached). Throws DiagnosticError if missing.
+  const std::string& source(const std::string& relativeFile) const;
+  // Display path used in #line directives and diagnostics: "shaderlib/<file>".
+  static std::string displayPath(const std::string& relativeFile);
+
+ private:
+  std::filesystem::path root_;
+  std::vector<Slot> slots_;
+  std::vector<Brick> bricks_;
+  std::vector<ShadingModel> models_;
+  std::vector<Unit> units_;
+  mutable std::map<std::string, std::string> sources_;
+};
+
+}  // namespace mb

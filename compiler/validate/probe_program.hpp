@@ -1,0 +1,43 @@
+// A probe ready to run on the harness and to compare: the emitted shader, its SPIR-V, the
+// reference that evaluates one record in double, and the domain and tolerance to use.
+// validate, eval (and later stress and bench) all build probes here; none has its own way
+// to build shaders.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "compile/glsl_compiler.hpp"
+#include "emit/emitter.hpp"
+#include "harness/vulkan_harness.hpp"
+#include "validate/error_metrics.hpp"
+#include "validate/sampler.hpp"
+
+namespace mb {
+
+struct ProbeProgram {
+  EmittedShader shader;
+  CompileResult compiled;
+  double compileMs = 0;
+  std::function<void(const double* in, double* out)> reference;
+  Tolerance tolerance;
+  SampleDomain domain;
+};
+
+ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick);
+ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& perm);
+
+struct ProbeRun {
+  std::vector<float> inputs;   // count * inStride
+  std::vector<float> gpu;      // count * outStride
+  std::vector<double> reference;  // count * outStride
+  double gpuMs = 0;
+  uint64_t count = 0;
+};
+
+// Runs the probe on the GPU and the reference on the CPU over the same fp32 inputs.
+ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program,
+                  std::vector<float> inputs);
+ErrorStats compare(const ProbeRun& run, const ProbeProgram& program);
+
+}  // namespace mb

@@ -1,0 +1,77 @@
+#include "validate/validation.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace mb {
+
+ValidationRecord validateProbe(harness::VulkanHarness& gpu, const ProbeProgram& program,
+                               const std::string& kind, uint64_t samples, uint64_t seed) {
+  ValidationRecord rec;
+  rec.key = program.shader.key;
+  rec.kind = kind;
+  rec.samples = samples;
+  rec.tolerance = program.tolerance;
+  rec.compileMs = program.compileMs;
+  rec.spirvInstructions = spirvInstructionCount(program.compiled.spirv);
+  ProbeRun run = runProbe(gpu, program, generateSamples(program.shader.layout, program.domain, samples, seed));
+  rec.gpuMs = run.gpuMs;
+  rec.stats = compare(run, program);
+  if (rec.stats.worstRecord >= 0) {
+    auto cols = program.shader.layout.columns();
+    std::ostringstream s;
+    s.precision(9);
+    for (size_t k = 0; k < cols.size(); ++k)
+      s << (k ? "," : "") << cols[k] << "=" << run.inputs[rec.stats.worstRecord * cols.size() + k];
+    rec.worstInput = s.str();
+  }
+  return rec;
+}
+
+nlohmann::json toJson(const ValidationRecord& r) {
+  auto num = [](double v) -> nlohmann::json {
+    if (std::isfinite(v)) return v;
+    return v > 0 ? "inf" : "nan";  // JSON has no Inf
+  };
+  return {{"key", r.key},
+          {"kind", r.kind},
+          {"samples", r.samples},
+          {"values_compared", r.stats.components},
+          {"max_abs_error", num(r.stats.maxAbs)},
+          {"max_rel_error", num(r.stats.maxRel)},
+          {"rel_error_floor", kRelativeErrorFloor},
+          {"max_ulp", num(r.stats.maxUlp)},
+          {"nan_count", r.stats.nanCount},
+          {"inf_count", r.stats.infCount},
+          {"negative_count", r.stats.negativeCount},
+          {"reference_invalid_count", r.stats.referenceInvalid},
+          {"failures", r.stats.failures},
+          {"tolerance", {{"abs", r.tolerance.abs}, {"rel", r.tolerance.rel}, {"reason", r.tolerance.reason}}},
+          {"worst_input", r.worstInput},
+          {"passed", r.passed()},
+          {"compile_ms", r.compileMs},
+          {"gpu_ms", r.gpuMs},
+          {"spirv_instructions", r.spirvInstructions}};
+}
+
+std::string formatValidationTable(const std::vector<ValidationRecord>& records) {
+  std::ostringstream s;
+  char line[512];
+  std::snprintf(line, sizeof line, "%-44s %8s %10s %10s %8s %4s %4s %5s %10s %9s  %s\n", "permutation",
+                "samples", "max_abs", "max_rel", "max_ulp", "nan", "inf", "neg", "compile_ms",
+                "gpu_ms", "result");
+  s << line;
+  for (const auto& r : records) {
+    std::snprintf(line, sizeof line, "%-44s %8llu %10.3g %10.3g %8.3g %4llu %4llu %5llu %10.2f %9.3f  %s\n",
+                  r.key.c_str(), static_cast<unsigned long long>(r.samples), r.stats.maxAbs,
+                  r.stats.maxRel, r.stats.maxUlp, static_cast<unsigned long long>(r.stats.nanCount),
+                  static_cast<unsigned long long>(r.stats.infCount),
+                  static_cast<unsigned long long>(r.stats.negativeCount), r.compileMs, r.gpuMs,
+                  r.passed() ? "PASS" : "FAIL");
+    s << line;
+  }
+  return s.str();
+}
+
+}  // namespace mb

@@ -1,0 +1,26 @@
+// write: a package directory, atomically. Everything is staged in a temporary sibling
+// directory and renamed into place at the end, so a failure never leaves a partial package.
+#pragma once
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace mb {
+
+class PackageWriter {
+ public:
+  void addFile(const std::string& relativePath, std::string bytes);
+  void addFile(const std::string& relativePath, const std::vector<uint32_t>& words);
+  // Writes all files to `dir`, replacing a previous package there. Throws DiagnosticError on
+  // I/O failure, leaving `dir` as it was.
+  void commit(const std::filesystem::path& dir) const;
+
+ private:
+  std::map<std::string, std::string> files_;
+};
+
+// 64-bit xxHash of bytes, as 16 hex digits.
+std::string contentHash(const void* data, size_t size);
+
+}  // namespace mb

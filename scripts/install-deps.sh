@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs every build and run-time dependency of matbricks from Debian 12's
+# registry. Safe to run twice: only packages that are missing are installed.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake ninja-build pkg-config git
+  glslang-dev glslang-tools spirv-tools spirv-headers
+  libspirv-cross-c-shared-dev spirv-cross
+  libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers vulkan-tools
+  nlohmann-json3-dev catch2 libcli11-dev libxxhash-dev
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ "${#missing[@]}" -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

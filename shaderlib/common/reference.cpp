@@ -1,0 +1,46 @@
+#include "common/reference.hpp"
+
+#include <stdexcept>
+#include <tuple>
+
+namespace mb::ref {
+
+Geometry makeGeometry(const Vec3& n, const Vec3& v, const Vec3& l) {
+  Geometry g;
+  g.n = normalize(n);
+  g.v = normalize(v);
+  g.l = normalize(l);
+  Vec3 sum = g.v + g.l;
+  double len2 = dot(sum, sum);
+  // v = -l has no half vector; common.glsl picks n in that case, and so do we.
+  g.h = len2 > 1e-24 ? sum / std::sqrt(len2) : g.n;
+  g.NoV = std::max(dot(g.n, g.v), kMinNoV);
+  g.NoL = clamp01(dot(g.n, g.l));
+  g.NoH = clamp01(dot(g.n, g.h));
+  g.LoH = clamp01(dot(g.l, g.h));
+  g.VoH = clamp01(dot(g.v, g.h));
+  return g;
+}
+
+Registry& Registry::references() {
+  static Registry r;
+  return r;
+}
+
+Registry& Registry::groundTruths() {
+  static Registry r;
+  return r;
+}
+
+bool Registry::add(const std::string& id, Reference r) {
+  if (!entries_.emplace(id, std::move(r)).second)
+    throw std::logic_error("duplicate reference registration for brick '" + id + "'");
+  return true;
+}
+
+const Reference* Registry::find(const std::string& id) const {
+  auto it = entries_.find(id);
+  return it == entries_.end() ? nullptr : &it->second;
+}
+
+}  // namespace mb::ref
