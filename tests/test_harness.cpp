@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "compile/glsl_compiler.hpp"
@@ -253,6 +254,34 @@ TEST_CASE("a kernel may outlive its harness", "[harness]") {
   h.reset();       // the kernel keeps the device alive ...
   kernel.reset();  // ... and releases it here, pipeline first
   SUCCEED();
+}
+
+TEST_CASE("concurrent runs on one harness are safe", "[harness]") {
+  VulkanHarness h(testDeviceOptions());
+  auto kernel = h.createKernel(compileKernel(kMulAddKernel));
+  const uint64_t count = 20000;
+  const std::vector<float> in = makeInputs(count);
+  // Catch assertions are not thread-safe: threads only record, the main thread checks.
+  std::vector<uint64_t> mismatches(4, 0);
+  std::vector<std::string> errors(4);
+  std::vector<std::thread> threads;
+  for (size_t t = 0; t < mismatches.size(); ++t) {
+    threads.emplace_back([&, t] {
+      try {
+        const RunResult r = h.run(*kernel, in, kInStride, kOutStride, count);
+        mismatches[t] = countMismatches(in, r.outputs, count);
+      } catch (const std::exception& e) {
+        errors[t] = e.what();
+      }
+    });
+  }
+  for (std::thread& th : threads) th.join();
+  for (size_t t = 0; t < mismatches.size(); ++t) {
+    INFO("thread " << t);
+    CHECK(errors[t].empty());
+    CHECK(mismatches[t] == 0);
+  }
+  requireNoValidationMessages(h);
 }
 
 TEST_CASE("a kernel from another harness is rejected", "[harness]") {

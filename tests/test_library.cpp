@@ -264,7 +264,7 @@ TEST_CASE("library: GLSL file missing or not defining the function", "[library]"
   }
 }
 
-TEST_CASE("library: bad type name, schema version, missing slot folder", "[library]") {
+TEST_CASE("library: bad type, schema, missing folder, bad values and paths", "[library]") {
   SECTION("type") {
     FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "\"vec3\"", "\"vec4\"")}});
     auto d = only(errorsOf(lib), "E-UNKNOWN-TYPE");
@@ -281,6 +281,29 @@ TEST_CASE("library: bad type name, schema version, missing slot folder", "[libra
     auto d = only(errorsOf(lib), "E-FILE-NOT-FOUND");
     requireAt(d, lib.path("manifest.json"), 4, 38);
     CHECK_THAT(d.message, Contains("sheen"));
+  }
+  SECTION("negative tolerance") {
+    FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "\"abs\": 1e-6", "\"abs\": -1")}});
+    auto d = only(errorsOf(lib), "E-INVALID-VALUE");
+    requireAt(d, lib.path("fresnel/slot.json"), 15, 28);
+  }
+  SECTION("geometry range beyond a cosine") {
+    FakeLibrary lib({{"specular_d/slot.json",
+                      edited("specular_d/slot.json", "[0.01, 1.0]", "[-1.5, 1.0]")}});
+    auto d = only(errorsOf(lib), "E-PARAM-RANGE");
+    requireAt(d, lib.path("specular_d/slot.json"), 15, 27);
+    CHECK_THAT(d.message, Contains("'bricks[0].geometry.NoV' must lie inside [-1, 1]"));
+  }
+  SECTION("path outside the library") {
+    FakeLibrary lib({{"fresnel/slot.json",
+                      edited("fresnel/slot.json", "\"f_schlick.glsl\"", "\"../../x.glsl\"")}});
+    auto d = only(errorsOf(lib), "E-INVALID-PATH");
+    requireAt(d, lib.path("fresnel/slot.json"), 11, 15);
+  }
+  SECTION("slot listed twice") {
+    FakeLibrary lib({{"manifest.json", edited("manifest.json", "\"fresnel\"]", "\"fresnel\", \"fresnel\"]")}});
+    auto d = only(errorsOf(lib), "E-DUPLICATE-NAME");
+    requireAt(d, lib.path("manifest.json"), 4, 38);
   }
   SECTION("JSON syntax in a slot file") {
     FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "\"vec3\",", "\"vec3\"")}});

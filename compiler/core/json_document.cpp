@@ -1,6 +1,7 @@
 #include "core/json_document.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <sstream>
 
@@ -113,6 +114,22 @@ class PositionScanner {
   size_t i_ = 0;
 };
 
+// nlohmann reports the last byte of the offending token; people expect its first.
+size_t tokenStart(const std::string& text, size_t last) {
+  if (last >= text.size()) return text.empty() ? 0 : text.size() - 1;
+  if (text[last] == '"' && last > 0) {
+    for (size_t i = last; i-- > 0;) {
+      if (text[i] == '"' && (i == 0 || text[i - 1] != '\\')) return i;
+      if (text[i] == '\n') break;
+    }
+    return last;
+  }
+  auto wordChar = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+'; };
+  size_t i = last;
+  while (i > 0 && wordChar(text[i]) && wordChar(text[i - 1])) --i;
+  return i;
+}
+
 }  // namespace
 
 JsonDocument JsonDocument::parse(const std::string& text, const std::string& file) {
@@ -122,7 +139,7 @@ JsonDocument JsonDocument::parse(const std::string& text, const std::string& fil
     doc.root_ = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     // e.byte is 1-based and points just past the offending character.
-    size_t offset = e.byte > 0 ? e.byte - 1 : 0;
+    size_t offset = tokenStart(text, e.byte > 0 ? e.byte - 1 : 0);
     std::string what = e.what();
     // nlohmann's message: "[json.exception.parse_error.101] parse error at line 3, column 5:
     // syntax error while parsing object - unexpected '}'; expected string literal"

@@ -26,8 +26,9 @@ constexpr const char* kNoDeviceHint =
 // Keeps each buffer allocation modest even where maxMemoryAllocationSize is huge: host-
 // visible heaps are often small on discrete GPUs, and a run rarely needs more.
 constexpr uint64_t kMaxSegmentBytes = uint64_t{256} << 20;
-// A probe kernel finishes in well under a second; a minute means it hung.
-constexpr uint64_t kFenceTimeoutNs = uint64_t{60} * 1000 * 1000 * 1000;
+// A probe run takes well under a second on lavapipe and a big stress run seconds; five
+// minutes means the kernel hung, and a clear error beats a test that never ends.
+constexpr uint64_t kFenceTimeoutSeconds = 300;
 
 std::string toLower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(),
@@ -183,6 +184,9 @@ struct DeviceContext {
   uint32_t timestampValidBits = 0;
   VkDevice device = VK_NULL_HANDLE;
   VkQueue queue = VK_NULL_HANDLE;
+  // vkQueueSubmit and vkDeviceWaitIdle need the queue externally synchronized; everything
+  // else a run() creates is its own, so this lock makes concurrent run() calls safe.
+  mutable std::mutex queueMutex;
 
   DeviceContext() = default;
   DeviceContext(const DeviceContext&) = delete;
@@ -413,12 +417,15 @@ struct MappedBuffer {
 
 // Everything one run() creates. The destructor releases it on success and on throw.
 struct RunResources {
-  explicit RunResources(VkDevice device) : device(device) {}
+  explicit RunResources(const DeviceContext& ctx) : ctx(ctx), device(ctx.device) {}
   RunResources(const RunResources&) = delete;
   RunResources& operator=(const RunResources&) = delete;
   ~RunResources() {
     // A submit that we did not see finish may still use these objects.
-    if (inFlight) vkDeviceWaitIdle(device);
+    if (inFlight) {
+      std::lock_guard lock(ctx.queueMutex);
+      vkDeviceWaitIdle(device);
+    }
     if (fence) vkDestroyFence(device, fence, nullptr);
     if (commandPool) vkDestroyCommandPool(device, commandPool, nullptr);  // frees the cb
     if (queryPool) vkDestroyQueryPool(device, queryPool, nullptr);
@@ -431,6 +438,7 @@ struct RunResources {
     }
   }
 
+  const DeviceContext& ctx;
   VkDevice device;
   std::vector<MappedBuffer> inBuffers, outBuffers;  // one pair per plan segment
   VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
@@ -602,10 +610,17 @@ double submitAndWait(const DeviceContext& ctx, RunResources& res) {
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &res.cmd;
   const auto start = std::chrono::steady_clock::now();
-  MB_VK_CHECK(vkQueueSubmit(ctx.queue, 1, &submit, res.fence));
+  {
+    std::lock_guard lock(ctx.queueMutex);
+    MB_VK_CHECK(vkQueueSubmit(ctx.queue, 1, &submit, res.fence));
+  }
   res.inFlight = true;
-  const VkResult waited = vkWaitForFences(ctx.device, 1, &res.fence, VK_TRUE, kFenceTimeoutNs);
-  if (waited == VK_TIMEOUT) throw HarnessError("the kernel did not finish within 60 s");
+  const VkResult waited = vkWaitForFences(ctx.device, 1, &res.fence, VK_TRUE,
+                                         kFenceTimeoutSeconds * 1000 * 1000 * 1000);
+  if (waited == VK_TIMEOUT) {
+    throw HarnessError("the kernel did not finish within " +
+                       std::to_string(kFenceTimeoutSeconds) + " s");
+  }
   MB_VK_CHECK(waited);
   res.inFlight = false;
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -700,7 +715,7 @@ RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, u
   const ChunkPlan plan = planChunks(count, inStride, outStride, limits);
   const auto chunkCount = static_cast<uint32_t>(plan.chunks.size());
 
-  RunResources res(ctx.device);
+  RunResources res(ctx);
   createBuffers(ctx, plan, inputs, inStride, res);
   createDescriptorSets(ctx, kernel, plan, res);
   createQueryPool(ctx, chunkCount, res);

@@ -63,7 +63,8 @@ class VulkanHarness {
   // Creates the compute pipeline for a kernel following the contract above.
   std::shared_ptr<Kernel> createKernel(const std::vector<uint32_t>& spirv);
 
-  // Runs `count` records. `inputs` holds count * inStride floats.
+  // Runs `count` records. `inputs` holds count * inStride floats. Safe to call from
+  // several threads at once (submissions to the one queue are serialized).
   RunResult run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride,
                 uint32_t outStride, uint64_t count);
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "core/json_fields.hpp"
 #include "library/value_json.hpp"
@@ -370,9 +371,10 @@ class LibraryLoader {
       std::string at = JsonFields::member(ptr, key);
       auto r = range(f, at);
       if (!r) return;
-      if (r->lo < 0.0 || r->hi > 1.0)
+      // Signed cosines are allowed: wrap lighting samples light from behind (n.l < 0).
+      if (r->lo < -1.0 || r->hi > 1.0)
         f.error("E-PARAM-RANGE", f.valueAt(at),
-                "'" + JsonFields::describe(at) + "' must lie inside [0, 1]: it bounds a cosine");
+                "'" + JsonFields::describe(at) + "' must lie inside [-1, 1]: it bounds a cosine");
       else
         out = *r;
     };
@@ -490,10 +492,26 @@ std::mutex& sourceCacheMutex() {
 
 }  // namespace
 
+// Files in the order they were read, positions in file order within each: the checks of
+// one brick do not run in the order its fields are written.
+static std::vector<Diagnostic> inReadingOrder(std::vector<Diagnostic> diags) {
+  std::vector<std::string> files;
+  for (const auto& d : diags)
+    if (std::find(files.begin(), files.end(), d.where.file) == files.end())
+      files.push_back(d.where.file);
+  auto rank = [&](const Diagnostic& d) {
+    auto index = std::find(files.begin(), files.end(), d.where.file) - files.begin();
+    return std::make_tuple(index, d.where.line, d.where.column);
+  };
+  std::stable_sort(diags.begin(), diags.end(),
+                   [&](const Diagnostic& a, const Diagnostic& b) { return rank(a) < rank(b); });
+  return diags;
+}
+
 ShaderLibrary ShaderLibrary::load(const fs::path& root) {
   DiagnosticSink sink;
   LibraryData data = LibraryLoader(root, sink).run();
-  sink.throwIfErrors();
+  if (sink.hasErrors()) throw DiagnosticError(inReadingOrder(sink.all()));
   ShaderLibrary lib;
   lib.root_ = root;
   lib.units_ = std::move(data.units);

@@ -3,6 +3,7 @@
 // that causes it, before failing once.
 #include <algorithm>
 #include <optional>
+#include <tuple>
 
 #include "core/json_fields.hpp"
 #include "library/value_json.hpp"

@@ -1,0 +1,63 @@
+// Shared by tests that need the shipped library, example materials, or the CLI binary.
+#pragma once
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "library/shader_library.hpp"
+#include "load/material_desc.hpp"
+
+namespace mb::test {
+
+inline std::filesystem::path sourceDir() { return MB_SOURCE_DIR; }
+
+inline const ShaderLibrary& shippedLibrary() {
+  static ShaderLibrary lib = ShaderLibrary::load(ShaderLibrary::defaultRoot());
+  return lib;
+}
+
+inline std::vector<std::string> exampleMaterialFiles() {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(sourceDir() / "materials"))
+    if (e.path().extension() == ".json") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+struct CliResult {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// Runs the matbricks CLI (path from $MATBRICKS_CLI, set by CTest) with `args`, prefixed by
+// optional environment assignments such as "VK_ICD_FILENAMES=/x".
+inline CliResult runCli(const std::string& args, const std::string& env = "") {
+  const char* cli = std::getenv("MATBRICKS_CLI");
+  std::string cmd = (env.empty() ? "" : "env " + env + " ") + std::string(cli ? cli : "matbricks") +
+                    " " + args + " 2>&1";
+  CliResult r;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
+  int status = pclose(p);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+inline std::string readFile(const std::filesystem::path& p) {
+  FILE* f = std::fopen(p.string().c_str(), "rb");
+  std::string s;
+  if (!f) return s;
+  std::array<char, 4096> buf{};
+  size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), f)) > 0) s.append(buf.data(), n);
+  std::fclose(f);
+  return s;
+}
+
+}  // namespace mb::test

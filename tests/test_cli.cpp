@@ -1,0 +1,172 @@
+// The matbricks command line, run as a user would run it.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "support/pipeline_support.hpp"
+
+using namespace mb;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path tempDir(const std::string& name) {
+  fs::path p = fs::temp_directory_path() / ("mb_cli_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+std::string material(const std::string& file) { return (test::sourceDir() / "materials" / file).string(); }
+
+// Midpoint-of-domain CSV rows for a brick, built from `bricks --json` alone.
+std::string csvFor(const nlohmann::json& brick) {
+  std::string header, row1, row2;
+  for (const auto& col : brick["inputs"]) {
+    std::string c = col.get<std::string>();
+    double v1 = 0.5, v2 = 0.25;
+    if (c.size() == 3 && c[1] == '.') {  // vector component: n, v, l, or a vec3 parameter
+      char vec = c[0], axis = c[2];
+      if (vec == 'n') v1 = v2 = axis == 'z' ? 1.0 : 0.0;
+      if (vec == 'v') { v1 = axis == 'x' ? 0.6 : (axis == 'z' ? 0.8 : 0.0); v2 = axis == 'z' ? 1.0 : 0.0; }
+      if (vec == 'l') { v1 = axis == 'x' ? -0.6 : (axis == 'z' ? 0.8 : 0.0); v2 = axis == 'y' ? 0.6 : (axis == 'z' ? 0.8 : 0.0); }
+    }
+    std::string key = c.substr(0, c.find('.'));
+    if (brick["domain"].contains(key)) {
+      double lo = brick["domain"][key][0], hi = brick["domain"][key][1];
+      v1 = lo + 0.5 * (hi - lo);
+      v2 = lo + 0.9 * (hi - lo);
+    }
+    header += (header.empty() ? "" : ",") + c;
+    row1 += (row1.empty() ? "" : ",") + std::to_string(v1);
+    row2 += (row2.empty() ? "" : ",") + std::to_string(v2);
+  }
+  return header + "\n" + row1 + "\n" + row2 + "\n";
+}
+
+}  // namespace
+
+TEST_CASE("without a Vulkan device, validate prints one clear line and exits 4", "[cli][harness]") {
+  auto r = test::runCli("validate " + material("filament_plastic.json"),
+                        "VK_ICD_FILENAMES=/nonexistent/none.json VK_DRIVER_FILES=/nonexistent/none.json");
+  CHECK(r.exitCode == 4);
+  CHECK_THAT(r.output, Catch::StartsWith("error: no Vulkan device"));
+  CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);
+}
+
+TEST_CASE("a malformed material exits 3 with file:line:column", "[cli][diagnostics]") {
+  fs::path dir = tempDir("bad");
+  { std::ofstream(dir / "bad.json") << "{\n  \"name\": \"x\",\n  \"model\": \"standard\"\n  \"bricks\": {}\n}\n"; }
+  auto r = test::runCli("compile " + (dir / "bad.json").string() + " -o " + (dir / "pkg").string());
+  CHECK(r.exitCode == 3);
+  CHECK_THAT(r.output, Catch::Contains((dir / "bad.json").string() + ":4:3: error[E-JSON-SYNTAX]"));
+  CHECK_FALSE(fs::exists(dir / "pkg"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("compile writes a complete, deterministic package", "[cli][package]") {
+  fs::path dir = tempDir("pkg");
+  std::string inputs;
+  for (const auto& f : test::exampleMaterialFiles()) inputs += " " + f;
+  auto a = test::runCli("compile" + inputs + " -o " + (dir / "a").string());
+  auto b = test::runCli("compile -q" + inputs + " -o " + (dir / "b").string());
+  REQUIRE(a.exitCode == 0);
+  REQUIRE(b.exitCode == 0);
+  auto manifest = nlohmann::json::parse(test::readFile(dir / "a/manifest.json"));
+  REQUIRE(manifest["permutations"].size() == test::exampleMaterialFiles().size());
+  for (const auto& p : manifest["permutations"]) {
+    CHECK(fs::exists(dir / "a" / p["spirv"].get<std::string>()));
+    CHECK(fs::exists(dir / "a" / p["glsl"].get<std::string>()));
+    CHECK(p["spirv_instructions"].get<int>() > 0);
+  }
+  size_t files = 0;
+  for (const auto& e : fs::directory_iterator(dir / "a")) {
+    ++files;
+    INFO(e.path().filename());
+    CHECK(test::readFile(e.path()) == test::readFile(dir / "b" / e.path().filename()));
+  }
+  CHECK(files == 1 + 2 * manifest["permutations"].size());
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a failing compile leaves an existing package untouched", "[cli][package]") {
+  fs::path dir = tempDir("atomic");
+  REQUIRE(test::runCli("compile -q " + material("ue4_metal.json") + " -o " + (dir / "pkg").string()).exitCode == 0);
+  std::string before = test::readFile(dir / "pkg/manifest.json");
+  { std::ofstream(dir / "unknown_brick.json") << R"({"name": "m", "model": "standard", "bricks": {"roughness": "roughness_clamped", "diffuse": "diffuse_lambert", "specular_d": "d_ggxx", "specular_v": "v_smith_ggx_correlated", "fresnel": "f_schlick"}})"; }
+  auto r = test::runCli("compile " + material("ue4_metal.json") + " " + (dir / "unknown_brick.json").string() + " -o " + (dir / "pkg").string());
+  CHECK(r.exitCode == 3);
+  CHECK_THAT(r.output, Catch::Contains("E-UNKNOWN-BRICK"));
+  CHECK_THAT(r.output, Catch::Contains("d_ggx"));
+  CHECK(test::readFile(dir / "pkg/manifest.json") == before);
+  size_t entries = 0;
+  for (const auto& e : fs::directory_iterator(dir)) { (void)e; ++entries; }
+  CHECK(entries == 2);  // pkg and the bad material: no staging directory left behind
+  fs::remove_all(dir);
+}
+
+TEST_CASE("eval works for every brick that bricks --json lists", "[cli][eval]") {
+  auto list = test::runCli("bricks --json");
+  REQUIRE(list.exitCode == 0);
+  auto bricks = nlohmann::json::parse(list.output);
+  REQUIRE(!bricks.empty());
+  fs::path dir = tempDir("eval");
+  for (const auto& b : bricks) {
+    std::string id = b["id"];
+    fs::path csv = dir / (id + ".csv");
+    { std::ofstream(csv) << csvFor(b); }
+    auto r = test::runCli("--vk-validation eval --json --brick " + id + " --input " + csv.string());
+    INFO(id << ": " << r.output);
+    CHECK(r.exitCode == 0);
+    auto out = nlohmann::json::parse(r.output.substr(0, r.output.rfind('}') + 1), nullptr, false);
+    REQUIRE_FALSE(out.is_discarded());
+    CHECK(out["rows"].size() == 2);
+    CHECK(out["passed"] == true);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("eval --material evaluates a whole material; a bad CSV header is located", "[cli][eval]") {
+  fs::path dir = tempDir("evalmat");
+  { std::ofstream(dir / "in.csv") << "n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z,roughness\n0,0,1,0.6,0,0.8,-0.6,0,0.8,0.3\n0,0,1,0,0,1,0,0,1,0.05\n"; }
+  auto r = test::runCli("eval --material " + material("ue4_metal.json") + " --input " + (dir / "in.csv").string());
+  INFO(r.output);
+  CHECK(r.exitCode == 0);
+  CHECK_THAT(r.output, Catch::Contains("within tolerance"));
+  { std::ofstream(dir / "bad.csv") << "n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z,roughnes\n0,0,1,0.6,0,0.8,-0.6,0,0.8,0.3\n"; }
+  auto bad = test::runCli("eval --material " + material("ue4_metal.json") + " --input " + (dir / "bad.csv").string());
+  CHECK(bad.exitCode == 3);
+  CHECK_THAT(bad.output, Catch::Contains("bad.csv:1:37: error[E-CSV-COLUMN]: unknown column 'roughnes'"));
+  CHECK_THAT(bad.output, Catch::Contains("did you mean 'roughness'"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("validate --json gives one complete record per permutation", "[cli][validate]") {
+  auto r = test::runCli("--vk-validation validate --json --samples 512 " + material("filament_plastic.json") + " " + material("ue4_metal.json"));
+  REQUIRE(r.exitCode == 0);
+  auto recs = nlohmann::json::parse(r.output);
+  REQUIRE(recs.size() == 2);
+  for (const auto& rec : recs) {
+    for (const char* k : {"key", "samples", "max_abs_error", "max_rel_error", "max_ulp", "nan_count",
+                          "inf_count", "negative_count", "passed", "gpu_ms"})
+      CHECK(rec.contains(k));
+    CHECK(rec["passed"] == true);
+    CHECK(rec["nan_count"] == 0);
+    CHECK(rec["samples"] == 512);
+  }
+}
+
+TEST_CASE("every subcommand has --help and usage errors exit 2", "[cli]") {
+  for (const char* sub : {"compile", "validate", "bricks", "eval"}) {
+    auto r = test::runCli(std::string(sub) + " --help");
+    INFO(sub);
+    CHECK(r.exitCode == 0);
+    CHECK_THAT(r.output, Catch::Contains("Usage"));
+  }
+  CHECK(test::runCli("").exitCode == 2);
+  CHECK(test::runCli("frobnicate").exitCode == 2);
+  CHECK(test::runCli("eval --input x.csv").exitCode == 2);
+}

@@ -1,0 +1,138 @@
+// The pipeline over the whole library: every brick and every example permutation is
+// emitted, compiled, run on lavapipe and compared with its double reference. A new brick
+// needs no test code here.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <unistd.h>
+
+#include <spirv-tools/libspirv.hpp>
+
+#include "compile/glsl_compiler.hpp"
+#include "emit/emitter.hpp"
+#include "support/harness_support.hpp"
+#include "support/pipeline_support.hpp"
+#include "validate/validation.hpp"
+
+using namespace mb;
+
+namespace {
+
+std::vector<MaterialDesc> exampleMaterials() {
+  std::vector<MaterialDesc> out;
+  for (const auto& f : test::exampleMaterialFiles()) out.push_back(loadMaterialJson(f, test::shippedLibrary()));
+  return out;
+}
+
+void requireNoLayerMessages(const harness::VulkanHarness& gpu) {
+  auto msgs = gpu.validationMessages();
+  for (const auto& m : msgs) UNSCOPED_INFO("validation layer: " << m);
+  REQUIRE(msgs.empty());
+}
+
+}  // namespace
+
+TEST_CASE("every brick of the manifest validates against its reference on lavapipe", "[pipeline][bricks]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  harness::VulkanHarness gpu(harness::testDeviceOptions());
+  REQUIRE(!lib.bricks().empty());
+  for (const auto& brick : lib.bricks()) {
+    ValidationRecord r = validateProbe(gpu, buildBrickProbe(lib, brick), "brick", 4096, 7);
+    INFO(brick.id << ": max_abs " << r.stats.maxAbs << " max_rel " << r.stats.maxRel << " failures "
+                  << r.stats.failures << " worst " << r.worstInput);
+    CHECK(r.stats.nanCount == 0);
+    CHECK(r.stats.infCount == 0);
+    CHECK(r.stats.referenceInvalid == 0);
+    CHECK(r.passed());
+  }
+  requireNoLayerMessages(gpu);
+}
+
+TEST_CASE("every example permutation validates", "[pipeline][materials]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  auto materials = exampleMaterials();
+  REQUIRE(materials.size() >= 3);
+  harness::VulkanHarness gpu(harness::testDeviceOptions());
+  for (const auto& perm : permutationsFor(materials)) {
+    ValidationRecord r = validateProbe(gpu, buildPermutationProbe(lib, perm), "permutation", 4096, 3);
+    INFO(r.key << ": max_rel " << r.stats.maxRel << " worst " << r.worstInput);
+    CHECK(r.stats.nanCount == 0);
+    CHECK(r.stats.infCount == 0);
+    CHECK(r.passed());
+  }
+  requireNoLayerMessages(gpu);
+}
+
+TEST_CASE("SPIR-V of every permutation and brick probe passes spirv-val", "[pipeline][spirv]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
+  auto materials = exampleMaterials();
+  std::vector<EmittedShader> shaders;
+  for (const auto& perm : permutationsFor(materials)) shaders.push_back(emitPermutation(lib, perm));
+  for (const auto& b : lib.bricks()) shaders.push_back(emitBrickProbe(lib, b));
+  for (const auto& s : shaders) {
+    INFO(s.key);
+    CompileOptions raw;
+    raw.validate = false;  // validate here, independently of the compiler's own checks
+    auto unoptimized = compileComputeGlsl(s.glsl, s.fileName, {false, false});
+    auto optimized = compileComputeGlsl(s.glsl, s.fileName, raw);
+    CHECK(tools.Validate(unoptimized.spirv));
+    CHECK(tools.Validate(optimized.spirv));
+    // The performance passes must not grow the module.
+    CHECK(spirvInstructionCount(optimized.spirv) <= spirvInstructionCount(unoptimized.spirv));
+  }
+}
+
+TEST_CASE("two compiles of the same permutation are byte-identical", "[pipeline][determinism]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  auto materials = exampleMaterials();
+  for (const auto& perm : permutationsFor(materials)) {
+    EmittedShader a = emitPermutation(lib, perm), b = emitPermutation(lib, perm);
+    CHECK(a.glsl == b.glsl);
+    CHECK(compileComputeGlsl(a.glsl, a.fileName).spirv == compileComputeGlsl(b.glsl, b.fileName).spirv);
+  }
+}
+
+TEST_CASE("a permutation contains only the bricks it reaches", "[pipeline][emit]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  MaterialDesc m = loadMaterialJson((test::sourceDir() / "materials/ue4_metal.json").string(), lib);
+  EmittedShader s = emitPermutation(lib, permutationsFor({m}).front());
+  CHECK(s.glsl.find("#line 1 \"shaderlib/specular_v/v_schlick_ggx_ue4.glsl\"") != std::string::npos);
+  CHECK(s.glsl.find("v_smith_ggx_correlated") == std::string::npos);
+  CHECK(s.glsl.find("diffuse_disney_renormalized") == std::string::npos);
+  CHECK(s.glsl.find("vec3 evaluateMaterial(") != std::string::npos);
+  // One bound brick per slot, in model slot order.
+  CHECK(s.bricks == std::vector<std::string>{"roughness_squared", "diffuse_lambert", "d_ggx",
+                                             "v_schlick_ggx_ue4", "f_schlick_sg_ue4"});
+}
+
+TEST_CASE("a GLSL error inside a brick points at the brick's own file and line", "[pipeline][diagnostics]") {
+  // Copy the library, break one line of d_ggx.glsl, and compile a probe of it.
+  namespace fs = std::filesystem;
+  fs::path root = fs::temp_directory_path() / ("mb_broken_lib_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::copy(test::sourceDir() / "shaderlib", root, fs::copy_options::recursive);
+  std::string src = test::readFile(root / "specular_d/d_ggx.glsl");
+  auto pos = src.find("float oneMinusNoH2");
+  REQUIRE(pos != std::string::npos);
+  int line = 1 + static_cast<int>(std::count(src.begin(), src.begin() + static_cast<long>(pos), '\n'));
+  src.replace(pos, std::string("float oneMinusNoH2").size(), "float oneMinusNoH2 = undefinedSymbol; float unused");
+  { std::ofstream(root / "specular_d/d_ggx.glsl", std::ios::binary) << src; }
+
+  ShaderLibrary lib = ShaderLibrary::load(root);
+  EmittedShader s = emitBrickProbe(lib, *lib.findBrick("d_ggx"));
+  try {
+    compileComputeGlsl(s.glsl, s.fileName);
+    FAIL("compile should have failed");
+  } catch (const DiagnosticError& e) {
+    REQUIRE(!e.diagnostics().empty());
+    const Diagnostic& d = e.diagnostics().front();
+    CHECK(d.code == "E-GLSL");
+    CHECK(d.where.file == "shaderlib/specular_d/d_ggx.glsl");
+    CHECK(d.where.line == line);
+    CHECK(d.where.column == static_cast<int>(src.find("undefinedSymbol") - src.rfind('\n', src.find("undefinedSymbol"))));
+    CHECK_THAT(d.message, Catch::Contains("undefinedSymbol"));
+  }
+  fs::remove_all(root);
+}
