@@ -78,10 +78,8 @@ bool JsonFields::object(const std::string& ptr, const std::vector<std::string>& 
   allowed.insert(allowed.end(), optional.begin(), optional.end());
   for (const auto& [key, value] : obj.items()) {
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-    std::string known;
-    for (const auto& a : allowed) known += (known.empty() ? "'" : ", '") + a + "'";
     error("E-UNKNOWN-FIELD", keyAt(member(ptr, key)),
-          "unknown field '" + key + "' in " + what + " (known fields: " + known + ")",
+          "unknown field '" + key + "' in " + what + " (known fields: " + quotedList(allowed) + ")",
           didYouMean(key, allowed));
   }
   return true;
@@ -166,6 +164,13 @@ std::optional<std::pair<double, double>> JsonFields::range(const std::string& pt
     return std::nullopt;
   }
   return std::make_pair(lo, hi);
+}
+
+std::string quotedList(const std::vector<std::string>& names) {
+  if (names.empty()) return "(none)";
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "'" : ", '") + n + "'";
+  return s;
 }
 
 bool isIdentifier(const std::string& s) {

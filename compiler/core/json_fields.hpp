@@ -65,4 +65,7 @@ class JsonFields {
 // [A-Za-z_][A-Za-z0-9_]*: names that end up as GLSL / C++ identifiers.
 bool isIdentifier(const std::string& s);
 
+// "'a', 'b', 'c'" (or "(none)"), for "expected one of ..." messages.
+std::string quotedList(const std::vector<std::string>& names);
+
 }  // namespace mb

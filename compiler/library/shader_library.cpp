@@ -37,13 +37,6 @@ std::optional<std::string> readFile(const fs::path& path) {
   return ss.str();
 }
 
-std::string quotedList(const std::vector<std::string>& names) {
-  if (names.empty()) return "(none)";
-  std::string s;
-  for (const auto& n : names) s += (s.empty() ? "'" : ", '") + n + "'";
-  return s;
-}
-
 // True if `text` contains `name(` with `name` not part of a longer identifier: enough to
 // tell that a brick file defines (or at least mentions as a call) its function.
 bool mentionsFunction(const std::string& text, const std::string& name) {

@@ -19,13 +19,6 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
 }
 
-std::string quotedList(const std::vector<std::string>& names) {
-  if (names.empty()) return "(none)";
-  std::string s;
-  for (const auto& n : names) s += (s.empty() ? "'" : ", '") + n + "'";
-  return s;
-}
-
 class MaterialLoader {
  public:
   MaterialLoader(const JsonDocument& doc, const ShaderLibrary& lib, DiagnosticSink& sink)
