@@ -136,3 +136,22 @@ TEST_CASE("a GLSL error inside a brick points at the brick's own file and line",
   }
   fs::remove_all(root);
 }
+
+TEST_CASE("each stability fix is shown: the naive form fails where the shipped brick passes", "[pipeline][stability]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  harness::VulkanHarness gpu(harness::testDeviceOptions());
+  size_t variants = 0;
+  for (const auto& brick : lib.bricks()) {
+    if (brick.unstableFile.empty()) continue;
+    ++variants;
+    ValidationRecord stable = validateProbe(gpu, buildBrickProbe(lib, brick), "brick", 16384, 11);
+    ValidationRecord naive = validateProbe(gpu, buildBrickProbe(lib, brick, true), "unstable_variant", 16384, 11);
+    INFO(brick.id << ": stable max_rel " << stable.stats.maxRel << ", naive max_rel " << naive.stats.maxRel
+                  << " (" << brick.unstableProblem << ")");
+    CHECK(stable.passed());
+    CHECK_FALSE(naive.passed());
+    CHECK(naive.stats.maxRel > 10 * stable.stats.maxRel);
+  }
+  CHECK(variants >= 1);
+  requireNoLayerMessages(gpu);
+}

@@ -6,21 +6,19 @@
 #include "cli/cli_common.hpp"
 #include "common/reference.hpp"
 #include "emit/emitter.hpp"
+#include "library/signature.hpp"
+#include "write/package_writer.hpp"
+#include "validate/brick_catalogue.hpp"
 
 namespace mb::cli {
 namespace {
 
 struct BricksArgs {
   bool json = false;
+  bool markdown = false;
+  std::string output;
   std::string slot;
 };
-
-std::string signatureOf(const Brick& b, const Slot& s) {
-  std::string sig = toString(s.returns) + " " + b.function + "(";
-  for (size_t i = 0; i < s.params.size(); ++i)
-    sig += (i ? ", " : "") + toString(s.params[i].type) + " " + s.params[i].name;
-  return sig + ")";
-}
 
 nlohmann::json brickJson(const ShaderLibrary& lib, const Brick& b) {
   const Slot& s = *lib.findSlot(b.slot);
@@ -30,7 +28,7 @@ nlohmann::json brickJson(const ShaderLibrary& lib, const Brick& b) {
           {"slot", b.slot},
           {"name", b.name},
           {"function", b.function},
-          {"signature", signatureOf(b, s)},
+          {"signature", brickSignature(b, s)},
           {"file", ShaderLibrary::displayPath(b.file)},
           {"citation", b.citation},
           {"inputs", emitBrickProbe(lib, b).layout.columns()},
@@ -51,6 +49,16 @@ int runBricks(const BricksArgs& a, const GlobalOptions& g) {
     throw DiagnosticError({{Severity::Error, "E-UNKNOWN-SLOT", {"<command line>", 0, 0},
                             "unknown slot '" + a.slot + "'", didYouMean(a.slot, names)}});
   }
+  if (a.markdown) {
+    auto gpu = openDevice(g);
+    std::string md = brickCatalogueMarkdown(lib, *gpu);
+    if (a.output.empty()) {
+      std::cout << md;
+    } else {
+      PackageWriter::writeFileAtomically(a.output, md);
+    }
+    return reportLayerMessages(*gpu) ? kExitCheckFailed : kExitOk;
+  }
   if (a.json) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& b : lib.bricks())
@@ -63,7 +71,7 @@ int runBricks(const BricksArgs& a, const GlobalOptions& g) {
     std::printf("[%s] %s\n", s.name.c_str(), s.description.c_str());
     for (const auto& b : lib.bricks()) {
       if (b.slot != s.name) continue;
-      std::printf("  %-32s %s\n", b.id.c_str(), signatureOf(b, s).c_str());
+      std::printf("  %-32s %s\n", b.id.c_str(), brickSignature(b, s).c_str());
       std::printf("  %-32s inputs: ", "");
       auto cols = emitBrickProbe(lib, b).layout.columns();
       for (size_t i = 0; i < cols.size(); ++i) std::printf("%s%s", i ? "," : "", cols[i].c_str());
@@ -80,6 +88,8 @@ Command addBricksCommand(CLI::App& app, GlobalOptions& g) {
   CLI::App* cmd = app.add_subcommand("bricks", "List the brick catalogue");
   cmd->add_flag("--json", args->json, "Machine-readable catalogue");
   cmd->add_option("--slot", args->slot, "Only this slot");
+  cmd->add_flag("--markdown", args->markdown, "The catalogue as Markdown with errors measured on the GPU (docs/bricks.md)");
+  cmd->add_option("-o,--output", args->output, "With --markdown: write to this file (atomically) instead of stdout");
   return {cmd, [args, &g] { return runBricks(*args, g); }};
 }
 

@@ -12,6 +12,7 @@ struct ValidateArgs {
   std::vector<std::string> materials;
   std::vector<std::string> bricks;
   bool allBricks = false;
+  bool unstable = false;
   uint64_t samples = 4096;
   uint64_t seed = 1;
   bool json = false;
@@ -36,9 +37,15 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
   }
   auto gpu = openDevice(g);
 
-  std::vector<ValidationRecord> records;
-  for (const Brick* b : bricks)
+  std::vector<ValidationRecord> records, unstableRecords;
+  for (const Brick* b : bricks) {
     records.push_back(validateProbe(*gpu, buildBrickProbe(lib, *b), "brick", a.samples, a.seed));
+    if (a.unstable && !b->unstableFile.empty()) {
+      // Expected to fail: it shows the problem the shipped form fixes. Reported, not judged.
+      unstableRecords.push_back(
+          validateProbe(*gpu, buildBrickProbe(lib, *b, true), "unstable_variant", a.samples, a.seed));
+    }
+  }
   for (const auto& perm : permutationsFor(materials))
     records.push_back(validateProbe(*gpu, buildPermutationProbe(lib, perm), "permutation", a.samples, a.seed));
 
@@ -47,12 +54,17 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
   if (a.json) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& r : records) out.push_back(toJson(r));
+    for (const auto& r : unstableRecords) out.push_back(toJson(r));
     std::cout << out.dump(2) << "\n";
   } else {
     std::cout << "device: " << gpu->deviceName() << "\n" << formatValidationTable(records);
     for (const auto& r : records)
       if (!r.passed())
         std::cout << "worst input of " << r.key << ": " << r.worstInput << "\n";
+    if (!unstableRecords.empty()) {
+      std::cout << "\nunstable variants (the naive forms the shipped bricks replace; not judged):\n"
+                << formatValidationTable(unstableRecords);
+    }
   }
   bool layerMessages = reportLayerMessages(*gpu);
   return allPassed && !layerMessages ? kExitOk : kExitCheckFailed;
@@ -66,6 +78,7 @@ Command addValidateCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("materials", args->materials, "Material JSON files")->check(CLI::ExistingFile);
   cmd->add_option("--brick", args->bricks, "Validate this brick (repeatable)");
   cmd->add_flag("--all-bricks", args->allBricks, "Validate every brick of the library");
+  cmd->add_flag("--unstable-variants", args->unstable, "Also run each brick's naive form (if it has one) to show the problem its stable form fixes");
   cmd->add_option("--samples", args->samples, "Samples per permutation or brick")->check(CLI::Range(uint64_t{1}, uint64_t{50000000}));
   cmd->add_option("--seed", args->seed, "Sampler seed");
   cmd->add_flag("--json", args->json, "One JSON record per permutation or brick");

@@ -44,12 +44,12 @@ class Includes {
     throw DiagnosticError({{Severity::Error, "E-UNKNOWN-UNIT", {"shaderlib/manifest.json", 0, 0},
                             "'" + id + "' is required but is neither a unit nor a brick", ""}});
   }
-  void addBrick(const Brick& b) {
+  void addBrick(const Brick& b, bool unstableVariant = false) {
     seen_.insert(b.id);
     for (const auto& r : b.requiredUnits) require(r);
     if (std::find(bricks_.begin(), bricks_.end(), b.id) != bricks_.end()) return;
     bricks_.push_back(b.id);
-    files_.push_back(b.file);
+    files_.push_back(unstableVariant ? b.unstableFile : b.file);
   }
   void writeTo(GlslWriter& w) const {
     for (const auto& f : files_) w.include(ShaderLibrary::displayPath(f), lib_.source(f));
@@ -139,10 +139,10 @@ const ProbeInput* ProbeLayout::find(const std::string& name) const {
   return nullptr;
 }
 
-EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick) {
+EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool unstableVariant) {
   const Slot* slot = lib.findSlot(brick.slot);
   EmittedShader out;
-  out.key = "brick." + brick.id;
+  out.key = "brick." + brick.id + (unstableVariant ? ".unstable" : "");
   out.fileName = out.key + ".glsl";
   out.layout.output = slot->returns;
   std::string args;
@@ -160,7 +160,7 @@ EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick) {
   GlslWriter w(out.fileName);
   writeHeader(w, "probe of brick '" + brick.id + "' (slot " + brick.slot + ")");
   Includes inc(lib);
-  inc.addBrick(brick);
+  inc.addBrick(brick, unstableVariant);
   inc.writeTo(w);
   out.bricks = inc.bricks();
   writeProbe(w, out.layout, brick.function + "(" + args + ")");

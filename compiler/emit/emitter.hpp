@@ -38,7 +38,8 @@ struct EmittedShader {
   std::vector<std::string> bricks;  // brick ids included, in order
 };
 
-EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick);
+// With `unstableVariant`, the probe uses the brick's naive form (Brick::unstableFile).
+EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool unstableVariant = false);
 EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm);
 
 // Inputs of a material probe: n, v, l, then each non-constant parameter in model order.

@@ -283,7 +283,7 @@ class LibraryLoader {
                            : "brick";
     if (!f.object(ptr,
                   {"id", "name", "function", "file", "citation", "requires", "domain", "tolerance"},
-                  {"geometry", "notes"}, what))
+                  {"geometry", "notes", "unstable_variant"}, what))
       return;
     Brick b;
     b.slot = slot.name;
@@ -299,10 +299,25 @@ class LibraryLoader {
         f.error("E-MISSING-FUNCTION", f.valueAt(ptr + "/function"),
                 "function '" + b.function + "' is not defined in '" + b.file + "'");
     }
+    readUnstableVariant(f, ptr + "/unstable_variant", slot, b);
     b.domain = readDomain(f, ptr + "/domain", slot);
     b.geometry = readGeometry(f, ptr + "/geometry", slot);
     b.tolerance = readTolerance(f, ptr + "/tolerance");
     data_.bricks.push_back(std::move(b));
+  }
+
+  // The naive form a stability fix replaced, kept so validation can show the problem the
+  // fix solves: {"file": GLSL defining the same function, "problem": what goes wrong}.
+  void readUnstableVariant(JsonFields& f, const std::string& ptr, const Slot& slot, Brick& b) {
+    if (!f.find(ptr)) return;
+    if (!f.object(ptr, {"file", "problem"}, {}, "unstable_variant")) return;
+    b.unstableProblem = nonEmpty(f, ptr + "/problem").value_or("");
+    if (auto file = readGlsl(f, ptr + "/file", slot.name)) {
+      b.unstableFile = *file;
+      if (!b.function.empty() && !mentionsFunction(data_.sources.at(*file), b.function))
+        f.error("E-MISSING-FUNCTION", f.valueAt(ptr + "/file"),
+                "function '" + b.function + "' is not defined in '" + *file + "'");
+    }
   }
 
   // Brick ids are global (a material names a brick without its slot), so they must be

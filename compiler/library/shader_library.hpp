@@ -56,6 +56,11 @@ struct Brick {
   GeometryDomain geometry;
   Tolerance tolerance;
   std::string notes;  // precision notes
+  // Optional: the numerically naive form a stability fix replaced (same function name), and
+  // what goes wrong with it. Validation of it shows the problem; it is never emitted into
+  // permutations.
+  std::string unstableFile;
+  std::string unstableProblem;
 };
 
 // Shared GLSL that is not a brick (common helpers).

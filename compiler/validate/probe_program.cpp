@@ -25,9 +25,9 @@ void compileInto(ProbeProgram& p) {
 
 }  // namespace
 
-ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick) {
+ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool unstableVariant) {
   ProbeProgram p;
-  p.shader = emitBrickProbe(lib, brick);
+  p.shader = emitBrickProbe(lib, brick, unstableVariant);
   compileInto(p);
   const ref::Reference* r = ref::Registry::references().find(brick.id);
   if (!r) missingReference("brick '" + brick.id + "'");

@@ -24,7 +24,8 @@ struct ProbeProgram {
   SampleDomain domain;
 };
 
-ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick);
+// `unstableVariant`: probe the brick's naive form against the same reference and tolerance.
+ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool unstableVariant = false);
 ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& perm);
 
 struct ProbeRun {

@@ -66,6 +66,26 @@ void PackageWriter::commit(const fs::path& dir) const {
   if (hadPrevious) fs::remove_all(previous, ec);
 }
 
+void PackageWriter::writeFileAtomically(const fs::path& file, const std::string& bytes) {
+  fs::path tmp = file.string() + ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      ioError(file, "cannot write file");
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, file, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    ioError(file, "cannot move file into place");
+  }
+}
+
 std::string contentHash(const void* data, size_t size) {
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(XXH64(data, size, 0)));

@@ -15,6 +15,8 @@ class PackageWriter {
   // Writes all files to `dir`, replacing a previous package there. Throws DiagnosticError on
   // I/O failure, leaving `dir` as it was.
   void commit(const std::filesystem::path& dir) const;
+  // Writes one file via a temporary sibling and a rename.
+  static void writeFileAtomically(const std::filesystem::path& file, const std::string& bytes);
 
  private:
   std::map<std::string, std::string> files_;
