@@ -17,7 +17,7 @@ double ulpDistance(float a, float b) {
   return static_cast<double>(std::llabs(ordered(a) - ordered(b)));
 }
 
-void ErrorStats::add(int64_t record, float gpu, double ref, const Tolerance& tol) {
+void ErrorStats::add(int64_t record, float gpu, double ref, const Tolerance& tol, double conditioning) {
   ++components;
   if (!std::isfinite(ref)) {
     ++referenceInvalid;
@@ -37,7 +37,10 @@ void ErrorStats::add(int64_t record, float gpu, double ref, const Tolerance& tol
   }
   if (gpu < 0.0f) ++negativeCount;
   double err = std::abs(static_cast<double>(gpu) - ref);
-  double allowed = tol.abs + tol.rel * std::abs(ref);
+  double arithmetic = tol.abs + tol.rel * std::abs(ref);
+  double allowed = arithmetic + conditioning;
+  maxConditioning = std::max(maxConditioning, conditioning);
+  if (err > arithmetic && err <= allowed) ++passedByConditioning;
   maxAbs = std::max(maxAbs, err);
   maxRel = std::max(maxRel, err / std::max(std::abs(ref), kRelativeErrorFloor));
   // ULPs are meaningful only away from zero: below the floor, values are judged on abs error.

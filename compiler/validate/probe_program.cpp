@@ -1,6 +1,8 @@
 #include "validate/probe_program.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "common/model_reference.hpp"
 #include "common/reference.hpp"
@@ -98,13 +100,45 @@ ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std:
   run.gpuMs = result.gpuMs;
 
   run.reference.resize(run.count * layout.outStride);
-  std::vector<double> record(layout.inStride);
+  run.conditioning.assign(run.count * layout.outStride, 0.0);
+  std::vector<uint32_t> directionColumns = directionInputColumns(layout);
+  std::vector<double> record(layout.inStride), perturbed(layout.inStride), moved(layout.outStride);
   for (uint64_t i = 0; i < run.count; ++i) {
     for (uint32_t k = 0; k < layout.inStride; ++k) record[k] = inputs[i * layout.inStride + k];
-    program.reference(record.data(), run.reference.data() + i * layout.outStride);
+    double* ref = run.reference.data() + i * layout.outStride;
+    program.reference(record.data(), ref);
+    if (directionColumns.empty()) continue;
+    // Two opposite sign patterns on the vector components (direction error), fixed per
+    // column so that runs are reproducible, each with a skew of the normalized lengths
+    // (the half vector's error near v = -l; ref::ScopedHalfVectorSumSkew).
+    const double eps = kDirectionInputUlps * 0x1p-23;
+    for (double sign : {1.0, -1.0}) {
+      perturbed = record;
+      for (size_t c = 0; c < directionColumns.size(); ++c) {
+        double s = ((c * 0x9E3779B9u >> 7) & 1u) ? sign : -sign;
+        perturbed[directionColumns[c]] *= 1.0 + s * eps;
+      }
+      ref::ScopedHalfVectorSumSkew skew(sign * eps);
+      program.reference(perturbed.data(), moved.data());
+      for (uint32_t k = 0; k < layout.outStride; ++k) {
+        double d = std::abs(moved[k] - ref[k]);
+        if (std::isfinite(d)) {
+          double& c = run.conditioning[i * layout.outStride + k];
+          c = std::max(c, d);
+        }
+      }
+    }
   }
   run.inputs = std::move(inputs);
   return run;
+}
+
+std::vector<uint32_t> directionInputColumns(const ProbeLayout& layout) {
+  std::vector<uint32_t> cols;
+  for (const char* name : {"n", "v", "l"})
+    if (const ProbeInput* in = layout.find(name); in && in->type == ValueType::Vec3)
+      for (uint32_t k = 0; k < 3; ++k) cols.push_back(in->offset + k);
+  return cols;
 }
 
 ErrorStats compare(const ProbeRun& run, const ProbeProgram& program) {
@@ -113,7 +147,7 @@ ErrorStats compare(const ProbeRun& run, const ProbeProgram& program) {
   for (uint64_t i = 0; i < run.count; ++i)
     for (uint32_t k = 0; k < stride; ++k)
       s.add(static_cast<int64_t>(i), run.gpu[i * stride + k], run.reference[i * stride + k],
-            program.tolerance);
+            program.tolerance, run.conditioning.empty() ? 0.0 : run.conditioning[i * stride + k]);
   return s;
 }
 

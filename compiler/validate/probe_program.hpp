@@ -32,13 +32,26 @@ struct ProbeRun {
   std::vector<float> inputs;   // count * inStride
   std::vector<float> gpu;      // count * outStride
   std::vector<double> reference;  // count * outStride
+  // Per output value: how far the reference moves when the direction vectors n, v, l are
+  // perturbed by kDirectionInputUlps fp32 ulps (see inputConditioning). Zero for probes
+  // without vector geometry.
+  std::vector<double> conditioning;  // count * outStride
   double gpuMs = 0;
   uint64_t count = 0;
 };
+
+// The backward error of fp32 shading geometry: normalize, the v + l sum and inversesqrt
+// each round the direction vectors by about one ulp, so an fp32 shader evaluates its brick at
+// directions up to ~2 ulps (2^-22 relative per component) away from the exact ones. Where
+// the problem itself is ill-conditioned (the half vector of nearly opposite v and l, whose
+// direction error grows as 1e-7 / |v + l|), no fp32 formulation can do better than this.
+inline constexpr double kDirectionInputUlps = 2.0;
 
 // Runs the probe on the GPU and the reference on the CPU over the same fp32 inputs.
 ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program,
                   std::vector<float> inputs);
 ErrorStats compare(const ProbeRun& run, const ProbeProgram& program);
+// Record columns holding the direction vectors n, v, l (empty if the probe has none).
+std::vector<uint32_t> directionInputColumns(const ProbeLayout& layout);
 
 }  // namespace mb

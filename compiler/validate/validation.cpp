@@ -47,6 +47,8 @@ nlohmann::json toJson(const ValidationRecord& r) {
           {"negative_count", r.stats.negativeCount},
           {"reference_invalid_count", r.stats.referenceInvalid},
           {"failures", r.stats.failures},
+          {"max_conditioning_allowance", num(r.stats.maxConditioning)},
+          {"passed_by_conditioning", r.stats.passedByConditioning},
           {"tolerance", {{"abs", r.tolerance.abs}, {"rel", r.tolerance.rel}, {"reason", r.tolerance.reason}}},
           {"worst_input", r.worstInput},
           {"passed", r.passed()},

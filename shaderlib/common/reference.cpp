@@ -5,12 +5,20 @@
 
 namespace mb::ref {
 
+thread_local double tHalfVectorSumSkew = 0.0;
+
+ScopedHalfVectorSumSkew::ScopedHalfVectorSumSkew(double skew) : previous_(tHalfVectorSumSkew) {
+  tHalfVectorSumSkew = skew;
+}
+ScopedHalfVectorSumSkew::~ScopedHalfVectorSumSkew() { tHalfVectorSumSkew = previous_; }
+
 Geometry makeGeometry(const Vec3& n, const Vec3& v, const Vec3& l) {
   Geometry g;
   g.n = normalize(n);
   g.v = normalize(v);
   g.l = normalize(l);
-  Vec3 sum = g.v + g.l;
+  // The skew is zero except while the validator measures input conditioning.
+  Vec3 sum = g.v * (1.0 + tHalfVectorSumSkew) + g.l * (1.0 - tHalfVectorSumSkew);
   double len2 = dot(sum, sum);
   // v = -l has no half vector; common.glsl picks n in that case, and so do we.
   g.h = len2 > 1e-24 ? sum / std::sqrt(len2) : g.n;

@@ -51,6 +51,22 @@ struct Geometry {
 };
 Geometry makeGeometry(const Vec3& n, const Vec3& v, const Vec3& l);
 
+// While alive, makeGeometry forms the half vector from v (1 + skew) + l (1 - skew) instead of
+// v + l: the effect of fp32 normalize() returning v and l with lengths 1 +- a few ulps. Near
+// v = -l that length error turns into a half-vector direction error of ~skew / |v + l|,
+// which no fp32 shader avoids. The validator uses it to measure input conditioning
+// (compiler/validate/probe_program.cpp); references never set it.
+class ScopedHalfVectorSumSkew {
+ public:
+  explicit ScopedHalfVectorSumSkew(double skew);
+  ~ScopedHalfVectorSumSkew();
+  ScopedHalfVectorSumSkew(const ScopedHalfVectorSumSkew&) = delete;
+  ScopedHalfVectorSumSkew& operator=(const ScopedHalfVectorSumSkew&) = delete;
+
+ private:
+  double previous_;
+};
+
 // A reference bound to a brick id: parameter types as they appear in the slot signature,
 // and an evaluator over packed doubles (Geometry = 9 doubles n, v, l).
 struct Reference {
