@@ -22,7 +22,7 @@ fs::path tempDir(const std::string& name) {
 
 std::string material(const std::string& file) { return (test::sourceDir() / "materials" / file).string(); }
 
-// Midpoint-of-domain CSV rows for a brick, built from `bricks --json` alone.
+// Two in-domain CSV rows for a brick, built from `bricks --json` alone.
 std::string csvFor(const nlohmann::json& brick) {
   std::string header, row1, row2;
   for (const auto& col : brick["inputs"]) {
@@ -36,8 +36,10 @@ std::string csvFor(const nlohmann::json& brick) {
     }
     std::string key = c.substr(0, c.find('.'));
     if (brick["domain"].contains(key)) {
+      // 70% and 90% of the range: the midpoint of a signed vector domain [-1, 1] would be
+      // the zero vector, which has no direction.
       double lo = brick["domain"][key][0], hi = brick["domain"][key][1];
-      v1 = lo + 0.5 * (hi - lo);
+      v1 = lo + 0.7 * (hi - lo);
       v2 = lo + 0.9 * (hi - lo);
     }
     header += (header.empty() ? "" : ",") + c;
@@ -169,4 +171,23 @@ TEST_CASE("every subcommand has --help and usage errors exit 2", "[cli]") {
   CHECK(test::runCli("").exitCode == 2);
   CHECK(test::runCli("frobnicate").exitCode == 2);
   CHECK(test::runCli("eval --input x.csv").exitCode == 2);
+}
+
+TEST_CASE("every example eval input evaluates within tolerance", "[cli][eval][examples]") {
+  // examples/eval/brick.<id>.<label>.csv and material.<name>.<label>.csv (examples/README.md).
+  size_t count = 0;
+  for (const auto& e : fs::directory_iterator(test::sourceDir() / "examples" / "eval")) {
+    std::string name = e.path().filename().string();
+    if (e.path().extension() != ".csv") continue;
+    auto dot1 = name.find('.'), dot2 = name.find('.', dot1 + 1);
+    REQUIRE(dot2 != std::string::npos);
+    std::string kind = name.substr(0, dot1), id = name.substr(dot1 + 1, dot2 - dot1 - 1);
+    std::string target = kind == "brick" ? "--brick " + id : "--material " + material(id + ".json");
+    auto r = test::runCli("eval " + target + " --input " + e.path().string());
+    INFO(name << "\n" << r.output);
+    CHECK(r.exitCode == 0);
+    CHECK_THAT(r.output, Catch::Contains("within tolerance"));
+    ++count;
+  }
+  CHECK(count >= 2);
 }

@@ -47,5 +47,9 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g);
 Command addValidateCommand(CLI::App& app, GlobalOptions& g);
 Command addBricksCommand(CLI::App& app, GlobalOptions& g);
 Command addEvalCommand(CLI::App& app, GlobalOptions& g);
+Command addStressCommand(CLI::App& app, GlobalOptions& g);
+Command addBenchCommand(CLI::App& app, GlobalOptions& g);
+Command addLutCommand(CLI::App& app, GlobalOptions& g);
+Command addEnergyCommand(CLI::App& app, GlobalOptions& g);
 
 }  // namespace mb::cli

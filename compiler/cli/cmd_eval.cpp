@@ -1,5 +1,6 @@
 // matbricks eval: evaluate one brick or one material at user-given inputs on the GPU and
 // with the double reference, and print both with the error.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -18,6 +19,7 @@ struct EvalArgs {
   std::string material;
   std::string input;
   bool json = false;
+  std::string precision = "fp32";
 };
 
 int runEval(const EvalArgs& a, const GlobalOptions& g) {
@@ -26,19 +28,23 @@ int runEval(const EvalArgs& a, const GlobalOptions& g) {
   ShaderLibrary lib = loadLibrary(g);
   std::vector<MaterialDesc> materials;
   ProbeProgram program;
+  CsvTable table = loadCsv(a.input);
   if (!a.brick.empty()) {
     const Brick* b = lib.findBrick(a.brick);
     if (!b) {
       throw DiagnosticError({{Severity::Error, "E-UNKNOWN-BRICK", {"<command line>", 0, 0},
                               "unknown brick '" + a.brick + "'", didYouMean(a.brick, lib.brickIds())}});
     }
-    program = buildBrickProbe(lib, *b);
+    program = buildBrickProbe(lib, *b, false, *parsePrecision(a.precision));
   } else {
     materials = loadMaterials({a.material}, lib);
-    program = buildPermutationProbe(lib, permutationsFor(materials).front());
+    Permutation perm = permutationsFor(materials).front();
+    perm.precision = a.precision;
+    // An illuminance column (illuminance.x, .y, .z) is optional; without it the light has
+    // unit illuminance. `stress` prints such columns in its replay rows.
+    program = buildPermutationProbe(lib, perm, std::find(table.header.begin(), table.header.end(), "illuminance.x") != table.header.end());
   }
   const ProbeLayout& layout = program.shader.layout;
-  CsvTable table = loadCsv(a.input);
   std::vector<std::vector<double>> rows = selectColumns(table, layout.columns());
   std::vector<float> inputs;
   for (const auto& r : rows)
@@ -97,6 +103,8 @@ Command addEvalCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--material", args->material, "Material JSON file")->check(CLI::ExistingFile);
   cmd->add_option("--input", args->input, "CSV file; header = the probe's input names (see `bricks --json`)")->required();
   cmd->add_flag("--json", args->json, "JSON output");
+  cmd->add_option("--precision", args->precision, "fp32, or fp16 (true half arithmetic; only NaN/Inf fail)")
+      ->check(CLI::IsMember({"fp32", "fp16"}));
   return {cmd, [args, &g] { return runEval(*args, g); }};
 }
 

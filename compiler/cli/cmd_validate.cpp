@@ -16,6 +16,7 @@ struct ValidateArgs {
   uint64_t samples = 4096;
   uint64_t seed = 1;
   bool json = false;
+  std::string precision = "fp32";
 };
 
 int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
@@ -36,18 +37,21 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
     bricks.push_back(b);
   }
   auto gpu = openDevice(g);
+  const ShaderPrecision precision = *parsePrecision(a.precision);
 
   std::vector<ValidationRecord> records, unstableRecords;
   for (const Brick* b : bricks) {
-    records.push_back(validateProbe(*gpu, buildBrickProbe(lib, *b), "brick", a.samples, a.seed));
+    records.push_back(validateProbe(*gpu, buildBrickProbe(lib, *b, false, precision), "brick", a.samples, a.seed));
     if (a.unstable && !b->unstableFile.empty()) {
       // Expected to fail: it shows the problem the shipped form fixes. Reported, not judged.
-      unstableRecords.push_back(
-          validateProbe(*gpu, buildBrickProbe(lib, *b, true), "unstable_variant", a.samples, a.seed));
+      unstableRecords.push_back(validateProbe(*gpu, buildBrickProbe(lib, *b, true, precision),
+                                              "unstable_variant", a.samples, a.seed));
     }
   }
-  for (const auto& perm : permutationsFor(materials))
+  for (auto perm : permutationsFor(materials)) {
+    perm.precision = a.precision;
     records.push_back(validateProbe(*gpu, buildPermutationProbe(lib, perm), "permutation", a.samples, a.seed));
+  }
 
   bool allPassed = true;
   for (const auto& r : records) allPassed = allPassed && r.passed();
@@ -82,6 +86,9 @@ Command addValidateCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--samples", args->samples, "Samples per permutation or brick")->check(CLI::Range(uint64_t{1}, uint64_t{50000000}));
   cmd->add_option("--seed", args->seed, "Sampler seed");
   cmd->add_flag("--json", args->json, "One JSON record per permutation or brick");
+  cmd->add_option("--precision", args->precision,
+                  "fp32, or fp16: true half arithmetic on the fp16 domain; errors are reported, only NaN/Inf fail (docs/fp16.md)")
+      ->check(CLI::IsMember({"fp32", "fp16"}));
   return {cmd, [args, &g] { return runValidate(*args, g); }};
 }
 

@@ -20,6 +20,10 @@ int main(int argc, char** argv) {
 
   std::vector<Command> commands{addCompileCommand(app, g), addValidateCommand(app, g),
                                 addBricksCommand(app, g), addEvalCommand(app, g)};
+  commands.push_back(addBenchCommand(app, g));
+  commands.push_back(addLutCommand(app, g));
+  commands.push_back(addEnergyCommand(app, g));
+  commands.push_back(addStressCommand(app, g));
 
   try {
     app.parse(argc, argv);

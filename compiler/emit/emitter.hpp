@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "library/shader_library.hpp"
+#include "emit/precision.hpp"
 #include "load/material_desc.hpp"
 #include "permute/permutation.hpp"
 
@@ -39,10 +40,22 @@ struct EmittedShader {
 };
 
 // With `unstableVariant`, the probe uses the brick's naive form (Brick::unstableFile).
-EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool unstableVariant = false);
-EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm);
+// At ShaderPrecision::Fp16 the brick and its units run in half arithmetic (precision.hpp).
+EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool unstableVariant = false,
+                             ShaderPrecision precision = ShaderPrecision::Fp32);
+// The precision comes from the permutation's own axis (Permutation::precision, in its key).
+// With `illuminanceInput` the probe reads the light's illuminance (vec3 "illuminance", after
+// n, v, l) instead of passing 1, so that stress can drive very large and very small light
+// intensities; evaluateMaterial itself is the same either way.
+EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput = false);
+// Permutation::precision as an enum; throws DiagnosticError for an unknown name.
+ShaderPrecision precisionOf(const Permutation& perm);
+// The brick bound to `slot` in this permutation (the material's choice, adjusted for the
+// precision by brickForPrecision).
+std::string boundBrick(const Permutation& perm, const std::string& slot);
 
-// Inputs of a material probe: n, v, l, then each non-constant parameter in model order.
-ProbeLayout materialProbeLayout(const MaterialDesc& material);
+// Inputs of a material probe: n, v, l, [illuminance,] then each non-constant parameter in
+// model order.
+ProbeLayout materialProbeLayout(const MaterialDesc& material, bool illuminanceInput = false);
 
 }  // namespace mb

@@ -182,6 +182,7 @@ struct DeviceContext {
   uint64_t maxSegmentBytes = kMaxSegmentBytes;
   uint32_t queueFamily = 0;
   uint32_t timestampValidBits = 0;
+  bool shaderFloat16 = false;  // enabled at device creation (fp16 probes need it)
   VkDevice device = VK_NULL_HANDLE;
   VkQueue queue = VK_NULL_HANDLE;
   // vkQueueSubmit and vkDeviceWaitIdle need the queue externally synchronized; everything
@@ -300,6 +301,19 @@ uint64_t maxAllocationBytes(VkPhysicalDevice device, uint32_t apiVersion) {
   return std::min<uint64_t>(kMaxSegmentBytes, m3.maxMemoryAllocationSize);
 }
 
+// shaderFloat16 through VK_KHR_shader_float16_int8: the instance asks for Vulkan 1.1, where
+// the feature is an extension (core, and in VkPhysicalDeviceVulkan12Features, from 1.2 on).
+bool offersShaderFloat16(VkPhysicalDevice device) {
+  if (!hasDeviceExtension(device, VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME)) return false;
+  VkPhysicalDeviceShaderFloat16Int8FeaturesKHR f16{};
+  f16.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES_KHR;
+  VkPhysicalDeviceFeatures2 features{};
+  features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+  features.pNext = &f16;
+  vkGetPhysicalDeviceFeatures2(device, &features);
+  return f16.shaderFloat16 == VK_TRUE;
+}
+
 void createDevice(DeviceContext& ctx, const DeviceOptions& options) {
   const std::vector<Candidate> candidates = computeCandidates(ctx.instance);
   const Candidate& chosen = chooseCandidate(candidates, options.device);
@@ -321,9 +335,18 @@ void createDevice(DeviceContext& ctx, const DeviceOptions& options) {
   std::vector<const char*> extensions;
   if (hasDeviceExtension(ctx.physical, "VK_KHR_portability_subset"))
     extensions.push_back("VK_KHR_portability_subset");
+  // Half arithmetic only; the probe buffers stay fp32, so no 16-bit storage feature is needed.
+  VkPhysicalDeviceShaderFloat16Int8FeaturesKHR f16{};
+  f16.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES_KHR;
+  ctx.shaderFloat16 = offersShaderFloat16(ctx.physical);
+  if (ctx.shaderFloat16) {
+    extensions.push_back(VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME);
+    f16.shaderFloat16 = VK_TRUE;
+  }
 
   VkDeviceCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+  info.pNext = ctx.shaderFloat16 ? &f16 : nullptr;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queueInfo;
   info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
@@ -685,6 +708,8 @@ uint32_t VulkanHarness::maxWorkGroupCountX() const {
 uint64_t VulkanHarness::maxStorageBufferRange() const {
   return impl_->ctx->props.limits.maxStorageBufferRange;
 }
+
+bool VulkanHarness::supportsShaderFloat16() const { return impl_->ctx->shaderFloat16; }
 
 std::shared_ptr<Kernel> VulkanHarness::createKernel(const std::vector<uint32_t>& spirv) {
   auto kernel = std::make_shared<Kernel>(impl_->ctx);

@@ -59,6 +59,9 @@ class VulkanHarness {
   bool isLavapipe() const;
   uint32_t maxWorkGroupCountX() const;
   uint64_t maxStorageBufferRange() const;
+  // True when the device runs half arithmetic in shaders (shaderFloat16 of
+  // VK_KHR_shader_float16_int8); the harness enables the feature whenever it is offered.
+  bool supportsShaderFloat16() const;
 
   // Creates the compute pipeline for a kernel following the contract above.
   std::shared_ptr<Kernel> createKernel(const std::vector<uint32_t>& spirv);

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "common/model_reference.hpp"
 #include "common/reference.hpp"
+#include "validate/precision_domain.hpp"
 
 namespace mb {
 namespace {
@@ -16,7 +18,12 @@ double msSince(std::chrono::steady_clock::time_point t0) {
 
 void compileInto(ProbeProgram& p) {
   auto t0 = std::chrono::steady_clock::now();
-  p.compiled = compileComputeGlsl(p.shader.glsl, p.shader.fileName);
+  // fp16 probes skip spirv-opt (spirv-val still runs): SPIRV-Tools v2023.1's constant folding
+  // emits 16-bit OpConstants with a 32-bit word count that spirv-val rejects (measured on
+  // ue4_metal at fp16), and folding half arithmetic at compile time need not round as half.
+  CompileOptions options;
+  options.optimize = p.precision == ShaderPrecision::Fp32;
+  p.compiled = compileComputeGlsl(p.shader.glsl, p.shader.fileName, options);
   p.compileMs = msSince(t0);
 }
 
@@ -27,23 +34,32 @@ void compileInto(ProbeProgram& p) {
 
 }  // namespace
 
-ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool unstableVariant) {
+Tolerance fp16Tolerance() {
+  return {std::numeric_limits<double>::infinity(), 0.0,
+          "fp16: error measured and published (docs/fp16.md), not judged; NaN and Inf fail"};
+}
+
+ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool unstableVariant,
+                             ShaderPrecision precision) {
   ProbeProgram p;
-  p.shader = emitBrickProbe(lib, brick, unstableVariant);
+  p.precision = precision;
+  p.shader = emitBrickProbe(lib, brick, unstableVariant, precision);
   compileInto(p);
   const ref::Reference* r = ref::Registry::references().find(brick.id);
   if (!r) missingReference("brick '" + brick.id + "'");
   p.reference = r->eval;
-  p.tolerance = brick.tolerance;
+  p.tolerance = precision == ShaderPrecision::Fp16 ? fp16Tolerance() : brick.tolerance;
   p.domain.ranges = brick.domain;
   p.domain.geometry = brick.geometry;
+  p.domain = domainAtPrecision(p.domain, precision);
   return p;
 }
 
-ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& perm) {
+ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput) {
   const MaterialDesc& mat = *perm.material;
   ProbeProgram p;
-  p.shader = emitPermutation(lib, perm);
+  p.precision = precisionOf(perm);
+  p.shader = emitPermutation(lib, perm, illuminanceInput);
   compileInto(p);
   ref::ModelReferenceFn model = ref::ModelRegistry::instance().find(mat.model);
   if (!model) missingReference("model '" + mat.model + "'");
@@ -59,12 +75,26 @@ ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& 
     p.tolerance.abs += b->tolerance.abs;
   }
   p.tolerance.reason = "sum of the bound bricks' tolerances plus 1e-5 for the composition";
+  if (illuminanceInput) {
+    // The result is linear in the illuminance, and so is its absolute error.
+    p.tolerance.abs *= kIlluminanceRange.hi;
+    p.tolerance.reason += "; abs scaled by the largest illuminance";
+    // fp16 shading takes pre-exposed light (Filament's pre-exposure), from the smallest
+    // normal half to 2^10: near 65504 the ~0.1% half rounding of a radiance that just fits
+    // would round to Inf.
+    p.domain.ranges["illuminance"] =
+        p.precision == ShaderPrecision::Fp16 ? kIlluminanceRangeFp16 : kIlluminanceRange;
+  }
+  if (p.precision == ShaderPrecision::Fp16) p.tolerance = fp16Tolerance();
 
   for (const auto& prm : mat.params)
     if (!prm.constant) p.domain.ranges[prm.name] = prm.range;
+  p.domain = domainAtPrecision(p.domain, p.precision);
+  std::map<std::string, std::string> bricks;
+  for (const auto& [slot, id] : mat.bricks) bricks[slot] = boundBrick(perm, slot);
 
   ProbeLayout layout = p.shader.layout;
-  p.reference = [model, layout, &mat](const double* in, double* out) {
+  p.reference = [model, layout, &mat, bricks](const double* in, double* out) {
     ref::ModelEvalInput e;
     auto vec = [&](const std::string& name) {
       const ProbeInput* pi = layout.find(name);
@@ -73,7 +103,8 @@ ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& 
     e.n = vec("n");
     e.v = vec("v");
     e.l = vec("l");
-    e.bricks = mat.bricks;
+    if (layout.find("illuminance")) e.illuminance = vec("illuminance");
+    e.bricks = bricks;
     for (const auto& prm : mat.params) {
       if (prm.constant) {
         e.inputs[prm.name] = prm.value;
@@ -94,6 +125,10 @@ ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std:
   const ProbeLayout& layout = program.shader.layout;
   ProbeRun run;
   run.count = layout.inStride ? inputs.size() / layout.inStride : 0;
+  if (program.precision == ShaderPrecision::Fp16 && !gpu.supportsShaderFloat16()) {
+    throw harness::HarnessError("device \"" + gpu.deviceName() + "\" does not support shaderFloat16 " +
+                                "(VK_KHR_shader_float16_int8); fp16 probes cannot run on it");
+  }
   auto kernel = gpu.createKernel(program.compiled.spirv);
   auto result = gpu.run(*kernel, inputs, layout.inStride, layout.outStride, run.count);
   run.gpu = std::move(result.outputs);
@@ -108,15 +143,17 @@ ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std:
     double* ref = run.reference.data() + i * layout.outStride;
     program.reference(record.data(), ref);
     if (directionColumns.empty()) continue;
-    // Two opposite sign patterns on the vector components (direction error), fixed per
-    // column so that runs are reproducible, each with a skew of the normalized lengths
-    // (the half vector's error near v = -l; ref::ScopedHalfVectorSumSkew).
+    // kConditioningPatterns fixed sign patterns on the vector components (direction error),
+    // in opposite pairs, so that runs are reproducible; each with a skew of the normalized
+    // lengths (the half vector's error near v = -l; ref::ScopedHalfVectorSumSkew). The
+    // allowance is the largest move: an estimate of the worst case over the 2-ulp ball.
     const double eps = kDirectionInputUlps * 0x1p-23;
-    for (double sign : {1.0, -1.0}) {
+    for (uint32_t pattern = 0; pattern < kConditioningPatterns; ++pattern) {
+      double sign = pattern % 2 ? -1.0 : 1.0;
       perturbed = record;
       for (size_t c = 0; c < directionColumns.size(); ++c) {
-        double s = ((c * 0x9E3779B9u >> 7) & 1u) ? sign : -sign;
-        perturbed[directionColumns[c]] *= 1.0 + s * eps;
+        uint32_t bit = (static_cast<uint32_t>(c + 1) * 0x9E3779B9u >> (7 + pattern / 2)) & 1u;
+        perturbed[directionColumns[c]] *= 1.0 + (bit ? sign : -sign) * eps;
       }
       ref::ScopedHalfVectorSumSkew skew(sign * eps);
       program.reference(perturbed.data(), moved.data());

@@ -22,11 +22,29 @@ struct ProbeProgram {
   std::function<void(const double* in, double* out)> reference;
   Tolerance tolerance;
   SampleDomain domain;
+  ShaderPrecision precision = ShaderPrecision::Fp32;
 };
 
 // `unstableVariant`: probe the brick's naive form against the same reference and tolerance.
-ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool unstableVariant = false);
-ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& perm);
+// At fp16 the domain is the fp16 domain (precision_domain.hpp) and the tolerance is
+// fp16Tolerance(): the error is measured and published, only NaN/Inf fail.
+ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool unstableVariant = false,
+                             ShaderPrecision precision = ShaderPrecision::Fp32);
+// The precision is the permutation's own axis (Permutation::precision).
+// `illuminanceInput`: the probe takes the light's illuminance as an input column
+// (emitPermutation); its domain is kIlluminanceRange, and the absolute tolerance scales with
+// the largest illuminance (the result is linear in it).
+ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& perm,
+                                   bool illuminanceInput = false);
+// Illuminance (lux-like units) from starlight to well above direct sunlight.
+inline constexpr Range kIlluminanceRange{1e-6, 1e6};
+// At fp16: pre-exposed illuminance, from the smallest normal half (2^-14) to 2^10.
+inline constexpr Range kIlluminanceRangeFp16{0x1p-14, 1024.0};
+
+// The manifest tolerances are fp32 error analyses; half precision has no per-brick bound
+// yet. At fp16 errors are reported (docs/fp16.md), not judged: abs is infinite, so a value
+// fails only as NaN or Inf.
+Tolerance fp16Tolerance();
 
 struct ProbeRun {
   std::vector<float> inputs;   // count * inStride
@@ -46,6 +64,8 @@ struct ProbeRun {
 // the problem itself is ill-conditioned (the half vector of nearly opposite v and l, whose
 // direction error grows as 1e-7 / |v + l|), no fp32 formulation can do better than this.
 inline constexpr double kDirectionInputUlps = 2.0;
+// Sign patterns tried per record (in opposite pairs).
+inline constexpr uint32_t kConditioningPatterns = 8;
 
 // Runs the probe on the GPU and the reference on the CPU over the same fp32 inputs.
 ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program,

@@ -19,8 +19,11 @@ namespace mb::ref {
 // interval. In u the range splits where phiMax leaves pi and where it reaches 0 (found by
 // bisection); both parts use composite Gauss-Legendre (32 panels x 8 nodes), the second
 // after a cosine substitution that removes the square-root behaviour of phiMax at its ends.
-// Self-convergence (32 vs 128 panels): < 1e-6 absolute for n.v >= 0.1, < 5e-6 at n.v = 0.01,
-// ~2e-4 at n.v = 1e-3; agrees with a 4000^2 l-space midpoint rule to 1e-6 at n.v >= 0.1.
+// Self-convergence (32 vs 128 panels): < 1e-6 absolute for n.v >= 0.1 at moderate roughness,
+// < 5e-6 at n.v = 0.01, ~2e-4 at n.v = 1e-3. At low roughness it is worse: at n.v = 1,
+// alpha = 0.04 the 32-panel default gives 0.998364 for Int Gv, 128 panels 0.998322, 512
+// panels 0.998298, and the independent half-vector quadrature of compiler/energy 0.998297,
+// i.e. the default is off by ~7e-5 there (found by the energy checks; docs/energy.md).
 struct DfgIntegrals {
   double gvFc = 0;  // channel 0
   double gv = 0;    // channel 1

@@ -6,6 +6,13 @@
 float mb_v_cook_torrance(Geometry g, float alpha) {
     float m = min(g.NoL, g.NoV);
     float M = max(g.NoL, g.NoV);
+#ifdef MB_FP16
+    // Half precision: at grazing mirror geometry (n.v = 1e-3, n.l = 0, v.h = 5e-4) V = 1e6,
+    // beyond the largest half (65504), and both branches overflow to Inf; clamp to 65504 as
+    // Filament's saturateMediump does (surface_brdf.fs). Found by `matbricks stress --precision fp16`.
+    float V16 = 2.0 * g.NoH * m < g.VoH ? g.NoH / (2.0 * g.VoH * M) : 0.25 / (m * M);
+    return min(V16, 65504.0);
+#endif
     if (2.0 * g.NoH * m < g.VoH) {
         return g.NoH / (2.0 * g.VoH * M);
     }

@@ -24,5 +24,11 @@ float mb_horizon_wrap_accurate(Geometry g, float sinAlpha) {
     } else {
         atanMinusW = atan(w) - w;
     }
+#ifdef MB_FP16
+    // Half precision: s^2 underflows below s = 2.4e-4 (smallest half subnormal 6e-8) while
+    // atanMinusW is already 0, and 0 / (s * s) is NaN; dividing by s twice keeps each step in
+    // range. Found by `matbricks stress --precision fp16` (n.l = 0, sinAlpha = 1e-4).
+    return (NoL * atan(z * s, -c * NoL) + w + atanMinusW / s / s) * (1.0 / MB_PI);
+#endif
     return (NoL * atan(z * s, -c * NoL) + w + atanMinusW / (s * s)) * (1.0 / MB_PI);
 }

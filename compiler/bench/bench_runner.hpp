@@ -1,0 +1,78 @@
+// matbricks bench: run time against error, per slot (DESIGN.md: the LEGO property makes it a
+// per-slot table), for every example material permutation, and for the DFG LUT choices.
+// Every shader is built by the probe machinery (validate/probe_program.hpp) and the bench
+// probe emitter (emit/bench_probe.hpp); nothing here writes GLSL.
+#pragma once
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "bench/cost.hpp"
+#include "bench/dfg_lut.hpp"
+#include "bench/error_summary.hpp"
+#include "library/shader_library.hpp"
+#include "load/material_desc.hpp"
+#include "validate/error_metrics.hpp"
+
+namespace mb::bench {
+
+struct BenchOptions {
+  std::vector<std::string> slots;   // only these slots (empty: every slot)
+  std::vector<std::string> bricks;  // only these bricks (empty: every brick of the slots)
+  bool includeBricks = true;        // false: materials and/or IBL only
+  uint64_t samples = 4096;          // error samples per brick / permutation / LUT
+  uint64_t seed = 1;
+  CostOptions cost;
+  std::vector<uint32_t> lutSizes;   // DFG LUT sizes for the IBL table (empty: none)
+};
+
+struct BenchItem {
+  std::string id;    // brick id, or permutation key
+  std::string kind;  // "brick" or "permutation"
+  CostMeasurement cost;
+  size_t spirvInstructions = 0;  // the probe's, after spirv-opt (as validate reports it)
+  std::string yardstick;         // "ground_truth" or "reference"
+  std::vector<std::string> groundTruthBricks;  // permutations: bricks replaced by their truth
+  ErrorSummary error;    // GPU output against the yardstick
+  ErrorStats vsReference;  // GPU output against the brick's own reference (fp32 error)
+  bool onFrontier = false;
+};
+
+// One chart: the bricks of a slot, or the example materials' permutations.
+struct BenchGroup {
+  std::string name;  // slot name, or "materials"
+  std::vector<BenchItem> items;
+};
+
+struct LutItem {
+  uint32_t size = 0;
+  LutFormat format = LutFormat::Fp32;
+  uint64_t bytes = 0;
+  ErrorSummary error;  // against the integrated split-sum, like the env_brdf bricks
+};
+
+struct IblSection {
+  std::string samplesFrom;  // the brick whose layout and domain gave the samples
+  uint64_t samples = 0;
+  std::vector<LutItem> luts;
+};
+
+struct BenchReport {
+  std::string device;
+  std::string toolchain;
+  BenchOptions options;
+  std::vector<BenchGroup> groups;
+  bool hasIbl = false;
+  IblSection ibl;
+};
+
+// Marks the Pareto frontier of (ns per evaluation, max scaled error) in `group`, over the
+// items measured against a ground truth if there are any, else over all.
+void markFrontier(BenchGroup& group);
+
+// `progress` (may be null) gets one line per measured item.
+BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
+                     const std::vector<MaterialDesc>& materials, const BenchOptions& options,
+                     std::ostream* progress);
+
+}  // namespace mb::bench

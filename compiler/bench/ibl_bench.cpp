@@ -1,0 +1,65 @@
+#include "bench/ibl_bench.hpp"
+
+#include <cstdio>
+
+#include "bench/parallel.hpp"
+#include "common/ibl_reference.hpp"
+#include "emit/emitter.hpp"
+#include "validate/sampler.hpp"
+
+namespace mb::bench {
+
+bool measureDfgLuts(const ShaderLibrary& lib, const BenchOptions& o, IblSection& out,
+                    std::ostream* progress) {
+  std::vector<std::string> envBricks = lib.bricksOfSlot("env_brdf");
+  if (envBricks.empty()) return false;
+  // The samples of the first env_brdf brick: validate and bench draw the same ones for it.
+  const Brick& b = *lib.findBrick(envBricks.front());
+  ProbeLayout layout = emitBrickProbe(lib, b).layout;
+  const ProbeInput *f0 = layout.find("f0"), *rough = layout.find("perceptualRoughness"), *nov = layout.find("NoV");
+  if (!f0 || !rough || !nov || f0->type != ValueType::Vec3) return false;
+  SampleDomain domain{b.domain, b.geometry};
+  std::vector<float> in = generateSamples(layout, domain, o.samples, o.seed);
+
+  // The integrals once per sample; each LUT is then compared on every channel of f0.
+  struct Point {
+    double f0[3], roughness, NoV;
+    ref::DfgIntegrals truth;
+  };
+  std::vector<Point> points(o.samples);
+  parallelFor(o.samples, [&](size_t s) {
+    const float* r = in.data() + s * layout.inStride;
+    Point& p = points[s];
+    for (int c = 0; c < 3; ++c) p.f0[c] = r[f0->offset + c];
+    p.roughness = r[rough->offset];
+    p.NoV = r[nov->offset];
+    p.truth = ref::dfgIntegrals(p.NoV, p.roughness * p.roughness);
+  });
+
+  out.samplesFrom = b.id;
+  out.samples = o.samples;
+  for (uint32_t size : o.lutSizes) {
+    DfgLut exact = buildDfgLut(size);
+    for (LutFormat format : {LutFormat::Fp16, LutFormat::Fp32}) {
+      DfgLut lut = quantize(exact, format);
+      LutItem item{size, format, lut.bytes(format), {}};
+      for (const Point& p : points) {
+        DfgSample d = sampleBilinear(lut, p.NoV, p.roughness);
+        // Split sum with Schlick's F: f0 Int Gv + (1 - f0) Int Gv Fc (ibl_reference.hpp).
+        for (double f : p.f0)
+          item.error.add(f * d.y + (1.0 - f) * d.x, f * p.truth.gv + (1.0 - f) * p.truth.gvFc);
+      }
+      if (progress) {
+        char line[200];
+        std::snprintf(line, sizeof line, "bench: %-18s dfg_lut %3ux%-3u %s %8llu bytes  max err %.3g\n", "ibl",
+                      size, size, lutFormatName(format).c_str(), static_cast<unsigned long long>(item.bytes),
+                      item.error.maxScaled());
+        *progress << line << std::flush;
+      }
+      out.luts.push_back(item);
+    }
+  }
+  return true;
+}
+
+}  // namespace mb::bench

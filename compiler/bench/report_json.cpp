@@ -1,0 +1,80 @@
+#include <cmath>
+
+#include "bench/report.hpp"
+
+namespace mb::bench {
+namespace {
+
+nlohmann::json number(double v) {
+  if (std::isfinite(v)) return v;
+  return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");  // JSON has no Inf
+}
+
+nlohmann::json toJson(const ErrorSummary& e) {
+  return {{"values", e.values()},         {"max", number(e.maxScaled())}, {"mean", number(e.meanScaled())},
+          {"max_abs", number(e.maxAbs())}, {"mean_abs", number(e.meanAbs())}, {"max_rel", number(e.maxRel())},
+          {"mean_rel", number(e.meanRel())}, {"non_finite", e.nonFinite()}, {"truth_invalid", e.truthInvalid()}};
+}
+
+nlohmann::json toJson(const BenchItem& it) {
+  return {{"id", it.id},
+          {"kind", it.kind},
+          {"ns_per_eval", number(it.cost.nsPerEval)},
+          {"ns_per_eval_from_minima", number(it.cost.nsPerEvalMin)},
+          {"ns_per_eval_raw", number(it.cost.nsRaw)},
+          {"ns_per_eval_loop_baseline", number(it.cost.nsBaseline)},
+          {"records_per_dispatch", it.cost.records},
+          {"evaluations_per_dispatch", it.cost.evaluations},
+          {"gpu_timestamps", it.cost.gpuTimestamps},
+          {"spirv_instructions", it.spirvInstructions},
+          {"yardstick", it.yardstick},
+          {"ground_truth_bricks", it.groundTruthBricks},
+          {"error", toJson(it.error)},
+          {"fp32_vs_reference",
+           {{"max_abs", number(it.vsReference.maxAbs)},
+            {"max_rel", number(it.vsReference.maxRel)},
+            {"nan_count", it.vsReference.nanCount},
+            {"inf_count", it.vsReference.infCount},
+            {"within_tolerance", it.vsReference.passed()}}},
+          {"on_frontier", it.onFrontier}};
+}
+
+}  // namespace
+
+nlohmann::json toJson(const BenchReport& r) {
+  const BenchOptions& o = r.options;
+  nlohmann::json out{
+      {"tool", "matbricks bench " MB_VERSION},
+      {"device", r.device},
+      {"toolchain", r.toolchain},
+      {"options",
+       {{"repeats", o.cost.repeats},
+        {"samples", o.samples},
+        {"seed", o.seed},
+        {"records", o.cost.records},
+        {"iterations", o.cost.iterations},
+        {"target_dispatch_ms", o.cost.targetDispatchMs},
+        {"lut_sizes", o.lutSizes}}},
+      {"error_metric", "|x - truth| / max(1, |truth|) over every output value of every sample"},
+      {"groups", nlohmann::json::array()}};
+  for (const auto& g : r.groups) {
+    nlohmann::json items = nlohmann::json::array(), frontier = nlohmann::json::array();
+    for (const auto& it : g.items) items.push_back(toJson(it));
+    for (const auto& it : g.items)
+      if (it.onFrontier) frontier.push_back(it.id);
+    out["groups"].push_back({{"name", g.name}, {"frontier", frontier}, {"items", items}});
+  }
+  if (r.hasIbl) {
+    nlohmann::json luts = nlohmann::json::array();
+    for (const auto& l : r.ibl.luts)
+      luts.push_back({{"size", l.size}, {"format", lutFormatName(l.format)}, {"bytes", l.bytes}, {"error", toJson(l.error)}});
+    out["ibl"] = {{"samples_from", r.ibl.samplesFrom},
+                  {"samples", r.ibl.samples},
+                  {"ground_truth", "split-sum integral f0 Int Gv + (1 - f0) Int Gv Fc, GGX, exact correlated Smith (quadrature)"},
+                  {"filtering", "bilinear, clamp-to-edge, texel centres (i + 0.5)/size, emulated on the CPU in double"},
+                  {"luts", luts}};
+  }
+  return out;
+}
+
+}  // namespace mb::bench

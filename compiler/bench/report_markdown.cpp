@@ -1,0 +1,101 @@
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+#include "bench/report.hpp"
+
+namespace mb::bench {
+namespace {
+
+std::string g3(double v) { return printfDouble("%.3g", v); }
+std::string ns(double v) { return printfDouble("%.2f", v); }
+
+std::string yardstickText(const BenchItem& it) {
+  if (it.yardstick == "reference") return "own reference (no ground truth)";
+  if (it.kind == "brick") return "ground truth";
+  std::string s = "ground truth of";
+  for (size_t i = 0; i < it.groundTruthBricks.size(); ++i) s += (i ? ", `" : " `") + it.groundTruthBricks[i] + "`";
+  return s;
+}
+
+void writeGroup(std::ostringstream& s, const BenchGroup& grp) {
+  s << "### `" << grp.name << "`\n\n"
+    << "| " << (grp.name == "materials" ? "permutation" : "brick")
+    << " | ns/eval | SPIR-V instructions | max error | mean error | measured against | frontier |\n"
+    << "|---|---:|---:|---:|---:|---|:-:|\n";
+  for (const auto& it : grp.items)
+    s << "| `" << it.id << "` | " << ns(it.cost.nsPerEval) << " | " << it.spirvInstructions << " | "
+      << g3(it.error.maxScaled()) << " | " << g3(it.error.meanScaled()) << " | " << yardstickText(it) << " | "
+      << (it.onFrontier ? "yes" : "") << " |\n";
+  std::vector<const BenchItem*> front;
+  for (const auto& it : grp.items)
+    if (it.onFrontier) front.push_back(&it);
+  std::sort(front.begin(), front.end(), [](auto* a, auto* b) { return a->cost.nsPerEval < b->cost.nsPerEval; });
+  if (front.empty()) return void(s << "\n");
+  s << "\nFrontier, cheapest first: `" << front[0]->id << "` (" << ns(front[0]->cost.nsPerEval) << " ns, "
+    << front[0]->spirvInstructions << " instructions, max error " << g3(front[0]->error.maxScaled()) << ")";
+  for (size_t k = 1; k < front.size(); ++k) {
+    const BenchItem &a = *front[k - 1], &b = *front[k];
+    double ratio = b.error.maxScaled() > 0 ? a.error.maxScaled() / b.error.maxScaled() : 0;
+    long dInstr = long(b.spirvInstructions) - long(a.spirvInstructions);
+    s << "; then `" << b.id << "`: +" << ns(b.cost.nsPerEval - a.cost.nsPerEval) << " ns and "
+      << (dInstr >= 0 ? "+" : "") << dInstr << " instructions buy max error " << g3(a.error.maxScaled())
+      << " → " << g3(b.error.maxScaled()) << (ratio > 0 ? " (" + g3(ratio) + "x smaller)" : "");
+  }
+  s << ".\n\n";
+}
+
+void writeIbl(std::ostringstream& s, const BenchReport& r) {
+  s << "### IBL: DFG LUT or analytic env-BRDF\n\n"
+    << "Against the integrated split sum `f0 ∫Gv + (1 − f0) ∫Gv·Fc` (GGX, exact correlated Smith), on the "
+    << r.ibl.samples << " samples of `" << r.ibl.samplesFrom
+    << "` (every channel of f0). LUTs: RG texels at centres (i + 0.5)/size, u = n·v, v = perceptual "
+       "roughness, bilinear with clamp-to-edge emulated on the CPU in double; their cost is memory "
+       "(the harness has no texture path to time a fetch). Analytic bricks: GPU output, cost measured "
+       "as above.\n\n"
+    << "| choice | cost | max error | mean error |\n|---|---|---:|---:|\n";
+  for (const auto& grp : r.groups)
+    if (grp.name == "env_brdf")
+      for (const auto& it : grp.items)
+        s << "| `" << it.id << "` (analytic" << (it.id == "env_brdf_approx_nonmetal" ? ", truth at f0 = 0.04" : "")
+          << ") | " << ns(it.cost.nsPerEval) << " ns/eval, " << it.spirvInstructions << " instructions | "
+          << g3(it.error.maxScaled()) << " | " << g3(it.error.meanScaled()) << " |\n";
+  for (const auto& l : r.ibl.luts)
+    s << "| DFG LUT " << l.size << "×" << l.size << " " << lutFormatName(l.format) << " | " << l.bytes
+      << " bytes | " << g3(l.error.maxScaled()) << " | " << g3(l.error.meanScaled()) << " |\n";
+  s << "\n";
+}
+
+}  // namespace
+
+std::string printfDouble(const char* format, double value) {
+  char b[64];
+  std::snprintf(b, sizeof b, format, value);
+  return b;
+}
+
+std::string describeRun(const BenchReport& r) {
+  const BenchOptions& o = r.options;
+  return "device " + r.device + "; medians of " + std::to_string(o.cost.repeats) + " repeats, " +
+         std::to_string(o.cost.iterations) + " evaluations per record; " + std::to_string(o.samples) +
+         " error samples (seed " + std::to_string(o.seed) + ")";
+}
+
+std::string toMarkdown(const BenchReport& r) {
+  std::ostringstream s;
+  s << "Measured with " << describeRun(r) << ". Errors: max and mean over the samples of "
+    << "|x − truth| / max(1, |truth|).\n\n";
+  for (const auto& grp : r.groups) writeGroup(s, grp);
+  if (r.hasIbl) writeIbl(s, r);
+  return s.str();
+}
+
+std::string spliceGenerated(const std::string& document, const std::string& generated) {
+  const std::string begin = kMarkdownBegin, end = kMarkdownEnd;
+  size_t b = document.find(begin), e = document.find(end);
+  std::string body = begin + "\n" + generated + end;
+  if (b == std::string::npos || e == std::string::npos || e < b) return body + "\n";
+  return document.substr(0, b) + body + document.substr(e + end.size());
+}
+
+}  // namespace mb::bench

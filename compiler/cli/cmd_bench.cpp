@@ -1,0 +1,141 @@
+// matbricks bench: run time against error per slot, per example material permutation and
+// for the DFG LUT choices (compiler/bench/). Results as JSON, CSV, SVG Pareto charts and the
+// Markdown tables of docs/accuracy.md.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "bench/report.hpp"
+#include "bench/svg_chart.hpp"
+#include "cli/cli_common.hpp"
+#include "write/package_writer.hpp"
+
+namespace mb::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BenchArgs {
+  std::vector<std::string> materials;
+  std::vector<std::string> slots;
+  std::vector<std::string> bricks;
+  bool ibl = false;
+  std::vector<uint32_t> lutSizes{16, 32, 64, 128};
+  bench::BenchOptions options;
+  std::string json, csv, outDir, markdown;
+};
+
+void checkKnown(const std::vector<std::string>& names, const std::vector<std::string>& known, const char* code,
+                const char* what) {
+  std::vector<Diagnostic> errors;
+  for (const auto& n : names)
+    if (std::find(known.begin(), known.end(), n) == known.end())
+      errors.push_back({Severity::Error, code, {"<command line>", 0, 0}, std::string("unknown ") + what + " '" + n + "'",
+                        didYouMean(n, known)});
+  if (!errors.empty()) throw DiagnosticError(errors);
+}
+
+// `bench` alone measures everything: every slot, the source tree's example materials, the
+// IBL table. Any of --slot, --brick or MATERIAL narrows it to what is named (--ibl adds the
+// IBL table back).
+bench::BenchOptions resolveScope(const BenchArgs& a, const ShaderLibrary& lib, std::vector<std::string>& materials) {
+  std::vector<std::string> slotNames;
+  for (const auto& s : lib.slots()) slotNames.push_back(s.name);
+  checkKnown(a.slots, slotNames, "E-UNKNOWN-SLOT", "slot");
+  checkKnown(a.bricks, lib.brickIds(), "E-UNKNOWN-BRICK", "brick");
+  bench::BenchOptions o = a.options;
+  o.slots = a.slots;
+  o.bricks = a.bricks;
+  bool everything = a.slots.empty() && a.bricks.empty() && a.materials.empty();
+  o.includeBricks = everything || !a.slots.empty() || !a.bricks.empty();
+  if (everything || a.ibl) o.lutSizes = a.lutSizes;
+  materials = a.materials;
+  if (everything) {
+    for (const auto& e : fs::directory_iterator(fs::path(MB_SOURCE_DIR) / "materials"))
+      if (e.path().extension() == ".json") materials.push_back(e.path().string());
+    std::sort(materials.begin(), materials.end());
+  }
+  return o;
+}
+
+std::string readFileIfAny(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void printTable(const bench::BenchReport& r) {
+  std::printf("device: %s\n%-18s %-44s %9s %9s %7s %10s %10s  %-12s %s\n", r.device.c_str(), "group", "id",
+              "ns/eval", "loop ns", "instr", "max err", "mean err", "vs", "frontier");
+  for (const auto& g : r.groups)
+    for (const auto& it : g.items)
+      std::printf("%-18s %-44s %9.2f %9.2f %7zu %10.3g %10.3g  %-12s %s\n", g.name.c_str(), it.id.c_str(),
+                  it.cost.nsPerEval, it.cost.nsBaseline, it.spirvInstructions, it.error.maxScaled(),
+                  it.error.meanScaled(), it.yardstick.c_str(), it.onFrontier ? "*" : "");
+  if (r.hasIbl)
+    for (const auto& l : r.ibl.luts)
+      std::printf("%-18s dfg_lut %3ux%-3u %-32s %9s %9s %7s %10.3g %10.3g  %-12s\n", "ibl", l.size, l.size,
+                  bench::lutFormatName(l.format).c_str(), "-", "-", "-", l.error.maxScaled(), l.error.meanScaled(),
+                  "ground_truth");
+}
+
+int runBench(const BenchArgs& a, const GlobalOptions& g) {
+  ShaderLibrary lib = loadLibrary(g);
+  std::vector<std::string> materialPaths;
+  bench::BenchOptions o = resolveScope(a, lib, materialPaths);
+  std::vector<MaterialDesc> materials = loadMaterials(materialPaths, lib);
+  auto gpu = openDevice(g);
+  bench::BenchReport report = bench::runBench(lib, *gpu, materials, o, &std::cerr);
+
+  // Everything is rendered before anything is written; each file is written atomically.
+  std::string json = bench::toJson(report).dump(2) + "\n", csv = bench::toCsv(report);
+  std::string md = bench::toMarkdown(report), subtitle = bench::describeRun(report);
+  if (!a.outDir.empty()) {
+    PackageWriter w;
+    w.addFile("bench.json", json);
+    w.addFile("bench.csv", csv);
+    w.addFile("bench.md", md);
+    for (const auto& grp : report.groups) w.addFile(grp.name + ".svg", bench::paretoSvg(grp, subtitle));
+    w.commit(a.outDir);
+  }
+  if (!a.json.empty()) PackageWriter::writeFileAtomically(a.json, json);
+  if (!a.csv.empty()) PackageWriter::writeFileAtomically(a.csv, csv);
+  if (!a.markdown.empty())
+    PackageWriter::writeFileAtomically(a.markdown, bench::spliceGenerated(readFileIfAny(a.markdown), md));
+  printTable(report);
+  return reportLayerMessages(*gpu) ? kExitCheckFailed : kExitOk;
+}
+
+}  // namespace
+
+Command addBenchCommand(CLI::App& app, GlobalOptions& g) {
+  auto a = std::make_shared<BenchArgs>();
+  CLI::App* cmd = app.add_subcommand("bench", "Run time against error: every brick per slot, material permutations, DFG LUTs");
+  cmd->add_option("materials", a->materials, "Material JSON files (default with no --slot/--brick: materials/*.json)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--slot", a->slots, "Only the bricks of this slot (repeatable)");
+  cmd->add_option("--brick", a->bricks, "Only this brick (repeatable)");
+  cmd->add_flag("--ibl", a->ibl, "Also measure the DFG LUTs (implied when nothing is narrowed)");
+  cmd->add_option("--lut-sizes", a->lutSizes, "DFG LUT sizes for the IBL table")->delimiter(',')
+      ->check(CLI::Range(2u, 1024u));
+  cmd->add_option("--repeats", a->options.cost.repeats, "Timed dispatches per item (median)")->check(CLI::Range(1u, 1000u));
+  cmd->add_option("--samples", a->options.samples, "Error samples per item")->check(CLI::Range(uint64_t{1}, uint64_t{10000000}));
+  cmd->add_option("--records", a->options.cost.records, "Records per timed dispatch (0: calibrate to --target-ms)")
+      ->check(CLI::Range(uint64_t{0}, uint64_t{1} << 20));
+  cmd->add_option("--iterations", a->options.cost.iterations, "Evaluations per record in the bench probe")
+      ->check(CLI::Range(1u, 4096u));
+  cmd->add_option("--target-ms", a->options.cost.targetDispatchMs, "Dispatch length the calibration aims at")
+      ->check(CLI::Range(0.1, 10000.0));
+  cmd->add_option("--seed", a->options.seed, "Sampler seed");
+  cmd->add_option("--json", a->json, "Write the full results as JSON");
+  cmd->add_option("--csv", a->csv, "Write one CSV row per brick, permutation and LUT");
+  cmd->add_option("-o,--output-dir", a->outDir, "Write bench.json, bench.csv, bench.md and one SVG chart per group");
+  cmd->add_option("--markdown", a->markdown, "Write the Markdown tables (replacing the generated part of an existing file)");
+  return {cmd, [a, &g] { return runBench(*a, g); }};
+}
+
+}  // namespace mb::cli

@@ -1,0 +1,59 @@
+// matbricks energy: white furnace, multiscatter compensation and reciprocity of every lobe,
+// evaluated on the GPU and checked against the double references (compiler/energy/).
+#include <iostream>
+
+#include "cli/cli_common.hpp"
+#include "energy/energy_checks.hpp"
+#include "write/package_writer.hpp"
+
+namespace mb::cli {
+namespace {
+
+struct EnergyArgs {
+  bool json = false;
+  bool markdown = false;
+  std::string output;
+  std::string grid = "fine";
+};
+
+int runEnergy(const EnergyArgs& a, const GlobalOptions& g) {
+  if (!a.output.empty() && !a.markdown && !a.json) throw CLI::ValidationError("-o needs --markdown or --json");
+  ShaderLibrary lib = loadLibrary(g);
+  auto gpu = openDevice(g);
+  energy::EnergyReport report;
+  energy::runEnergyChecks(lib, *gpu, a.grid == "coarse" ? energy::EnergyGrid::coarse() : energy::EnergyGrid::fine(),
+                          report);
+  std::string command = "matbricks energy";
+  if (a.grid != "fine") command += " --grid " + a.grid;
+  std::string text;
+  if (a.markdown) {
+    text = energy::energyMarkdown(report, command + " --markdown -o docs/energy.md");
+  } else if (a.json) {
+    text = energy::energyJson(report).dump(2) + "\n";
+  } else {
+    text = energy::energyText(report);
+  }
+  if (a.output.empty()) {
+    std::cout << text;
+  } else {
+    PackageWriter::writeFileAtomically(a.output, text);
+  }
+  for (const auto& f : report.failures()) std::cerr << "error: " << f << "\n";
+  bool layer = reportLayerMessages(*gpu);
+  return report.failures().empty() && !layer ? kExitOk : kExitCheckFailed;
+}
+
+}  // namespace
+
+Command addEnergyCommand(CLI::App& app, GlobalOptions& g) {
+  auto args = std::make_shared<EnergyArgs>();
+  CLI::App* cmd = app.add_subcommand("energy", "White furnace, multiscatter compensation and reciprocity of every lobe (GPU vs reference)");
+  cmd->add_flag("--json", args->json, "Everything, per grid cell, as JSON");
+  cmd->add_flag("--markdown", args->markdown, "The report as Markdown (docs/energy.md)");
+  cmd->add_option("-o,--output", args->output, "With --markdown or --json: write to this file (atomically)");
+  cmd->add_option("--grid", args->grid, "fine (the published tables) or coarse (seconds; what the tests use)")
+      ->check(CLI::IsMember({"fine", "coarse"}));
+  return {cmd, [args, &g] { return runEnergy(*args, g); }};
+}
+
+}  // namespace mb::cli

@@ -1,0 +1,27 @@
+#include "emit/precision.hpp"
+
+namespace mb {
+
+const char* precisionName(ShaderPrecision p) { return p == ShaderPrecision::Fp16 ? "fp16" : "fp32"; }
+
+std::optional<ShaderPrecision> parsePrecision(const std::string& name) {
+  if (name == "fp32") return ShaderPrecision::Fp32;
+  if (name == "fp16") return ShaderPrecision::Fp16;
+  return std::nullopt;
+}
+
+double minPerceptualRoughness(ShaderPrecision p) {
+  return p == ShaderPrecision::Fp16 ? kMinPerceptualRoughnessFp16 : kMinPerceptualRoughnessFp32;
+}
+
+double minAlpha(ShaderPrecision p) {
+  double r = minPerceptualRoughness(p);
+  return r * r;
+}
+
+std::string brickForPrecision(const std::string& brickId, ShaderPrecision p) {
+  if (p == ShaderPrecision::Fp16 && brickId == "roughness_clamped") return "roughness_clamped_fp16";
+  return brickId;
+}
+
+}  // namespace mb

@@ -1,0 +1,31 @@
+// The precision axis of emitted code (DESIGN.md "permutation ... × precision"). Fp16 emits
+// true half arithmetic: the library sources are rewritten to float16_t/f16vecN
+// (fp16_rewrite.hpp), GL_EXT_shader_explicit_arithmetic_types_float16 is enabled and MB_FP16
+// is defined so that a brick can add a Filament-style guard inside `#ifdef MB_FP16`. The
+// probe's buffers stay fp32; values are converted at the boundary.
+#pragma once
+#include <optional>
+#include <string>
+
+namespace mb {
+
+enum class ShaderPrecision { Fp32, Fp16 };
+
+const char* precisionName(ShaderPrecision p);  // "fp32", "fp16"
+std::optional<ShaderPrecision> parsePrecision(const std::string& name);
+
+// Minimum perceptual roughness per precision (Filament, "Physically Based Rendering in
+// Filament" sec. 4.8.3.3, MIN_PERCEPTUAL_ROUGHNESS: 0.045 with fp32, 0.089 on mobile/fp16;
+// seed 000 "Specular Miscs"). alpha = r^2, so the alpha floors are 0.002025 and 0.007921:
+// 0.089^4 = 6.3e-5 keeps alpha^2 above fp16's smallest normal (6.1e-5).
+inline constexpr double kMinPerceptualRoughnessFp32 = 0.045;
+inline constexpr double kMinPerceptualRoughnessFp16 = 0.089;
+double minPerceptualRoughness(ShaderPrecision p);
+double minAlpha(ShaderPrecision p);
+
+// The roughness brick a material's choice maps to at this precision: at fp16 the Filament
+// clamp moves to its fp16 floor (roughness_clamped -> roughness_clamped_fp16), as Filament's
+// MIN_PERCEPTUAL_ROUGHNESS does; every other brick is kept.
+std::string brickForPrecision(const std::string& brickId, ShaderPrecision p);
+
+}  // namespace mb
