@@ -162,7 +162,7 @@ TEST_CASE("validate --json gives one complete record per permutation", "[cli][va
 }
 
 TEST_CASE("every subcommand has --help and usage errors exit 2", "[cli]") {
-  for (const char* sub : {"compile", "validate", "bricks", "eval"}) {
+  for (const char* sub : {"compile", "validate", "bricks", "eval", "stress", "energy", "lut", "bench"}) {
     auto r = test::runCli(std::string(sub) + " --help");
     INFO(sub);
     CHECK(r.exitCode == 0);
@@ -171,6 +171,10 @@ TEST_CASE("every subcommand has --help and usage errors exit 2", "[cli]") {
   CHECK(test::runCli("").exitCode == 2);
   CHECK(test::runCli("frobnicate").exitCode == 2);
   CHECK(test::runCli("eval --input x.csv").exitCode == 2);
+  CHECK(test::runCli("stress --precision fp64").exitCode == 2);
+  CHECK(test::runCli("lut --size 0").exitCode == 2);
+  CHECK(test::runCli("energy --grid huge").exitCode == 2);
+  CHECK(test::runCli("bench --repeats 0").exitCode == 2);
 }
 
 TEST_CASE("every example eval input evaluates within tolerance", "[cli][eval][examples]") {
