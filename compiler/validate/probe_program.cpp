@@ -55,14 +55,44 @@ ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
   return p;
 }
 
+std::function<void(const double*, double*)> materialReferenceEval(
+    const MaterialDesc& mat, const ProbeLayout& layout, std::map<std::string, std::string> bricks,
+    bool groundTruths) {
+  ref::ModelReferenceFn model = ref::ModelRegistry::instance().find(mat.model);
+  if (!model) missingReference("model '" + mat.model + "'");
+  return [model, layout, &mat, bricks = std::move(bricks), groundTruths](const double* in, double* out) {
+    ref::ModelEvalInput e;
+    auto vec = [&](const std::string& name) {
+      const ProbeInput* pi = layout.find(name);
+      return ref::Vec3{in[pi->offset], in[pi->offset + 1], in[pi->offset + 2]};
+    };
+    e.n = vec("n");
+    e.v = vec("v");
+    e.l = vec("l");
+    if (layout.find("illuminance")) e.illuminance = vec("illuminance");
+    e.bricks = bricks;
+    e.groundTruths = groundTruths;
+    for (const auto& prm : mat.params) {
+      if (prm.constant) {
+        e.inputs[prm.name] = prm.value;
+      } else {
+        const ProbeInput* pi = layout.find(prm.name);
+        e.inputs[prm.name].assign(in + pi->offset, in + pi->offset + componentCount(prm.type));
+      }
+    }
+    ref::Vec3 r = model(e);
+    out[0] = r.x;
+    out[1] = r.y;
+    out[2] = r.z;
+  };
+}
+
 ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput) {
   const MaterialDesc& mat = *perm.material;
   ProbeProgram p;
   p.precision = precisionOf(perm);
   p.shader = emitPermutation(lib, perm, illuminanceInput);
   compileInto(p);
-  ref::ModelReferenceFn model = ref::ModelRegistry::instance().find(mat.model);
-  if (!model) missingReference("model '" + mat.model + "'");
 
   // First-order propagation: relative errors of the bricks multiplied together add up, and
   // a sum of lobes is no worse than its worst lobe; 1e-5 covers the composition's own fp32
@@ -93,31 +123,7 @@ ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& 
   std::map<std::string, std::string> bricks;
   for (const auto& [slot, id] : mat.bricks) bricks[slot] = boundBrick(perm, slot);
 
-  ProbeLayout layout = p.shader.layout;
-  p.reference = [model, layout, &mat, bricks](const double* in, double* out) {
-    ref::ModelEvalInput e;
-    auto vec = [&](const std::string& name) {
-      const ProbeInput* pi = layout.find(name);
-      return ref::Vec3{in[pi->offset], in[pi->offset + 1], in[pi->offset + 2]};
-    };
-    e.n = vec("n");
-    e.v = vec("v");
-    e.l = vec("l");
-    if (layout.find("illuminance")) e.illuminance = vec("illuminance");
-    e.bricks = bricks;
-    for (const auto& prm : mat.params) {
-      if (prm.constant) {
-        e.inputs[prm.name] = prm.value;
-      } else {
-        const ProbeInput* pi = layout.find(prm.name);
-        e.inputs[prm.name].assign(in + pi->offset, in + pi->offset + componentCount(prm.type));
-      }
-    }
-    ref::Vec3 r = model(e);
-    out[0] = r.x;
-    out[1] = r.y;
-    out[2] = r.z;
-  };
+  p.reference = materialReferenceEval(mat, p.shader.layout, bricks);
   return p;
 }
 

@@ -21,6 +21,8 @@ Vec3 ModelEvalInput::vec3Input(const std::string& name) const {
 static const Reference& boundReference(const ModelEvalInput& in, const std::string& slot) {
   auto b = in.bricks.find(slot);
   if (b == in.bricks.end()) throw std::logic_error("no brick bound to slot '" + slot + "'");
+  if (in.groundTruths)
+    if (const Reference* truth = Registry::groundTruths().find(b->second)) return *truth;
   const Reference* r = Registry::references().find(b->second);
   if (!r) throw std::logic_error("brick '" + b->second + "' has no reference");
   return *r;

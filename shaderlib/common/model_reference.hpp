@@ -15,6 +15,9 @@ struct ModelEvalInput {
   Vec3 illuminance{1, 1, 1};
   std::map<std::string, std::vector<double>> inputs;  // model input name -> value
   std::map<std::string, std::string> bricks;          // slot -> brick id
+  // Call each bound brick's ground truth where one is registered (else its reference): the
+  // exact material a permutation approximates, which bench measures error against.
+  bool groundTruths = false;
 
   double floatInput(const std::string& name) const;
   Vec3 vec3Input(const std::string& name) const;
