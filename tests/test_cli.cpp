@@ -195,3 +195,20 @@ TEST_CASE("every example eval input evaluates within tolerance", "[cli][eval][ex
   }
   CHECK(count >= 2);
 }
+
+TEST_CASE("eval --material takes an optional illuminance column; a partial one is located", "[cli][eval]") {
+  fs::path dir = tempDir("illum");
+  const std::string header = "n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z,";
+  { std::ofstream(dir / "lit.csv") << header << "illuminance.x,illuminance.y,illuminance.z,roughness\n0,0,1,0.6,0,0.8,-0.6,0,0.8,1000,500,2,0.5\n"; }
+  { std::ofstream(dir / "partial.csv") << header << "illuminance.x,roughness\n0,0,1,0,0,1,0,0,1,2,0.5\n"; }
+  auto lit = test::runCli("eval --material " + material("ue4_metal.json") + " --input " + (dir / "lit.csv").string());
+  INFO(lit.output);
+  CHECK(lit.exitCode == 0);
+  CHECK_THAT(lit.output, Catch::Contains("within tolerance"));
+  auto partial = test::runCli("eval --material " + material("ue4_metal.json") + " --input " + (dir / "partial.csv").string());
+  INFO(partial.output);
+  CHECK(partial.exitCode == 3);
+  CHECK_THAT(partial.output, Catch::Contains((dir / "partial.csv").string() + ":1:1: error[E-CSV-COLUMN]"));
+  CHECK_THAT(partial.output, Catch::Contains("illuminance.y"));
+  fs::remove_all(dir);
+}

@@ -127,7 +127,8 @@ ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& 
   return p;
 }
 
-ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std::vector<float> inputs) {
+ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std::vector<float> inputs,
+                  bool conditioning) {
   const ProbeLayout& layout = program.shader.layout;
   ProbeRun run;
   run.count = layout.inStride ? inputs.size() / layout.inStride : 0;
@@ -142,7 +143,8 @@ ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std:
 
   run.reference.resize(run.count * layout.outStride);
   run.conditioning.assign(run.count * layout.outStride, 0.0);
-  std::vector<uint32_t> directionColumns = directionInputColumns(layout);
+  std::vector<uint32_t> directionColumns =
+      conditioning ? directionInputColumns(layout) : std::vector<uint32_t>{};
   std::vector<double> record(layout.inStride), perturbed(layout.inStride), moved(layout.outStride);
   for (uint64_t i = 0; i < run.count; ++i) {
     for (uint32_t k = 0; k < layout.inStride; ++k) record[k] = inputs[i * layout.inStride + k];

@@ -69,8 +69,10 @@ inline constexpr double kDirectionInputUlps = 2.0;
 inline constexpr uint32_t kConditioningPatterns = 8;
 
 // Runs the probe on the GPU and the reference on the CPU over the same fp32 inputs.
+// `conditioning`: also fill ProbeRun::conditioning (kConditioningPatterns extra reference
+// evaluations per record); callers that never judge against a tolerance (stress) skip it.
 ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program,
-                  std::vector<float> inputs);
+                  std::vector<float> inputs, bool conditioning = true);
 ErrorStats compare(const ProbeRun& run, const ProbeProgram& program);
 // The double reference of a material probe: the model's reference composition with the
 // given slot -> brick binding, reading n, v, l, [illuminance,] and the non-constant
