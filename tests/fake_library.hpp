@@ -82,7 +82,12 @@ inline std::map<std::string, std::string> fakeLibraryFiles() {
   "description": "test model",
   "skeleton": "standard.glsl",
   "requires": ["common"],
-  "slots": ["specular_d", "fresnel"],
+  "lights": ["dir"],
+  "environments": ["none"],
+  "roles": [
+    {"role": "specular_d", "slot": "specular_d", "description": "D"},
+    {"role": "fresnel", "slot": "fresnel", "description": "F"}
+  ],
   "inputs": [
     {"name": "baseColor", "type": "vec3", "default": [0.8, 0.8, 0.8], "range": [0.0, 1.0], "description": "albedo"},
     {"name": "metallic", "type": "float", "default": 0.0, "range": [0.0, 1.0], "description": "metalness"},

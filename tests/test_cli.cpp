@@ -1,6 +1,8 @@
 // The matbricks command line, run as a user would run it.
 #include <catch2/catch.hpp>
 
+#include <set>
+
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -150,7 +152,12 @@ TEST_CASE("validate --json gives one complete record per permutation", "[cli][va
   auto r = test::runCli("--vk-validation validate --json --samples 512 " + material("filament_plastic.json") + " " + material("ue4_metal.json"));
   REQUIRE(r.exitCode == 0);
   auto recs = nlohmann::json::parse(r.output);
-  REQUIRE(recs.size() == 2);
+  // Two materials, each with every light type of the standard model, once per environment mode.
+  REQUIRE(recs.size() == 8);
+  std::set<std::string> keys;
+  for (const auto& rec : recs) keys.insert(rec["key"].get<std::string>());
+  CHECK(keys.count("filament_plastic.standard.dir+point+spot+sphere+tube.ibl_lut.fp32"));
+  CHECK(keys.count("ue4_metal.standard.dir+point+spot+sphere+tube.none.fp32"));
   for (const auto& rec : recs) {
     for (const char* k : {"key", "samples", "max_abs_error", "max_rel_error", "max_ulp", "nan_count",
                           "inf_count", "negative_count", "passed", "gpu_ms"})

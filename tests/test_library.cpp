@@ -133,7 +133,8 @@ TEST_CASE("a fake library loads into the expected data", "[library]") {
   const mb::ShadingModel* model = lib.findModel("standard");
   REQUIRE(model);
   CHECK(model->skeleton == "models/standard.glsl");
-  CHECK(model->slots == std::vector<std::string>{"specular_d", "fresnel"});
+  CHECK(model->coreRoles() == std::vector<std::string>{"specular_d", "fresnel"});
+  CHECK(model->lights == std::vector<std::string>{"dir"});
   REQUIRE(model->inputs.size() == 3);
   CHECK(model->inputs[0].name == "baseColor");
   CHECK(model->inputs[0].defaultValue == std::vector<double>{0.8, 0.8, 0.8});
@@ -219,9 +220,9 @@ TEST_CASE("library: slot name differs from its folder", "[library]") {
 
 TEST_CASE("library: model names an unknown slot", "[library]") {
   FakeLibrary lib({{"models/standard.json",
-                    edited("models/standard.json", "\"fresnel\"]", "\"fresnl\"]")}});
+                    edited("models/standard.json", "\"slot\": \"fresnel\"", "\"slot\": \"fresnl\"")}});
   auto d = only(errorsOf(lib), "E-UNKNOWN-SLOT");
-  requireAt(d, lib.path("models/standard.json"), 6, 27);
+  requireAt(d, lib.path("models/standard.json"), 10, 33);
   CHECK(d.suggestion == "did you mean 'fresnel'?");
 }
 
@@ -229,7 +230,22 @@ TEST_CASE("library: model input default outside its range", "[library]") {
   FakeLibrary lib({{"models/standard.json",
                     edited("models/standard.json", "\"default\": 0.5", "\"default\": 1.5")}});
   auto d = only(errorsOf(lib), "E-PARAM-RANGE");
-  requireAt(d, lib.path("models/standard.json"), 10, 55);
+  requireAt(d, lib.path("models/standard.json"), 15, 55);
+}
+
+TEST_CASE("library: model role with a default of another slot", "[library]") {
+  FakeLibrary lib({{"models/standard.json",
+                    edited("models/standard.json", "\"slot\": \"fresnel\",", "\"slot\": \"fresnel\", \"default\": \"d_ggx\",")}});
+  auto d = only(errorsOf(lib), "E-UNKNOWN-BRICK");
+  CHECK_THAT(d.message, Contains("'d_ggx' is not a brick of slot 'fresnel'"));
+}
+
+TEST_CASE("library: model role names an unknown light type", "[library]") {
+  FakeLibrary lib({{"models/standard.json", edited("models/standard.json", "\"lights\": [\"dir\"]",
+                                                   "\"lights\": [\"dir\", \"spto\"]")}});
+  auto d = only(errorsOf(lib), "E-UNKNOWN-NAME");
+  CHECK_THAT(d.message, Contains("unknown light type 'spto'"));
+  CHECK(d.suggestion == "did you mean 'spot'?");
 }
 
 TEST_CASE("library: domain must cover exactly the non-Geometry params", "[library]") {

@@ -8,6 +8,7 @@
 
 #include "fake_library.hpp"
 #include "load/material_desc.hpp"
+#include "support/material_fixtures.hpp"
 
 using mb::Diagnostic;
 using mb::DiagnosticError;
@@ -49,6 +50,7 @@ void requireAt(const Diagnostic& d, int line, int column) {
 
 using Catch::Matchers::Contains;
 using Catch::Matchers::Equals;
+using Catch::Matchers::StartsWith;
 
 }  // namespace
 
@@ -378,15 +380,278 @@ TEST_CASE("a material using each slot's first brick of the shipped library loads
   for (const auto& model : lib.models()) {
     nlohmann::json j = {{"name", "m_" + model.name}, {"model", model.name}, {"bricks", {}}};
     bool complete = true;
-    for (const auto& slot : model.slots) {
-      auto ids = lib.bricksOfSlot(slot);
+    for (const auto& role : model.coreRoles()) {
+      auto ids = lib.bricksOfSlot(model.findRole(role)->slot);
       if (ids.empty()) complete = false;  // slot still being filled in
-      else j["bricks"][slot] = ids.front();
+      else j["bricks"][role] = ids.front();
     }
     if (!complete) continue;
     INFO(model.name);
     auto m = mb::parseMaterialJson(j.dump(2), "m.json", lib);
-    CHECK(m.params.size() == model.inputs.size());
+    size_t coreInputs = 0;
+    for (const auto& in : model.inputs) coreInputs += in.feature.empty();
+    CHECK(m.params.size() == coreInputs);
     for (const auto& p : m.params) CHECK(p.constant);
+  }
+}
+
+// --- features, roles, user parameters and surface code (docs/formats.md) -------------------
+
+namespace {
+
+std::vector<Diagnostic> featureErrorsOf(const std::string& text) {
+  return mb::test::diagnosticsOf([&] { mb::parseMaterialJson(text, "m.json", mb::test::featureLibrary()); });
+}
+
+}  // namespace
+
+TEST_CASE("features enable their roles and inputs; roles with a default get it", "[loader]") {
+  const std::string text = R"({
+  "name": "coated",
+  "model": "standard",
+  "features": ["clearcoat"],
+  "bricks": {"specular_d": "d_beckmann", "fresnel": "f_schlick", "clearcoat_d": "d_beckmann"},
+  "parameters": {"clearCoat": {"type": "float", "default": 0.5, "range": [0.0, 1.0]}}
+})";
+  auto m = mb::parseMaterialJson(text, "m.json", mb::test::featureLibrary());
+  CHECK(m.form == "json");
+  CHECK(m.features == std::vector<std::string>{"clearcoat"});
+  CHECK(m.has("clearcoat"));
+  CHECK_FALSE(m.has("sheen"));
+  // The environment-conditional role is included with its default; sheen_d is not (feature off).
+  CHECK(m.bricks == std::map<std::string, std::string>{{"specular_d", "d_beckmann"},
+                                                       {"fresnel", "f_schlick"},
+                                                       {"env_fresnel", "f_schlick"},
+                                                       {"clearcoat_d", "d_beckmann"}});
+  REQUIRE(m.params.size() == 4);  // baseColor, metallic, roughness, clearCoat (no sheenColor)
+  CHECK(m.params[3].name == "clearCoat");
+  CHECK_FALSE(m.params[3].constant);
+  CHECK(m.params[3].value == std::vector<double>{0.5});
+
+  // Without the choice, the feature role takes the model's default.
+  auto d = mb::parseMaterialJson(R"({"name": "c", "model": "standard", "features": ["clearcoat"],
+    "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}})", "m.json", mb::test::featureLibrary());
+  CHECK(d.bricks.at("clearcoat_d") == "d_ggx");
+  CHECK(d.param("clearCoat")->constant);
+  CHECK(d.param("clearCoat")->value == std::vector<double>{1.0});
+}
+
+TEST_CASE("features are listed in the model's order, whatever the file's", "[loader]") {
+  auto m = mb::parseMaterialJson(R"({"name": "c", "model": "standard", "features": ["sheen", "clearcoat"],
+    "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick", "sheen_d": "d_ggx"}})", "m.json",
+                                 mb::test::featureLibrary());
+  CHECK(m.features == std::vector<std::string>{"clearcoat", "sheen"});
+}
+
+TEST_CASE("E-UNKNOWN-FEATURE and E-DUPLICATE-NAME for features", "[loader]") {
+  auto ds = featureErrorsOf(R"({
+  "name": "c",
+  "model": "standard",
+  "features": ["clearcaot", "sheen", "sheen"],
+  "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick", "sheen_d": "d_ggx"}
+})");
+  REQUIRE(ds.size() == 2);
+  requireAt(ds[0], 4, 16);
+  CHECK(ds[0].code == "E-UNKNOWN-FEATURE");
+  CHECK_THAT(ds[0].message, Equals("unknown feature 'clearcaot': model 'standard' has 'clearcoat', 'sheen'"));
+  CHECK(ds[0].suggestion == "did you mean 'clearcoat'?");
+  requireAt(ds[1], 4, 38);
+  CHECK(ds[1].code == "E-DUPLICATE-NAME");
+  CHECK_THAT(ds[1].message, Contains("feature 'sheen' is enabled twice (first at m.json:4:29)"));
+}
+
+TEST_CASE("E-FEATURE-DISABLED: a role or an input of a feature the material does not enable", "[loader]") {
+  auto ds = featureErrorsOf(R"({
+  "name": "c",
+  "model": "standard",
+  "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick", "clearcoat_d": "d_ggx"},
+  "parameters": {"sheenColor": {"type": "vec3", "default": [0.1, 0.9, 0.1]}}
+})");
+  REQUIRE(ds.size() == 2);
+  CHECK(ds[0].code == "E-FEATURE-DISABLED");
+  requireAt(ds[0], 4, 61);
+  CHECK_THAT(ds[0].message, Equals("role 'clearcoat_d' needs feature 'clearcoat' of model 'standard': "
+                                   "enable the feature or remove the role"));
+  CHECK(ds[1].code == "E-FEATURE-DISABLED");
+  requireAt(ds[1], 5, 18);
+  CHECK_THAT(ds[1].message, Contains("input 'sheenColor' belongs to feature 'sheen'"));
+}
+
+TEST_CASE("E-MISSING-FIELD: a feature role without a default must be chosen", "[loader]") {
+  auto ds = featureErrorsOf(R"({
+  "name": "c",
+  "model": "standard",
+  "features": ["sheen"],
+  "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}
+})");
+  auto d = only(ds, "E-MISSING-FIELD");
+  requireAt(d, 5, 13);
+  CHECK_THAT(d.message, Equals("bricks is missing role 'sheen_d' (slot 'specular_d') of model 'standard': "
+                               "choose one of 'd_ggx', 'd_beckmann'"));
+}
+
+TEST_CASE("user parameters need surface code, a type, and a valid name", "[loader]") {
+  SECTION("accepted beside surface code, after the model inputs, in file order, default range [0, 1]") {
+    auto m = mb::parseMaterialJson(R"({
+  "name": "tinted",
+  "model": "standard",
+  "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"},
+  "surface": {"glsl": "void surface(inout MaterialInputs m, MaterialParams p) {\n  m.baseColor = p.tint * p.gain;\n}"},
+  "parameters": {
+    "tint": {"type": "vec3", "default": [0.2, 0.4, 0.6]},
+    "roughness": {"type": "float", "default": 0.3},
+    "gain": {"type": "float", "default": 2.0, "range": [0.0, 4.0], "constant": true}
+  }
+})", "m.json", mb::test::featureLibrary());
+    REQUIRE(m.params.size() == 5);
+    CHECK(m.params[2].name == "roughness");
+    CHECK_FALSE(m.params[2].user);
+    CHECK(m.params[3].name == "tint");  // user parameters in the file's order, not alphabetical
+    CHECK(m.params[3].user);
+    CHECK(m.params[3].type == mb::ValueType::Vec3);
+    CHECK(m.params[3].range.lo == 0.0);
+    CHECK(m.params[3].range.hi == 1.0);
+    CHECK_FALSE(m.params[3].constant);
+    CHECK(m.params[4].name == "gain");
+    CHECK(m.params[4].constant);
+    CHECK(m.params[4].range.hi == 4.0);
+    // The GLSL's first line is on the JSON string's line, just after its opening quote.
+    CHECK(m.surface.where.file == "m.json");
+    CHECK(m.surface.where.line == 5);
+    CHECK(m.surface.where.column == 24);
+    CHECK(m.surface.glsl == "void surface(inout MaterialInputs m, MaterialParams p) {\n  m.baseColor = p.tint * p.gain;\n}\n");
+  }
+  SECTION("without surface code a non-input name is unknown") {
+    auto ds = featureErrorsOf(R"({
+  "name": "c",
+  "model": "standard",
+  "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"},
+  "parameters": {"tint": {"type": "vec3", "default": [0.2, 0.4, 0.6]}}
+})");
+    auto d = only(ds, "E-UNKNOWN-FIELD");
+    requireAt(d, 5, 18);
+    CHECK_THAT(d.message, Contains("a parameter that is not a model input needs surface code"));
+  }
+  SECTION("bad names, a default outside [0, 1] without a range") {
+    auto ds = featureErrorsOf(R"({
+  "name": "c",
+  "model": "standard",
+  "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"},
+  "surface": {"glsl": "void surface(inout MaterialInputs m, MaterialParams p) {}"},
+  "parameters": {
+    "uniform": {"type": "float", "default": 0.5},
+    "gl_Tint": {"type": "float", "default": 0.5},
+    "two words": {"type": "float", "default": 0.5},
+    "n": {"type": "float", "default": 0.5},
+    "gain": {"type": "float", "default": 2.0},
+    "tint": {"type": "vec4", "default": [1, 1, 1, 1]}
+  }
+})");
+    REQUIRE(ds.size() == 6);
+    CHECK(ds[0].code == "E-INVALID-NAME");
+    CHECK_THAT(ds[0].message, Contains("'uniform' is a GLSL keyword"));
+    CHECK(ds[1].code == "E-INVALID-NAME");
+    CHECK_THAT(ds[1].message, Contains("reserved by GLSL"));
+    CHECK(ds[2].code == "E-INVALID-NAME");
+    CHECK(ds[3].code == "E-INVALID-NAME");
+    CHECK_THAT(ds[3].message, Contains("materialInputs()"));
+    CHECK(ds[4].code == "E-PARAM-RANGE");
+    requireAt(ds[4], 11, 42);
+    CHECK_THAT(ds[4].message, Equals("'parameters.gain.default' = 2.0 is outside [0.0, 1.0], the default range "
+                                     "[0, 1] of a user parameter (give it a range)"));
+    CHECK(ds[5].code == "E-PARAM-TYPE");
+    requireAt(ds[5], 12, 22);
+    CHECK(ds[5].suggestion == "did you mean 'vec2', 'vec3'?");
+  }
+}
+
+TEST_CASE("surface: a file inside the project, or errors naming what is wrong", "[loader]") {
+  mb::test::ScratchDir dir("json_surface");
+  const std::string glsl = "void surface(inout MaterialInputs m, MaterialParams p) {\n  m.roughness = 0.7;\n}\n";
+  dir.write("shaders/velvet.surface.glsl", glsl);
+  auto material = [&](const std::string& surface) {
+    return R"({"name": "v", "model": "standard", "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"},
+ "surface": )" + surface + "}";
+  };
+  SECTION("read relative to the material, located at its own first line") {
+    auto path = dir.write("v.json", material(R"({"file": "shaders/velvet.surface.glsl"})"));
+    auto m = mb::loadMaterialJson(path, mb::test::featureLibrary());
+    CHECK(m.surface.glsl == glsl);
+    CHECK(m.surface.where.file == dir.path("shaders/velvet.surface.glsl"));
+    CHECK(m.surface.where.line == 1);
+  }
+  SECTION("E-PATH-ESCAPE: .. out of the project, or an absolute path") {
+    dir.write("sub/v.json", material(R"({"file": "../shaders/velvet.surface.glsl"})"));
+    auto ds = mb::test::diagnosticsOf([&] { mb::loadMaterialJson(dir.path("sub/v.json"), mb::test::featureLibrary()); });
+    auto d = only(ds, "E-PATH-ESCAPE");
+    CHECK(d.where.file == dir.path("sub/v.json"));
+    CHECK(d.where.line == 2);
+    CHECK(d.where.column == 22);
+    CHECK_THAT(d.message, Contains("leaves the project directory"));
+    auto path = dir.write("abs.json", material(R"({"file": "/etc/passwd"})"));
+    ds = mb::test::diagnosticsOf([&] { mb::loadMaterialJson(path, mb::test::featureLibrary()); });
+    CHECK_THAT(only(ds, "E-PATH-ESCAPE").message, StartsWith("absolute path '/etc/passwd'"));
+  }
+  SECTION("E-FILE-NOT-FOUND at the file value; both or neither of file and glsl") {
+    auto path = dir.write("missing.json", material(R"({"file": "nope.glsl"})"));
+    auto ds = mb::test::diagnosticsOf([&] { mb::loadMaterialJson(path, mb::test::featureLibrary()); });
+    CHECK(only(ds, "E-FILE-NOT-FOUND").where.line == 2);
+    ds = featureErrorsOf(material(R"({"file": "a.glsl", "glsl": "void surface() {}"})"));
+    only(ds, "E-CONFLICTING-FIELDS");
+    ds = featureErrorsOf(material("{}"));
+    CHECK_THAT(only(ds, "E-MISSING-FIELD").message, Contains("surface needs 'file'"));
+  }
+  SECTION("E-SURFACE-FUNCTION: the code must define surface()") {
+    auto ds = featureErrorsOf(material(R"({"glsl": "void surfaces(inout MaterialInputs m) {}"})"));
+    auto d = only(ds, "E-SURFACE-FUNCTION");
+    CHECK(d.where.line == 2);
+    CHECK(d.where.column == 23);
+  }
+}
+
+TEST_CASE("loadMaterialFile picks the form by extension", "[loader]") {
+  mb::test::ScratchDir dir("load_file");
+  auto json = dir.write("a.json", R"({"name": "a", "model": "standard",
+ "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}})");
+  auto mat = dir.write("b.MAT", "#define MATERIAL b\n#define MODEL standard\n#define BRICK_specular_d d_ggx\n"
+                                "#define BRICK_fresnel f_schlick\n");
+  auto a = mb::loadMaterialFile(json, mb::test::featureLibrary());
+  REQUIRE(a.size() == 1);
+  CHECK(a[0].form == "json");
+  auto b = mb::loadMaterialFile(mat, mb::test::featureLibrary());
+  REQUIRE(b.size() == 1);
+  CHECK(b[0].form == "macro");
+  CHECK(b[0].name == "b");
+  auto ds = mb::test::diagnosticsOf([&] { mb::loadMaterialFile(dir.write("c.yaml", "x"), mb::test::featureLibrary()); });
+  CHECK_THAT(only(ds, "E-UNSUPPORTED-FORMAT").message, Contains("'.yaml': expected .json (material JSON), .mat"));
+  ds = mb::test::diagnosticsOf([&] { mb::loadMaterialFile(dir.path("absent.mat"), mb::test::featureLibrary()); });
+  only(ds, "E-FILE-NOT-FOUND");
+  std::filesystem::create_directories(dir.path("folder.json"));
+  ds = mb::test::diagnosticsOf([&] { mb::loadMaterialFile(dir.path("folder.json"), mb::test::featureLibrary()); });
+  CHECK_THAT(only(ds, "E-FILE-NOT-FOUND").message, Contains("is not a regular file"));
+}
+
+TEST_CASE("hostile JSON never crashes or hangs the loader: one clean diagnostic", "[loader]") {
+  const std::string valid = R"({"name": "a", "model": "standard", "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}})";
+  struct Case {
+    const char* what;
+    std::string text;
+    const char* code;
+  };
+  std::vector<Case> cases = {
+      {"empty", "", "E-JSON-SYNTAX"},
+      {"truncated", valid.substr(0, valid.size() / 2), "E-JSON-SYNTAX"},
+      {"binary", std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10) + "\xff\xfe", "E-JSON-SYNTAX"},
+      {"deeply nested", std::string(200000, '[') + std::string(200000, ']'), "E-JSON-SYNTAX"},
+      {"huge name", R"({"name": ")" + std::string(4 << 20, 'x') + R"(!", "model": "standard", "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}})", "E-INVALID-NAME"},
+      {"not an object", "[1, 2, 3]", "E-FIELD-TYPE"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.what);
+    auto ds = featureErrorsOf(c.text);
+    REQUIRE(ds.size() == 1);
+    CHECK(ds[0].code == c.code);
+    CHECK(ds[0].where.line >= 1);
+    CHECK(mb::formatDiagnostic(ds[0]).size() < 400);  // one readable line, whatever the input
   }
 }

@@ -22,11 +22,18 @@ Yardstick brickYardstick(const Brick& brick) {
 }
 
 Yardstick materialYardstick(const MaterialDesc& material, const ProbeLayout& layout) {
+  if (material.surface.present())
+    throw DiagnosticError({{Severity::Error, "E-BENCH-SURFACE", {material.sourceFile, 0, 0},
+                            "bench cannot measure material '" + material.name +
+                                "': its user surface code has no C++ form to take ground truths of",
+                            "bench the material without its surface code"}});
   Yardstick y;
   for (const auto& [slot, id] : material.bricks)
     if (ref::Registry::groundTruths().find(id)) y.groundTruthBricks.push_back(id);
   y.kind = y.groundTruthBricks.empty() ? "reference" : "ground_truth";
-  y.eval = materialReferenceEval(material, layout, material.bricks, /*groundTruths=*/true);
+  Permutation perm;  // the material's default permutation: the one bench times
+  perm.material = &material;
+  y.eval = materialReferenceEval(perm, layout, material.bricks, /*groundTruths=*/true);
   return y;
 }
 

@@ -10,17 +10,22 @@ ShaderLibrary loadLibrary(const GlobalOptions& g) {
                                                  : std::filesystem::path(g.shaderlib));
 }
 
-std::vector<MaterialDesc> loadMaterials(const std::vector<std::string>& paths, const ShaderLibrary& lib) {
+std::vector<MaterialDesc> loadMaterials(const std::vector<std::string>& paths, const ShaderLibrary& lib,
+                                        const GlobalOptions& g) {
   std::vector<MaterialDesc> out;
   std::vector<Diagnostic> errors;
   for (const auto& p : paths) {
     try {
-      out.push_back(loadMaterialJson(p, lib));
+      for (auto& m : loadMaterialFile(p, lib)) out.push_back(std::move(m));
     } catch (const DiagnosticError& e) {
       errors.insert(errors.end(), e.diagnostics().begin(), e.diagnostics().end());
     }
   }
   if (!errors.empty()) throw DiagnosticError(errors);
+  // Warnings (an unsupported glTF extension, alpha not shaded, ...) do not stop the run.
+  std::vector<Diagnostic> warnings;
+  for (const auto& m : out) warnings.insert(warnings.end(), m.warnings.begin(), m.warnings.end());
+  if (!warnings.empty()) printDiagnostics(warnings, g);
   return out;
 }
 

@@ -31,7 +31,9 @@ struct GlobalOptions {
 
 ShaderLibrary loadLibrary(const GlobalOptions& g);
 // Loads every material, collecting the diagnostics of all files before failing.
-std::vector<MaterialDesc> loadMaterials(const std::vector<std::string>& paths, const ShaderLibrary& lib);
+// Warnings (an unsupported glTF extension, ...) are printed in the --diagnostics-format.
+std::vector<MaterialDesc> loadMaterials(const std::vector<std::string>& paths, const ShaderLibrary& lib,
+                                        const GlobalOptions& g);
 std::unique_ptr<harness::VulkanHarness> openDevice(const GlobalOptions& g);
 // Prints validation-layer messages to stderr; returns true if there were any.
 bool reportLayerMessages(const harness::VulkanHarness& gpu);

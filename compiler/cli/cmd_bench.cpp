@@ -87,7 +87,7 @@ int runBench(const BenchArgs& a, const GlobalOptions& g) {
   ShaderLibrary lib = loadLibrary(g);
   std::vector<std::string> materialPaths;
   bench::BenchOptions o = resolveScope(a, lib, materialPaths);
-  std::vector<MaterialDesc> materials = loadMaterials(materialPaths, lib);
+  std::vector<MaterialDesc> materials = loadMaterials(materialPaths, lib, g);
   auto gpu = openDevice(g);
   bench::BenchReport report = bench::runBench(lib, *gpu, materials, o, &std::cerr);
 

@@ -37,7 +37,7 @@ int runEval(const EvalArgs& a, const GlobalOptions& g) {
     }
     program = buildBrickProbe(lib, *b, false, *parsePrecision(a.precision));
   } else {
-    materials = loadMaterials({a.material}, lib);
+    materials = loadMaterials({a.material}, lib, g);
     Permutation perm = permutationsFor(materials).front();
     perm.precision = a.precision;
     // An illuminance column (illuminance.x, .y, .z) is optional; without it the light has

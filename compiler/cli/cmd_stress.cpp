@@ -50,7 +50,7 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
     throw CLI::ValidationError("stress", "give MATERIAL files, --brick ID or --all-bricks");
   if (!a.output.empty() && !a.markdown) throw CLI::ValidationError("stress", "-o needs --markdown");
   ShaderLibrary lib = loadLibrary(g);
-  std::vector<MaterialDesc> materials = loadMaterials(a.materials, lib);
+  std::vector<MaterialDesc> materials = loadMaterials(a.materials, lib, g);
   std::vector<const Brick*> bricks;
   if (a.allBricks)
     for (const auto& b : lib.bricks()) bricks.push_back(&b);

@@ -1,4 +1,5 @@
 // matbricks validate: run probes on the GPU against the double references.
+#include <algorithm>
 #include <iostream>
 
 #include "cli/cli_common.hpp"
@@ -17,13 +18,31 @@ struct ValidateArgs {
   uint64_t seed = 1;
   bool json = false;
   std::string precision = "fp32";
+  std::vector<std::string> lights;       // empty: every light type the model shades
+  std::vector<std::string> environments; // empty: every environment mode it supports
 };
+
+// The permutations validated for one material: the model's light types together, once per
+// environment mode, both narrowed by --lights / --environment.
+std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const ShaderLibrary& lib,
+                                                const ValidateArgs& a) {
+  std::vector<Permutation> out;
+  for (auto perm : validationPermutationsFor(m, lib)) {
+    if (!a.environments.empty() &&
+        std::find(a.environments.begin(), a.environments.end(), perm.environment) == a.environments.end())
+      continue;
+    if (!a.lights.empty()) perm.lights = canonicalLights(a.lights);
+    perm.precision = a.precision;
+    out.push_back(perm);
+  }
+  return out;
+}
 
 int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
   if (a.materials.empty() && a.bricks.empty() && !a.allBricks)
     throw CLI::ValidationError("validate", "give MATERIAL files, --brick ID or --all-bricks");
   ShaderLibrary lib = loadLibrary(g);
-  std::vector<MaterialDesc> materials = loadMaterials(a.materials, lib);
+  std::vector<MaterialDesc> materials = loadMaterials(a.materials, lib, g);
   std::vector<const Brick*> bricks;
   if (a.allBricks) {
     for (const auto& b : lib.bricks()) bricks.push_back(&b);
@@ -48,10 +67,9 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
                                               "unstable_variant", a.samples, a.seed));
     }
   }
-  for (auto perm : permutationsFor(materials)) {
-    perm.precision = a.precision;
-    records.push_back(validateProbe(*gpu, buildPermutationProbe(lib, perm), "permutation", a.samples, a.seed));
-  }
+  for (const auto& m : materials)
+    for (const auto& perm : permutationsToValidate(m, lib, a))
+      records.push_back(validateProbe(*gpu, buildPermutationProbe(lib, perm), "permutation", a.samples, a.seed));
 
   bool allPassed = true;
   for (const auto& r : records) allPassed = allPassed && r.passed();
@@ -89,6 +107,14 @@ Command addValidateCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--precision", args->precision,
                   "fp32, or fp16: true half arithmetic on the fp16 domain; errors are reported, only NaN/Inf fail (docs/fp16.md)")
       ->check(CLI::IsMember({"fp32", "fp16"}));
+  cmd->add_option("--lights", args->lights,
+                  "Light types shaded together in each material permutation (default: all the model shades)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(allLightTypes()));
+  cmd->add_option("--environment", args->environments,
+                  "Environment modes to validate, one permutation each (default: all the model supports)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(allEnvironmentModes()));
   return {cmd, [args, &g] { return runValidate(*args, g); }};
 }
 

@@ -37,7 +37,9 @@ std::string diagnosticsToJson(const std::vector<Diagnostic>& ds) {
                    {"message", d.message},
                    {"suggestion", d.suggestion}});
   }
-  return arr.dump(2);
+  // Messages quote the input, which may not be UTF-8 (a binary file's bytes): replace such
+  // bytes with U+FFFD instead of throwing, which would end the CLI with terminate().
+  return arr.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 static std::string joinDiagnostics(const std::vector<Diagnostic>& ds) {

@@ -99,8 +99,8 @@ EmittedShader emitPermutationBenchProbe(const ShaderLibrary& lib, const Permutat
   EmittedShader s = emitPermutation(lib, perm);
   // evaluateMaterial(n, v, l, illuminance, <non-constant parameters in layout order>).
   std::string args = "p_n, p_v, p_l, vec3(1.0)";
-  for (const auto& in : s.layout.inputs)
-    if (in.name != "n" && in.name != "v" && in.name != "l") args += ", p_" + in.name;
+  for (const auto& prm : perm.material->params)
+    if (!prm.constant) args += ", p_" + prm.name;
   return withBenchEntry(std::move(s), "evaluateMaterial(" + args + ")", options);
 }
 

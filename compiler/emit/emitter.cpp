@@ -1,10 +1,12 @@
 #include "emit/emitter.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <set>
 
 #include "emit/fp16_rewrite.hpp"
 #include "emit/glsl_writer.hpp"
+#include "emit/probe_scene.hpp"
 
 namespace mb {
 namespace {
@@ -95,13 +97,15 @@ std::string readInput(const ProbeInput& in) {
 // The compute entry point that validation and benchmarks run (harness kernel contract).
 // The buffers are fp32 at every precision: at fp16 inputs are converted to half after the
 // load and the result back to float before the store.
-void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::string& callExpr, ShaderPrecision p) {
+void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::vector<std::string>& body,
+                const std::vector<std::string>& globals, ShaderPrecision p) {
   w.line("#ifndef MB_NO_PROBE");
   w.line("// Probe: record i holds the inputs below; the result goes to mbOut.");
   w.line("layout(local_size_x = 64) in;");
   w.line("layout(std430, set = 0, binding = 0) readonly buffer MbIn { float mbIn[]; };");
   w.line("layout(std430, set = 0, binding = 1) writeonly buffer MbOut { float mbOut[]; };");
   w.line("layout(push_constant) uniform MbPush { uint count; } mbPush;");
+  for (const auto& g : globals) w.line(atPrecision(g, p));
   w.line("void main() {");
   w.line("    uint i = gl_GlobalInvocationID.x;");
   w.line("    if (i >= mbPush.count) return;");
@@ -111,7 +115,7 @@ void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::string& cal
     std::string value = p == ShaderPrecision::Fp16 ? type + "(" + readInput(in) + ")" : readInput(in);
     w.line("    " + type + " p_" + in.name + " = " + value + ";");
   }
-  w.line("    " + atPrecision(glslType(layout.output), p) + " r = " + callExpr + ";");
+  for (const auto& s : body) w.line("    " + atPrecision(s, p));
   w.line("    uint o = i * " + std::to_string(layout.outStride) + "u;");
   int n = componentCount(layout.output);
   for (int k = 0; k < n; ++k) {
@@ -119,8 +123,22 @@ void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::string& cal
     if (p == ShaderPrecision::Fp16) comp = "float(" + comp + ")";
     w.line("    mbOut[o + " + std::to_string(k) + "u] = " + comp + ";");
   }
+  for (const auto& f : layout.fedOutputs) {
+    int c = componentCount(f.type);
+    for (int k = 0; k < c; ++k) {
+      std::string comp = "m." + f.name + (c == 1 ? "" : std::string(".") + "xyz"[k]);
+      if (p == ShaderPrecision::Fp16) comp = "float(" + comp + ")";
+      w.line("    mbOut[o + " + std::to_string(f.offset + static_cast<uint32_t>(k)) + "u] = " + comp + ";");
+    }
+  }
   w.line("}");
   w.line("#endif  // MB_NO_PROBE");
+}
+
+std::string quotedNames(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "'" : ", '") + n + "'";
+  return s.empty() ? "(none)" : s;
 }
 
 std::string literal(ValueType type, const std::vector<double>& v) {
@@ -147,10 +165,20 @@ std::vector<std::string> ProbeLayout::columns() const {
 
 std::vector<std::string> ProbeLayout::outputColumns() const {
   int n = componentCount(output);
-  if (n == 1) return {"out"};
   std::vector<std::string> cols;
-  for (int k = 0; k < n; ++k) cols.push_back(std::string("out.") + "xyz"[k]);
+  if (n == 1) cols.push_back("out");
+  for (int k = 0; n > 1 && k < n; ++k) cols.push_back(std::string("out.") + "xyz"[k]);
+  for (const auto& f : fedOutputs) {
+    int c = componentCount(f.type);
+    for (int k = 0; k < c; ++k) cols.push_back("surface." + f.name + (c == 1 ? "" : std::string(".") + "xyz"[k]));
+  }
   return cols;
+}
+
+uint32_t ProbeLayout::fedCount() const {
+  uint32_t n = 0;
+  for (const auto& f : fedOutputs) n += static_cast<uint32_t>(componentCount(f.type));
+  return n;
 }
 
 const ProbeInput* ProbeLayout::find(const std::string& name) const {
@@ -185,19 +213,37 @@ EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
   inc.addBrick(brick, unstableVariant);
   inc.writeTo(w);
   out.bricks = inc.bricks();
-  writeProbe(w, out.layout, brick.function + "(" + args + ")", precision);
+  writeProbe(w, out.layout, {std::string(glslType(slot->returns)) + " r = " + brick.function + "(" + args + ");"},
+             {}, precision);
   out.glsl = w.str();
   return out;
 }
 
-ProbeLayout materialProbeLayout(const MaterialDesc& material, bool illuminanceInput) {
+ProbeScene probeSceneOf(const Permutation& perm, bool illuminanceInput) {
+  ProbeScene scene;
+  scene.lights = perm.lights;
+  scene.environment = perm.environment;
+  scene.illuminanceInput = illuminanceInput;
+  bool slice = perm.lights == std::vector<std::string>{"dir"} && perm.environment == "none";
+  scene.fullFrame = !slice || !perm.material->features.empty();
+  return scene;
+}
+
+ProbeLayout materialProbeLayout(const Permutation& perm, bool illuminanceInput) {
   ProbeLayout layout;
   addGeometryInputs(layout);
-  if (illuminanceInput) addInput(layout, "illuminance", ValueType::Vec3);
-  for (const auto& p : material.params)
+  for (const auto& in : probeSceneInputs(probeSceneOf(perm, illuminanceInput))) addInput(layout, in.name, in.type);
+  for (const auto& p : perm.material->params)
     if (!p.constant) addInput(layout, p.name, p.type);
   layout.output = ValueType::Vec3;
   layout.outStride = 3;
+  if (perm.material->surface.present()) {
+    for (const auto& p : perm.material->params) {
+      if (p.user) continue;
+      layout.fedOutputs.push_back({p.name, p.type, layout.outStride});
+      layout.outStride += static_cast<uint32_t>(componentCount(p.type));
+    }
+  }
   return layout;
 }
 
@@ -207,53 +253,186 @@ ShaderPrecision precisionOf(const Permutation& perm) {
                           "unknown precision '" + perm.precision + "'", "one of 'fp32', 'fp16'"}});
 }
 
-std::string boundBrick(const Permutation& perm, const std::string& slot) {
-  return brickForPrecision(perm.material->bricks.at(slot), precisionOf(perm));
+std::string boundBrick(const Permutation& perm, const std::string& role) {
+  return brickForPrecision(perm.material->bricks.at(role), precisionOf(perm));
 }
+
+bool roleActive(const ModelRole& role, const Permutation& perm) {
+  if (!role.feature.empty() && !perm.material->has(role.feature)) return false;
+  if (!role.lights.empty() &&
+      std::none_of(role.lights.begin(), role.lights.end(), [&](const std::string& t) { return perm.hasLight(t); }))
+    return false;
+  if (!role.environments.empty() &&
+      std::find(role.environments.begin(), role.environments.end(), perm.environment) == role.environments.end())
+    return false;
+  return true;
+}
+
+std::vector<std::pair<std::string, std::string>> boundRoles(const ShaderLibrary& lib, const Permutation& perm) {
+  std::vector<std::pair<std::string, std::string>> out;
+  const ShadingModel* model = lib.findModel(perm.material->model);
+  for (const auto& role : model->roles)
+    if (roleActive(role, perm)) out.emplace_back(role.role, boundBrick(perm, role.role));
+  return out;
+}
+
+namespace {
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// A permutation must ask only for what its model shades (docs/models.md).
+void checkPermutation(const ShadingModel& model, const Permutation& perm) {
+  std::vector<Diagnostic> errors;
+  SourceLocation at{perm.material->sourceFile, 0, 0};
+  for (const auto& t : perm.lights)
+    if (std::find(model.lights.begin(), model.lights.end(), t) == model.lights.end())
+      errors.push_back({Severity::Error, "E-PERMUTATION-INVALID", at,
+                        "model '" + model.name + "' does not shade '" + t + "' lights (it shades " +
+                            quotedNames(model.lights) + ")"});
+  if (std::find(model.environments.begin(), model.environments.end(), perm.environment) == model.environments.end())
+    errors.push_back({Severity::Error, "E-PERMUTATION-INVALID", at,
+                      "model '" + model.name + "' has no environment mode '" + perm.environment +
+                          "' (it has " + quotedNames(model.environments) + ")"});
+  if (!errors.empty()) throw DiagnosticError(errors);
+}
+
+void writeDefines(GlslWriter& w, const Permutation& perm) {
+  for (const auto& t : perm.lights) w.line("#define MB_LIGHT_" + upper(t) + " 1");
+  w.line("#define MB_ENV_" + upper(perm.environment) + " 1");
+  if (perm.environment == "ibl_lut" || perm.environment == "ibl_analytic") w.line("#define MB_ENV_IBL 1");
+  for (const auto& f : perm.material->features) w.line("#define MB_FEATURE_" + upper(f) + " 1");
+}
+
+// struct MaterialInputs (model inputs) and, with surface code, struct MaterialParams (user
+// parameters): one member per parameter, in the material's order.
+void writeInputStructs(GlslWriter& w, const MaterialDesc& mat, ShaderPrecision precision) {
+  auto line = [&](const std::string& glsl) { w.line(atPrecision(glsl, precision)); };
+  line("struct MaterialInputs {");
+  for (const auto& p : mat.params)
+    if (!p.user) line(std::string("    ") + glslType(p.type) + " " + p.name + ";");
+  line("};");
+  if (!mat.surface.present()) return;
+  line("struct MaterialParams {");
+  bool any = false;
+  for (const auto& p : mat.params)
+    if (p.user) {
+      line(std::string("    ") + glslType(p.type) + " " + p.name + ";");
+      any = true;
+    }
+  if (!any) line("    float unused_;  // GLSL has no empty structs");
+  line("};");
+}
+
+// The engine-facing API (docs/models.md "GLSL contract").
+void writeApi(GlslWriter& w, const Permutation& perm, ShaderPrecision precision) {
+  const MaterialDesc& mat = *perm.material;
+  auto line = [&](const std::string& glsl) { w.line(atPrecision(glsl, precision)); };
+  std::string params, args;
+  for (const auto& p : mat.params) {
+    if (p.constant) continue;
+    params += std::string(params.empty() ? "" : ", ") + glslType(p.type) + " " + p.name;
+    args += std::string(args.empty() ? "" : ", ") + p.name;
+  }
+  line("// The material's inputs: constants folded in" +
+       std::string(mat.surface.present() ? ", then the user's surface() applied." : "."));
+  line("MaterialInputs materialInputs(" + params + ") {");
+  line("    MaterialInputs m;");
+  for (const auto& p : mat.params)
+    if (!p.user) line("    m." + p.name + " = " + (p.constant ? literal(p.type, p.value) : p.name) + ";");
+  if (mat.surface.present()) {
+    line("    MaterialParams p;");
+    for (const auto& p : mat.params)
+      if (p.user) line("    p." + p.name + " = " + (p.constant ? literal(p.type, p.value) : p.name) + ";");
+    line("    surface(m, p);");
+  }
+  line("    return m;");
+  line("}");
+  line("ShadingPixel preparePixel(MaterialInputs m, ShadingFrame f) { return mb_prepare(m, f); }");
+  line("vec3 emittedRadiance(ShadingPixel px) { return mb_emission(px); }");
+  static const std::pair<const char*, const char*> kLights[] = {
+      {"dir", "DirectionalLight"}, {"point", "PointLight"}, {"spot", "SpotLight"},
+      {"sphere", "SphereLight"},   {"tube", "TubeLight"}};
+  for (const auto& [type, name] : kLights) {
+    if (!perm.hasLight(type)) continue;
+    std::string fn = std::string("shade") + (std::string(type) == "dir" ? "Directional" : "") + name;
+    if (std::string(type) == "dir") fn = "shadeDirectionalLight";
+    line(std::string("vec3 ") + fn + "(ShadingPixel px, ShadingFrame f, " + name + " light) { return mb_shade_" +
+         type + "(px, f, light); }");
+  }
+  if (perm.environment != "none")
+    line("vec3 shadeEnvironment(ShadingPixel px, ShadingFrame f, Environment env) { return mb_shade_environment(px, f, env); }");
+  if (!perm.hasLight("dir")) return;
+  line("// One directional light of the given illuminance (the vertical slice's entry point); the");
+  line("// tangent is an arbitrary one around n and the geometric normal is n.");
+  line("vec3 evaluateMaterial(vec3 n, vec3 v, vec3 l, vec3 illuminance" + (params.empty() ? "" : ", " + params) + ") {");
+  line("    ShadingFrame f;");
+  line("    f.n = normalize(n);");
+  line("    f.v = normalize(v);");
+  line("    f.ng = f.n;");
+  line("    vec3 b;");
+  line("    mb_orthonormal_basis(f.n, f.t, b);");
+  line("    ShadingPixel px = preparePixel(materialInputs(" + args + "), f);");
+  line("    return emittedRadiance(px) + shadeDirectionalLight(px, f, DirectionalLight(normalize(l), illuminance));");
+  line("}");
+}
+
+void writePermutationProbe(GlslWriter& w, const ProbeLayout& layout, const Permutation& perm,
+                           const ProbeScene& scene, ShaderPrecision p) {
+  std::vector<std::string> body;
+  for (const auto& s : probeSceneFrame(scene)) body.push_back(s);
+  std::string args;
+  for (const auto& prm : perm.material->params)
+    if (!prm.constant) args += std::string(args.empty() ? "" : ", ") + "p_" + prm.name;
+  body.push_back("MaterialInputs m = materialInputs(" + args + ");");
+  body.push_back("ShadingPixel px = preparePixel(m, f);");
+  body.push_back("vec3 r = emittedRadiance(px);");
+  for (const auto& s : probeSceneShading(scene)) body.push_back(s);
+  writeProbe(w, layout, body, probeSceneGlobals(scene), p);
+}
+
+}  // namespace
 
 EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput) {
   const MaterialDesc& mat = *perm.material;
   const ShaderPrecision precision = precisionOf(perm);
   const ShadingModel* model = lib.findModel(mat.model);
+  checkPermutation(*model, perm);
   EmittedShader out;
   out.key = perm.key();
   out.fileName = out.key + ".glsl";
-  out.layout = materialProbeLayout(mat, illuminanceInput);
+  const ProbeScene scene = probeSceneOf(perm, illuminanceInput);
+  out.layout = materialProbeLayout(perm, illuminanceInput);
 
   GlslWriter w(out.fileName);
   writeHeader(w, "permutation " + out.key, precision);
   w.line("// Material '" + mat.name + "' (" + mat.sourceFile + "), model '" + mat.model + "'.");
-  // Bind each slot of the skeleton to the brick the material chose.
-  for (const auto& slot : model->slots) {
-    const Brick* b = lib.findBrick(boundBrick(perm, slot));
-    w.line("#define MB_SLOT_" + slot + " " + b->function);
-  }
+  writeDefines(w, perm);
+  // Bind each role of the skeleton to the brick the material chose.
+  const auto roles = boundRoles(lib, perm);
+  for (const auto& [role, id] : roles) w.line("#define MB_SLOT_" + role + " " + lib.findBrick(id)->function);
   Includes inc(lib, precision);
   for (const auto& r : model->requiredUnits) inc.require(r);
-  for (const auto& slot : model->slots) inc.addBrick(*lib.findBrick(boundBrick(perm, slot)));
+  for (const auto& f : model->features)
+    if (mat.has(f.name))
+      for (const auto& r : f.requiredUnits) inc.require(r);
+  for (const auto& [role, id] : roles) inc.addBrick(*lib.findBrick(id));
   inc.writeTo(w);
   out.bricks = inc.bricks();
-  w.include(ShaderLibrary::displayPath(model->skeleton),
-            atPrecision(lib.source(model->skeleton), precision));
-
-  // evaluateMaterial: what an engine calls. Constant parameters are folded in; the others
-  // are arguments, in the model's input order.
-  std::string params = "vec3 n, vec3 v, vec3 l, vec3 illuminance";
-  std::string probeArgs = std::string("p_n, p_v, p_l, ") + (illuminanceInput ? "p_illuminance" : "vec3(1.0)");
-  for (const auto& p : mat.params) {
-    if (p.constant) continue;
-    params += std::string(", ") + glslType(p.type) + " " + p.name;
-    probeArgs += ", p_" + p.name;
-  }
-  auto line = [&](const std::string& glsl) { w.line(atPrecision(glsl, precision)); };
-  line("// Outgoing radiance towards v for a directional light of the given illuminance.");
-  line("vec3 evaluateMaterial(" + params + ") {");
-  line("    MaterialInputs m;");
-  for (const auto& p : mat.params)
-    line("    m." + p.name + " = " + (p.constant ? literal(p.type, p.value) : p.name) + ";");
-  line("    return mb_" + mat.model + "_evaluate(m, n, v, l, illuminance);");
-  line("}");
-  writeProbe(w, out.layout, atPrecision("evaluateMaterial(" + probeArgs + ")", precision), precision);
+  writeInputStructs(w, mat, precision);
+  auto includeModelFile = [&](const std::string& file) {
+    w.include(ShaderLibrary::displayPath(file), atPrecision(lib.source(file), precision));
+  };
+  for (const auto& f : model->features)
+    if (mat.has(f.name) && !f.file.empty()) includeModelFile(f.file);
+  includeModelFile(model->skeleton);
+  for (const auto& part : model->parts) includeModelFile(part);
+  if (mat.surface.present())
+    w.include(mat.surface.where.file, atPrecision(mat.surface.glsl, precision), std::max(1, mat.surface.where.line));
+  writeApi(w, perm, precision);
+  writePermutationProbe(w, out.layout, perm, scene, precision);
   out.glsl = w.str();
   return out;
 }

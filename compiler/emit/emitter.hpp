@@ -7,6 +7,7 @@
 
 #include "library/shader_library.hpp"
 #include "emit/precision.hpp"
+#include "emit/probe_scene.hpp"
 #include "load/material_desc.hpp"
 #include "permute/permutation.hpp"
 
@@ -25,6 +26,11 @@ struct ProbeLayout {
   ValueType output = ValueType::Float;
   uint32_t inStride = 0;   // floats per input record
   uint32_t outStride = 0;  // floats per output record
+  // Outputs after the result that the reference reads back (ProbeRun): with user surface
+  // code, the MaterialInputs members surface() computed, so the reference composition is
+  // evaluated at exactly the inputs the GPU shaded (there is no C++ form of user GLSL).
+  std::vector<ProbeInput> fedOutputs;  // offsets within the output record
+  uint32_t fedCount() const;
   // CSV column names: "alpha", "n.x", "n.y", "n.z", ...
   std::vector<std::string> columns() const;
   std::vector<std::string> outputColumns() const;
@@ -44,18 +50,27 @@ struct EmittedShader {
 EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool unstableVariant = false,
                              ShaderPrecision precision = ShaderPrecision::Fp32);
 // The precision comes from the permutation's own axis (Permutation::precision, in its key).
-// With `illuminanceInput` the probe reads the light's illuminance (vec3 "illuminance", after
-// n, v, l) instead of passing 1, so that stress can drive very large and very small light
-// intensities; evaluateMaterial itself is the same either way.
+// The probe builds the frame, one light of each type in the permutation and its environment
+// from the record (probe_scene.hpp) and sums their radiance. With `illuminanceInput` the
+// directional light's illuminance is a record input (vec3 "illuminance", after n, v, l)
+// instead of 1, so that stress can drive very large and very small light intensities.
+// Throws DiagnosticError (E-PERMUTATION-INVALID) for lights or an environment the model
+// does not shade.
 EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput = false);
 // Permutation::precision as an enum; throws DiagnosticError for an unknown name.
 ShaderPrecision precisionOf(const Permutation& perm);
-// The brick bound to `slot` in this permutation (the material's choice, adjusted for the
+// The brick bound to `role` in this permutation (the material's choice, adjusted for the
 // precision by brickForPrecision).
-std::string boundBrick(const Permutation& perm, const std::string& slot);
+std::string boundBrick(const Permutation& perm, const std::string& role);
+// Whether a model role exists in this permutation (its feature, lights, environment).
+bool roleActive(const ModelRole& role, const Permutation& perm);
+// role -> brick id of every role the permutation's shader calls, in the model's order.
+std::vector<std::pair<std::string, std::string>> boundRoles(const ShaderLibrary& lib, const Permutation& perm);
 
-// Inputs of a material probe: n, v, l, [illuminance,] then each non-constant parameter in
-// model order.
-ProbeLayout materialProbeLayout(const MaterialDesc& material, bool illuminanceInput = false);
+// The probe scene of a permutation (which record inputs describe frame, lights, environment).
+ProbeScene probeSceneOf(const Permutation& perm, bool illuminanceInput = false);
+// Inputs of a material probe: n, v, l, the scene's inputs, then each non-constant parameter
+// in the material's order.
+ProbeLayout materialProbeLayout(const Permutation& perm, bool illuminanceInput = false);
 
 }  // namespace mb

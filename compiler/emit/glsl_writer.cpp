@@ -10,8 +10,8 @@ void GlslWriter::line(const std::string& text) {
   ++lines_;
 }
 
-void GlslWriter::include(const std::string& sourcePath, const std::string& text) {
-  line("#line 1 \"" + sourcePath + "\"");
+void GlslWriter::include(const std::string& sourcePath, const std::string& text, int firstLine) {
+  line("#line " + std::to_string(firstLine) + " \"" + sourcePath + "\"");
   size_t start = 0;
   while (start < text.size()) {
     size_t end = text.find('\n', start);

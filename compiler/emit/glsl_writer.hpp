@@ -11,9 +11,9 @@ class GlslWriter {
   explicit GlslWriter(std::string displayName) : displayName_(std::move(displayName)) {}
   void line(const std::string& text);  // one generated line (no trailing newline)
   void blank() { line(""); }
-  // Inserts `text` from `sourcePath`, starting at its line 1, then returns to the
-  // generated file's own numbering.
-  void include(const std::string& sourcePath, const std::string& text);
+  // Inserts `text` from `sourcePath`, whose first line is line `firstLine` there, then
+  // returns to the generated file's own numbering.
+  void include(const std::string& sourcePath, const std::string& text, int firstLine = 1);
   const std::string& str() const { return out_; }
 
  private:

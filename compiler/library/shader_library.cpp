@@ -416,8 +416,8 @@ class LibraryLoader {
     auto doc = loadJson("models/" + name + ".json", listedAt);
     if (!doc) return;
     JsonFields f(*doc, sink_);
-    if (!f.object("", {"name", "description", "skeleton", "requires", "slots", "inputs"}, {},
-                  "shading model '" + name + "'"))
+    if (!f.object("", {"name", "description", "skeleton", "requires", "lights", "environments", "roles", "inputs"},
+                  {"features", "parts"}, "shading model '" + name + "'"))
       return;
     ShadingModel m;
     m.name = name;
@@ -427,51 +427,165 @@ class LibraryLoader {
               "model name '" + *declared + "' differs from its file name '" + name + ".json'");
     m.description = f.string("/description").value_or("");
     m.skeleton = readGlsl(f, "/skeleton", "models").value_or("");
+    if (f.find("/parts") && f.isArray("/parts"))
+      for (size_t i = 0; i < f.find("/parts")->size(); ++i)
+        if (auto part = readGlsl(f, JsonFields::element("/parts", i), "models")) m.parts.push_back(*part);
     m.requiredUnits = requiredUnits(f, "/requires");
-    m.slots = readModelSlots(f);
-    m.inputs = readModelInputs(f);
+    m.lights = namesFrom(f, "/lights", allLightTypes(), "light type");
+    m.environments = namesFrom(f, "/environments", allEnvironmentModes(), "environment mode");
+    if (f.find("/features")) m.features = readFeatures(f);
+    m.roles = readRoles(f, m);
+    m.inputs = readModelInputs(f, m);
     data_.models.push_back(std::move(m));
   }
 
-  std::vector<std::string> readModelSlots(JsonFields& f) {
+  // A string array whose entries must come from `allowed`, each once.
+  std::vector<std::string> namesFrom(JsonFields& f, const std::string& ptr,
+                                     const std::vector<std::string>& allowed, const std::string& what) {
     std::vector<std::string> out;
-    auto names = f.strings("/slots");
+    auto names = f.strings(ptr);
     if (!names) return out;
-    std::vector<std::string> known;
-    for (const auto& s : data_.slots) known.push_back(s.name);
     for (size_t i = 0; i < names->size(); ++i) {
       const std::string& n = (*names)[i];
-      std::string at = JsonFields::element("/slots", i);
-      if (std::find(known.begin(), known.end(), n) == known.end()) {
-        f.error("E-UNKNOWN-SLOT", f.valueAt(at),
-                "unknown slot '" + n + "': the manifest's slots are " + quotedList(known),
-                didYouMean(n, known));
-      } else if (std::find(out.begin(), out.end(), n) != out.end()) {
-        f.error("E-DUPLICATE-NAME", f.valueAt(at), "slot '" + n + "' is listed twice");
-      } else {
+      std::string at = JsonFields::element(ptr, i);
+      if (std::find(allowed.begin(), allowed.end(), n) == allowed.end())
+        f.error("E-UNKNOWN-NAME", f.valueAt(at),
+                "unknown " + what + " '" + n + "': expected one of " + quotedList(allowed),
+                didYouMean(n, allowed));
+      else if (std::find(out.begin(), out.end(), n) != out.end())
+        f.error("E-DUPLICATE-NAME", f.valueAt(at), what + " '" + n + "' is listed twice");
+      else
         out.push_back(n);
-      }
     }
     return out;
   }
 
-  std::vector<ModelInput> readModelInputs(JsonFields& f) {
+  std::vector<ModelFeature> readFeatures(JsonFields& f) {
+    std::vector<ModelFeature> out;
+    if (!f.isArray("/features")) return out;
+    for (size_t i = 0; i < f.find("/features")->size(); ++i) {
+      std::string ptr = JsonFields::element("/features", i);
+      if (!f.object(ptr, {"name", "description"}, {"file", "requires"}, "model feature")) continue;
+      ModelFeature feat;
+      auto fname = identifier(f, ptr + "/name", "feature name");
+      feat.description = f.string(ptr + "/description").value_or("");
+      if (f.find(ptr + "/file")) feat.file = readGlsl(f, ptr + "/file", "models").value_or("");
+      if (f.find(ptr + "/requires")) feat.requiredUnits = requiredUnits(f, ptr + "/requires");
+      if (!fname) continue;
+      if (std::any_of(out.begin(), out.end(), [&](const ModelFeature& x) { return x.name == *fname; })) {
+        f.error("E-DUPLICATE-NAME", f.valueAt(ptr + "/name"), "feature '" + *fname + "' is listed twice");
+        continue;
+      }
+      feat.name = *fname;
+      out.push_back(std::move(feat));
+    }
+    return out;
+  }
+
+  std::vector<std::string> featureNames(const ShadingModel& m) const {
+    std::vector<std::string> names;
+    for (const auto& x : m.features) names.push_back(x.name);
+    return names;
+  }
+
+  // A "feature" member must name a feature of the model.
+  std::string featureRef(JsonFields& f, const std::string& ptr, const ShadingModel& m) {
+    if (!f.find(ptr)) return {};
+    auto name = f.string(ptr);
+    if (!name) return {};
+    if (!m.findFeature(*name)) {
+      f.error("E-UNKNOWN-NAME", f.valueAt(ptr),
+              "unknown feature '" + *name + "': model '" + m.name + "' has " + quotedList(featureNames(m)),
+              didYouMean(*name, featureNames(m)));
+      return {};
+    }
+    return *name;
+  }
+
+  std::vector<ModelRole> readRoles(JsonFields& f, const ShadingModel& m) {
+    std::vector<ModelRole> out;
+    if (!f.isArray("/roles")) return out;
+    std::vector<std::string> known;
+    for (const auto& s : data_.slots) known.push_back(s.name);
+    for (size_t i = 0; i < f.find("/roles")->size(); ++i) {
+      std::string ptr = JsonFields::element("/roles", i);
+      if (!f.object(ptr, {"role", "slot", "description"}, {"default", "feature", "lights", "environments"},
+                    "model role"))
+        continue;
+      ModelRole r;
+      auto role = identifier(f, ptr + "/role", "role name");
+      auto slot = f.string(ptr + "/slot");
+      r.description = f.string(ptr + "/description").value_or("");
+      r.feature = featureRef(f, ptr + "/feature", m);
+      if (f.find(ptr + "/lights")) r.lights = namesFrom(f, ptr + "/lights", m.lights, "light type");
+      if (f.find(ptr + "/environments"))
+        r.environments = namesFrom(f, ptr + "/environments", m.environments, "environment mode");
+      if (slot && std::find(known.begin(), known.end(), *slot) == known.end()) {
+        f.error("E-UNKNOWN-SLOT", f.valueAt(ptr + "/slot"),
+                "unknown slot '" + *slot + "': the manifest's slots are " + quotedList(known),
+                didYouMean(*slot, known));
+        slot.reset();
+      }
+      if (slot && f.find(ptr + "/default")) {
+        auto id = f.string(ptr + "/default");
+        const Brick* b = id ? findLoadedBrick(*id) : nullptr;
+        if (id && (!b || b->slot != *slot)) {
+          f.error("E-UNKNOWN-BRICK", f.valueAt(ptr + "/default"),
+                  "default '" + *id + "' is not a brick of slot '" + *slot + "'",
+                  didYouMean(*id, loadedBricksOf(*slot)));
+        } else if (id) {
+          r.defaultBrick = *id;
+        }
+      }
+      if (role && std::any_of(out.begin(), out.end(), [&](const ModelRole& x) { return x.role == *role; })) {
+        f.error("E-DUPLICATE-NAME", f.valueAt(ptr + "/role"), "role '" + *role + "' is listed twice");
+        continue;
+      }
+      if (!role || !slot) continue;
+      r.role = *role;
+      r.slot = *slot;
+      out.push_back(std::move(r));
+    }
+    return out;
+  }
+
+  const Brick* findLoadedBrick(const std::string& id) const {
+    for (const auto& b : data_.bricks)
+      if (b.id == id) return &b;
+    return nullptr;
+  }
+
+  std::vector<std::string> loadedBricksOf(const std::string& slot) const {
+    std::vector<std::string> ids;
+    for (const auto& b : data_.bricks)
+      if (b.slot == slot) ids.push_back(b.id);
+    return ids;
+  }
+
+  std::vector<ModelInput> readModelInputs(JsonFields& f, const ShadingModel& m) {
     std::vector<ModelInput> inputs;
     if (!f.isArray("/inputs")) return inputs;
     std::set<std::string> seen;
     for (size_t i = 0; i < f.find("/inputs")->size(); ++i) {
       std::string ptr = JsonFields::element("/inputs", i);
-      if (!f.object(ptr, {"name", "type", "default", "range", "description"}, {}, "model input"))
+      if (!f.object(ptr, {"name", "type", "default", "range", "description"}, {"feature", "neutral"},
+                    "model input"))
         continue;
       ModelInput in;
       auto name = identifier(f, ptr + "/name", "input name");
       auto type = valueType(f, ptr + "/type", false);
       auto r = range(f, ptr + "/range");
       in.description = f.string(ptr + "/description").value_or("");
+      in.feature = featureRef(f, ptr + "/feature", m);
       // Check the default as far as the other fields allow, so one run shows every error.
       std::optional<std::vector<double>> value;
       if (type) value = readTypedValue(f, ptr + "/default", *type);
       if (value && r) checkInRange(f, ptr + "/default", *value, *r, "the input's range");
+      if (type && f.find(ptr + "/neutral")) {
+        auto neutral = readTypedValue(f, ptr + "/neutral", *type);
+        if (neutral && r) checkInRange(f, ptr + "/neutral", *neutral, *r, "the input's range");
+        if (neutral) in.neutral = *neutral;
+      }
       if (name && !seen.insert(*name).second) {
         f.error("E-DUPLICATE-NAME", f.valueAt(ptr + "/name"), "input '" + *name + "' is listed twice");
         continue;
@@ -553,6 +667,31 @@ const Brick* ShaderLibrary::findBrick(const std::string& id) const {
 
 const ShadingModel* ShaderLibrary::findModel(const std::string& name) const {
   return findBy(models_, name, &ShadingModel::name);
+}
+
+const ModelRole* ShadingModel::findRole(const std::string& role) const {
+  return findBy(roles, role, &ModelRole::role);
+}
+
+const ModelFeature* ShadingModel::findFeature(const std::string& feature) const {
+  return findBy(features, feature, &ModelFeature::name);
+}
+
+std::vector<std::string> ShadingModel::coreRoles() const {
+  std::vector<std::string> out;
+  for (const auto& r : roles)
+    if (r.feature.empty() && r.lights.empty() && r.environments.empty()) out.push_back(r.role);
+  return out;
+}
+
+const std::vector<std::string>& allLightTypes() {
+  static const std::vector<std::string> types{"dir", "point", "spot", "sphere", "tube"};
+  return types;
+}
+
+const std::vector<std::string>& allEnvironmentModes() {
+  static const std::vector<std::string> modes{"none", "sh", "ibl_lut", "ibl_analytic"};
+  return modes;
 }
 
 const Unit* ShaderLibrary::findUnit(const std::string& id) const {

@@ -75,16 +75,51 @@ struct ModelInput {
   std::vector<double> defaultValue;
   Range range;
   std::string description;
+  std::string feature;                // non-empty: exists only when this feature is enabled
+  std::vector<double> neutral;        // value at which the feature changes nothing (or empty)
+};
+
+// One brick call of a skeleton (docs/models.md "Roles"): MB_SLOT_<role>, filled by a brick
+// of `slot`. Conditions say in which permutations the role exists.
+struct ModelRole {
+  std::string role;
+  std::string slot;
+  std::string defaultBrick;               // empty: every material must choose
+  std::string feature;                    // non-empty: only with this feature enabled
+  std::vector<std::string> lights;        // non-empty: only with one of these light types
+  std::vector<std::string> environments;  // non-empty: only in one of these modes
+  std::string description;
+};
+
+// An optional layer of a model: a GLSL fragment the skeleton calls under MB_FEATURE_<NAME>.
+struct ModelFeature {
+  std::string name;
+  std::string description;
+  std::string file;  // GLSL relative to the shaderlib root, or empty
+  std::vector<std::string> requiredUnits;
 };
 
 struct ShadingModel {
   std::string name;
   std::string description;
   std::string skeleton;  // GLSL file relative to the shaderlib root
+  std::vector<std::string> parts;  // more skeleton files, included after it, in order
   std::vector<std::string> requiredUnits;  // units (manifest key "requires")
-  std::vector<std::string> slots;  // slots a material of this model must fill
-  std::vector<ModelInput> inputs;
+  std::vector<std::string> lights;         // light types the skeleton shades
+  std::vector<std::string> environments;   // environment modes it supports
+  std::vector<ModelFeature> features;
+  std::vector<ModelRole> roles;
+  std::vector<ModelInput> inputs;          // core inputs, then feature inputs, as listed
+
+  const ModelRole* findRole(const std::string& role) const;
+  const ModelFeature* findFeature(const std::string& feature) const;
+  // Roles a material always has (no condition): the old "slots" of the model.
+  std::vector<std::string> coreRoles() const;
 };
+
+// Light types and environment modes every model draws from (docs/models.md).
+const std::vector<std::string>& allLightTypes();        // dir, point, spot, sphere, tube
+const std::vector<std::string>& allEnvironmentModes();  // none, sh, ibl_lut, ibl_analytic
 
 class ShaderLibrary {
  public:

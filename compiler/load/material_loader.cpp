@@ -1,6 +1,7 @@
-// Material JSON -> MaterialDesc (format: docs/formats.md, "Material JSON"). The loader checks
-// the material against the library and collects every problem, each at the key or value
-// that causes it, before failing once.
+// Material JSON -> MaterialSource -> resolveMaterial (format: docs/formats.md, "Material JSON").
+// This file checks only what is JSON about a material (keys, JSON types, the shape of values);
+// what the material means is checked by resolveMaterial, shared with the macro form and glTF.
+// Both report into one sink, so every problem of a file comes out at once, in file order.
 #include <algorithm>
 #include <optional>
 #include <tuple>
@@ -8,6 +9,8 @@
 #include "core/json_fields.hpp"
 #include "library/value_json.hpp"
 #include "load/material_desc.hpp"
+#include "load/material_resolve.hpp"
+#include "load/project_files.hpp"
 
 namespace mb {
 
@@ -15,254 +18,209 @@ using nlohmann::json;
 
 namespace {
 
-bool contains(const std::vector<std::string>& v, const std::string& s) {
-  return std::find(v.begin(), v.end(), s) != v.end();
+// A material is at most 4 levels deep. JsonDocument's position scanner recurses once per
+// level, so a hostile file of a million '[' would overflow the stack: refuse deep nesting
+// before parsing.
+constexpr int kMaxJsonDepth = 64;
+
+void checkNestingDepth(const std::string& text, const std::string& file) {
+  int depth = 0;
+  bool inString = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if (inString) {
+      if (c == '\\') ++i;
+      else if (c == '"') inString = false;
+      continue;
+    }
+    if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth)
+        throw DiagnosticError({{Severity::Error, "E-JSON-SYNTAX", locationOfOffset(text, i, file),
+                                "JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
+                                    " levels: a material is at most 4 levels deep"}});
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
 }
 
-class MaterialLoader {
+class JsonMaterialReader {
  public:
-  MaterialLoader(const JsonDocument& doc, const ShaderLibrary& lib, DiagnosticSink& sink)
+  JsonMaterialReader(const JsonDocument& doc, const ShaderLibrary& lib, DiagnosticSink& sink)
       : doc_(doc), lib_(lib), f_(doc, sink) {}
 
-  MaterialDesc run() {
-    desc_.sourceFile = doc_.file();
-    if (!f_.object("", {"name", "model", "bricks"}, {"description", "parameters"}, "material"))
-      return desc_;
-    readName();
-    desc_.description = f_.string("/description").value_or("");
-    const ShadingModel* model = readModel();
-    readBricks(model);
-    readParameters(model);
-    return desc_;
+  MaterialSource run() {
+    src_.file = doc_.file();
+    src_.form = "json";
+    src_.bricksIncomplete = true;
+    if (!f_.object("", {"name", "model", "bricks"},
+                   {"description", "features", "parameters", "surface"}, "material"))
+      return src_;
+    src_.name = name("/name");
+    src_.model = name("/model");
+    src_.description = f_.string("/description").value_or("");
+    readFeatures();
+    readBricks();
+    if (f_.find("/surface")) readSurface();
+    if (f_.isObject("/parameters"))
+      for (const auto& key : keysInFileOrder("/parameters")) readParam(key);
+    return src_;
   }
 
  private:
-  void readName() {
-    auto name = f_.string("/name");
-    if (!name) return;
-    if (!isIdentifier(*name)) {
-      // The name becomes part of GLSL entry points, C++ struct names and file names.
-      f_.error("E-INVALID-NAME", f_.valueAt("/name"),
-               "material name '" + *name + "' must match [A-Za-z_][A-Za-z0-9_]*");
-      return;
-    }
-    desc_.name = *name;
+  SourceName name(const std::string& ptr) {
+    auto s = f_.string(ptr);
+    if (!s) return {};  // absent (reported by object()) or not a string (reported by string())
+    return {*s, f_.valueAt(ptr)};
   }
 
-  const ShadingModel* readModel() {
-    auto name = f_.string("/model");
-    if (!name) return nullptr;
-    const ShadingModel* model = lib_.findModel(*name);
-    if (!model) {
-      std::vector<std::string> known;
-      for (const auto& m : lib_.models()) known.push_back(m.name);
-      f_.error("E-UNKNOWN-MODEL", f_.valueAt("/model"),
-               "unknown shading model '" + *name + "': the library has " + quotedList(known),
-               didYouMean(*name, known));
-      return nullptr;
-    }
-    desc_.model = model->name;
-    return model;
+  // nlohmann iterates object members alphabetically; materials keep the author's order.
+  std::vector<std::string> keysInFileOrder(const std::string& ptr) const {
+    std::vector<std::string> keys;
+    for (const auto& item : f_.find(ptr)->items()) keys.push_back(item.key());
+    auto pos = [&](const std::string& k) {
+      SourceLocation l = f_.keyAt(JsonFields::member(ptr, k));
+      return std::make_pair(l.line, l.column);
+    };
+    std::stable_sort(keys.begin(), keys.end(),
+                     [&](const std::string& a, const std::string& b) { return pos(a) < pos(b); });
+    return keys;
   }
 
-  // --- bricks ---------------------------------------------------------------------------
+  void readFeatures() {
+    if (!f_.isArray("/features")) return;
+    for (size_t i = 0; i < f_.find("/features")->size(); ++i) {
+      SourceName n = name(JsonFields::element("/features", i));
+      if (!n.where.file.empty()) src_.features.push_back(n);
+    }
+  }
 
-  void readBricks(const ShadingModel* model) {
+  void readBricks() {
     if (!f_.isObject("/bricks")) return;
-    // Without a known model, the library's slots are the best check of the keys we have.
-    std::vector<std::string> slots = model ? model->slots : librarySlots();
-    for (const auto& [slot, value] : f_.find("/bricks")->items()) {
-      std::string ptr = JsonFields::member("/bricks", slot);
-      if (!contains(slots, slot)) {
-        reportUnknownSlot(ptr, slot, slots, model);
+    src_.bricksIncomplete = false;
+    src_.bricksWhere = f_.valueAt("/bricks");
+    for (const auto& role : keysInFileOrder("/bricks")) {
+      std::string ptr = JsonFields::member("/bricks", role);
+      SourceName id = name(ptr);
+      if (id.where.file.empty()) {
+        src_.bricksIncomplete = true;  // not a string: reported
         continue;
       }
-      auto id = f_.string(ptr);
-      if (id && checkBrick(ptr, slot, *id)) {
-        desc_.bricks[slot] = *id;
-        desc_.brickLocations[slot] = f_.valueAt(ptr);
+      src_.bricks.push_back({SourceName{role, f_.keyAt(ptr)}, id});
+    }
+  }
+
+  // {"file": "velvet.surface.glsl"} (relative to this file, inside its directory) or
+  // {"glsl": "..."} (its lines are the string's \n-separated lines, the first on the
+  // string's own line).
+  void readSurface() {
+    if (!f_.object("/surface", {}, {"file", "glsl"}, "surface")) return;
+    bool hasFile = f_.find("/surface/file") != nullptr, hasGlsl = f_.find("/surface/glsl") != nullptr;
+    if (hasFile == hasGlsl) {
+      f_.error(hasFile ? "E-CONFLICTING-FIELDS" : "E-MISSING-FIELD", f_.valueAt("/surface"),
+               hasFile ? "surface has both 'file' and 'glsl': give one of them"
+                       : "surface needs 'file' (a GLSL file) or 'glsl' (the code as a string)");
+      return;
+    }
+    if (hasGlsl) {
+      auto glsl = f_.string("/surface/glsl");
+      if (!glsl) return;
+      SourceLocation where = f_.valueAt("/surface/glsl");
+      ++where.column;  // past the opening quote
+      src_.surface = {*glsl, where};
+      return;
+    }
+    auto written = f_.string("/surface/file");
+    if (!written) return;
+    ProjectFiles project(doc_.file());
+    auto path = project.resolve(*written, doc_.file(), f_.valueAt("/surface/file"), f_.sink());
+    if (!path) return;
+    auto text = readTextFile(*path, f_.valueAt("/surface/file"), "GLSL surface file", f_.sink());
+    if (text) src_.surface = {*text, SourceLocation(*path, 1, 1)};
+  }
+
+  // The type the default must have: the model input's (authoritative), else the declared one.
+  std::optional<ValueType> expectedType(const SourceParam& sp) const {
+    if (const ShadingModel* m = lib_.findModel(src_.model.value))
+      for (const auto& in : m->inputs)
+        if (in.name == sp.name) return in.type;
+    if (sp.type && (*sp.type == "float" || *sp.type == "vec2" || *sp.type == "vec3"))
+      return parseValueType(*sp.type);
+    return std::nullopt;
+  }
+
+  // A number or an array of numbers, for a default whose type is unknown.
+  std::optional<std::vector<double>> numbers(const std::string& ptr) {
+    const json* j = f_.find(ptr);
+    if (j->is_number()) return std::vector<double>{j->get<double>()};
+    if (j->is_array() && !j->empty() &&
+        std::all_of(j->begin(), j->end(), [](const json& c) { return c.is_number(); }))
+      return j->get<std::vector<double>>();
+    f_.error("E-PARAM-TYPE", f_.valueAt(ptr),
+             "'" + JsonFields::describe(ptr) + "' must be a number or an array of numbers, found " +
+                 JsonFields::kindOf(*j));
+    return std::nullopt;
+  }
+
+  void readParam(const std::string& key) {
+    std::string ptr = JsonFields::member("/parameters", key);
+    if (!f_.object(ptr, {"type", "default"}, {"range", "constant"}, "parameter '" + clipped(key) + "'"))
+      return;
+    SourceParam sp;
+    sp.name = key;
+    sp.where = f_.keyAt(ptr);
+    sp.incomplete = !f_.find(ptr + "/type") || !f_.find(ptr + "/default");
+    if (f_.find(ptr + "/type")) {
+      auto t = f_.string(ptr + "/type");
+      if (t) sp.type = *t;
+      else sp.incomplete = true;
+      sp.typeWhere = f_.valueAt(ptr + "/type");
+    }
+    if (f_.find(ptr + "/default")) {
+      std::string at = ptr + "/default";
+      auto expected = expectedType(sp);
+      auto value = expected ? readTypedValue(f_, at, *expected) : numbers(at);
+      sp.valueWhere = f_.valueAt(at);
+      if (value) {
+        sp.value = *value;
+        if (f_.find(at)->is_array())
+          for (size_t i = 0; i < value->size(); ++i) sp.componentWhere.push_back(f_.valueAt(JsonFields::element(at, i)));
+      } else {
+        sp.incomplete = true;
       }
     }
-    if (!model) return;
-    for (const auto& slot : model->slots) {
-      if (f_.find("/bricks")->contains(slot)) continue;
-      f_.error("E-MISSING-FIELD", f_.valueAt("/bricks"),
-               "bricks is missing slot '" + slot + "' of model '" + model->name +
-                   "': choose one of " + quotedList(lib_.bricksOfSlot(slot)));
+    if (f_.find(ptr + "/range")) {
+      sp.rangeWhere = f_.valueAt(ptr + "/range");
+      if (auto r = f_.range(ptr + "/range")) sp.range = Range{r->first, r->second};
     }
-  }
-
-  std::vector<std::string> librarySlots() const {
-    std::vector<std::string> names;
-    for (const auto& s : lib_.slots()) names.push_back(s.name);
-    return names;
-  }
-
-  void reportUnknownSlot(const std::string& ptr, const std::string& slot,
-                         const std::vector<std::string>& slots, const ShadingModel* model) {
-    std::string message =
-        model && lib_.findSlot(slot)
-            ? "slot '" + slot + "' is not used by model '" + model->name + "' (its slots are " +
-                  quotedList(slots) + ")"
-            : "unknown slot '" + slot + "': expected one of " + quotedList(slots);
-    f_.error("E-UNKNOWN-SLOT", f_.keyAt(ptr), message, didYouMean(slot, slots));
-  }
-
-  // True if `id` names a brick of `slot`; otherwise reports why not.
-  bool checkBrick(const std::string& ptr, const std::string& slot, const std::string& id) {
-    std::vector<std::string> ofSlot = lib_.bricksOfSlot(slot);
-    const Brick* brick = lib_.findBrick(id);
-    if (!brick) {
-      // Prefer suggestions that fit the slot; fall back to any brick (wrong slot is a
-      // separate, clearer error once the user picks it).
-      std::string suggestion = didYouMean(id, ofSlot);
-      if (suggestion.empty()) suggestion = didYouMean(id, lib_.brickIds());
-      f_.error("E-UNKNOWN-BRICK", f_.valueAt(ptr),
-               "unknown brick '" + id + "' for slot '" + slot + "': expected one of " +
-                   quotedList(ofSlot),
-               suggestion);
-      return false;
+    if (f_.find(ptr + "/constant")) {
+      auto c = f_.boolean(ptr + "/constant");
+      if (c) sp.constant = *c;
+      else sp.incomplete = true;
     }
-    if (brick->slot != slot) {
-      f_.error("E-BRICK-WRONG-SLOT", f_.valueAt(ptr),
-               "brick '" + id + "' fills slot '" + brick->slot + "', expected a '" + slot +
-                   "' brick: one of " + quotedList(ofSlot));
-      return false;
-    }
-    return true;
-  }
-
-  // --- parameters -----------------------------------------------------------------------
-
-  void readParameters(const ShadingModel* model) {
-    if (!model) return;  // input names and types come from the model
-    std::map<std::string, MaterialParam> given;
-    if (f_.find("/parameters") && f_.isObject("/parameters")) {
-      std::vector<std::string> inputNames;
-      for (const auto& in : model->inputs) inputNames.push_back(in.name);
-      for (const auto& [name, value] : f_.find("/parameters")->items()) {
-        std::string ptr = JsonFields::member("/parameters", name);
-        auto input = std::find_if(model->inputs.begin(), model->inputs.end(),
-                                  [&](const ModelInput& in) { return in.name == name; });
-        if (input == model->inputs.end()) {
-          f_.error("E-UNKNOWN-FIELD", f_.keyAt(ptr),
-                   "unknown parameter '" + name + "': model '" + model->name + "' has inputs " +
-                       quotedList(inputNames),
-                   didYouMean(name, inputNames));
-          continue;
-        }
-        if (auto p = readParameter(ptr, *input)) given[name] = *p;
-      }
-    }
-    // One entry per model input, in the model's order, so the emitted struct is stable.
-    for (const auto& in : model->inputs) {
-      auto it = given.find(in.name);
-      desc_.params.push_back(it != given.end() ? it->second : defaultParameter(in));
-    }
-  }
-
-  // Inputs a material does not mention are folded in as constants at the model's default.
-  MaterialParam defaultParameter(const ModelInput& in) const {
-    MaterialParam p;
-    p.name = in.name;
-    p.type = in.type;
-    p.value = in.defaultValue;
-    p.constant = true;
-    p.range = in.range;
-    p.where = f_.valueAt("/model");  // the value comes from the model
-    return p;
-  }
-
-  std::optional<MaterialParam> readParameter(const std::string& ptr, const ModelInput& in) {
-    if (!f_.object(ptr, {"type", "default"}, {"range", "constant"}, "parameter '" + in.name + "'"))
-      return std::nullopt;
-    bool ok = checkDeclaredType(ptr + "/type", in);
-    std::optional<Range> range = readRange(ptr + "/range", in);
-    ok = ok && range.has_value();
-    // The model's type is authoritative for the value's shape, even if "type" was wrong.
-    auto value = readTypedValue(f_, ptr + "/default", in.type);
-    if (value) {
-      // A broken "range" is already reported; the model's range still catches a bad default.
-      bool own = range && f_.find(ptr + "/range");
-      std::string origin = own ? "the parameter's range" : "the range of model input '" + in.name + "'";
-      ok = checkInRange(f_, ptr + "/default", *value, range.value_or(in.range), origin) && ok;
-    }
-    auto constant = f_.boolean(ptr + "/constant");
-    if (f_.find(ptr + "/constant") && !constant) ok = false;
-    if (!ok || !value) return std::nullopt;
-    MaterialParam p;
-    p.name = in.name;
-    p.type = in.type;
-    p.value = *value;
-    p.constant = constant.value_or(false);
-    p.range = *range;
-    p.where = f_.keyAt(ptr);
-    return p;
-  }
-
-  bool checkDeclaredType(const std::string& ptr, const ModelInput& in) {
-    auto declared = f_.string(ptr);
-    if (!declared) return false;
-    const std::vector<std::string> allowed = {"float", "vec2", "vec3"};
-    if (!contains(allowed, *declared)) {
-      f_.error("E-PARAM-TYPE", f_.valueAt(ptr),
-               "unknown parameter type '" + *declared + "': expected one of " + quotedList(allowed),
-               didYouMean(*declared, allowed));
-      return false;
-    }
-    if (*declared != toString(in.type)) {
-      f_.error("E-PARAM-TYPE", f_.valueAt(ptr),
-               "parameter '" + in.name + "' is declared '" + *declared + "' but model input '" +
-                   in.name + "' is a " + toString(in.type));
-      return false;
-    }
-    return true;
-  }
-
-  // The parameter's own range, which must narrow the model's (the model's range is where its
-  // formulas are valid), or the model's range when absent.
-  std::optional<Range> readRange(const std::string& ptr, const ModelInput& in) {
-    if (!f_.find(ptr)) return in.range;
-    auto r = f_.range(ptr);
-    if (!r) return std::nullopt;
-    Range range{r->first, r->second};
-    if (range.lo < in.range.lo || range.hi > in.range.hi) {
-      f_.error("E-PARAM-RANGE", f_.valueAt(ptr),
-               "'" + JsonFields::describe(ptr) + "' " + formatRange(range) +
-                   " must lie inside the range " + formatRange(in.range) + " of model input '" +
-                   in.name + "'");
-      return std::nullopt;
-    }
-    return range;
+    src_.params.push_back(std::move(sp));
   }
 
   const JsonDocument& doc_;
   const ShaderLibrary& lib_;
   JsonFields f_;
-  MaterialDesc desc_;
+  MaterialSource src_;
 };
-
-MaterialDesc loadDocument(const JsonDocument& doc, const ShaderLibrary& lib) {
-  DiagnosticSink sink;
-  MaterialDesc desc = MaterialLoader(doc, lib, sink).run();
-  if (!sink.hasErrors()) return desc;
-  // Report in file order: nlohmann iterates object keys alphabetically, not as written.
-  std::vector<Diagnostic> diags = sink.all();
-  std::stable_sort(diags.begin(), diags.end(), [](const Diagnostic& a, const Diagnostic& b) {
-    return std::tie(a.where.line, a.where.column) < std::tie(b.where.line, b.where.column);
-  });
-  throw DiagnosticError(std::move(diags));
-}
 
 }  // namespace
 
-MaterialDesc loadMaterialJson(const std::string& path, const ShaderLibrary& lib) {
-  return loadDocument(JsonDocument::load(path), lib);
-}
-
 MaterialDesc parseMaterialJson(const std::string& text, const std::string& file,
                                const ShaderLibrary& lib) {
-  return loadDocument(JsonDocument::parse(text, file), lib);
+  checkNestingDepth(text, file);
+  JsonDocument doc = JsonDocument::parse(text, file);
+  DiagnosticSink sink;
+  return finishMaterial(JsonMaterialReader(doc, lib, sink).run(), lib, sink);
+}
+
+MaterialDesc loadMaterialJson(const std::string& path, const ShaderLibrary& lib) {
+  return parseMaterialJson(readMaterialFile(path, "material JSON file"), path, lib);
 }
 
 }  // namespace mb

@@ -1,9 +1,31 @@
 #include "permute/permutation.hpp"
 
+#include <algorithm>
+
 namespace mb {
 
+std::vector<std::string> canonicalLights(std::vector<std::string> lights) {
+  const auto& order = allLightTypes();
+  auto rank = [&](const std::string& t) { return std::find(order.begin(), order.end(), t) - order.begin(); };
+  std::sort(lights.begin(), lights.end(), [&](const std::string& a, const std::string& b) {
+    return rank(a) != rank(b) ? rank(a) < rank(b) : a < b;
+  });
+  lights.erase(std::unique(lights.begin(), lights.end()), lights.end());
+  return lights;
+}
+
+std::string Permutation::lightsKey() const {
+  std::string s;
+  for (const auto& t : lights) s += (s.empty() ? "" : "+") + t;
+  return s.empty() ? "nolights" : s;
+}
+
+bool Permutation::hasLight(const std::string& type) const {
+  return std::find(lights.begin(), lights.end(), type) != lights.end();
+}
+
 std::string Permutation::key() const {
-  return material->name + "." + material->model + "." + lights + "." + environment + "." + precision;
+  return material->name + "." + material->model + "." + lightsKey() + "." + environment + "." + precision;
 }
 
 std::vector<Permutation> permutationsFor(const std::vector<MaterialDesc>& materials) {
@@ -12,6 +34,20 @@ std::vector<Permutation> permutationsFor(const std::vector<MaterialDesc>& materi
   for (const auto& m : materials) {
     Permutation p;
     p.material = &m;
+    out.push_back(p);
+  }
+  return out;
+}
+
+std::vector<Permutation> validationPermutationsFor(const MaterialDesc& material, const ShaderLibrary& lib) {
+  std::vector<Permutation> out;
+  const ShadingModel* model = lib.findModel(material.model);
+  if (!model) return out;
+  for (const auto& env : model->environments) {
+    Permutation p;
+    p.material = &material;
+    p.lights = canonicalLights(model->lights);
+    p.environment = env;
     out.push_back(p);
   }
   return out;

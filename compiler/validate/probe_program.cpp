@@ -8,6 +8,7 @@
 #include "common/model_reference.hpp"
 #include "common/reference.hpp"
 #include "validate/precision_domain.hpp"
+#include "validate/probe_scene_reference.hpp"
 
 namespace mb {
 namespace {
@@ -56,29 +57,34 @@ ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
 }
 
 std::function<void(const double*, double*)> materialReferenceEval(
-    const MaterialDesc& mat, const ProbeLayout& layout, std::map<std::string, std::string> bricks,
-    bool groundTruths) {
+    const Permutation& perm, const ProbeLayout& layout, std::map<std::string, std::string> bricks,
+    bool groundTruths, bool illuminanceInput) {
+  const MaterialDesc& mat = *perm.material;
   ref::ModelReferenceFn model = ref::ModelRegistry::instance().find(mat.model);
   if (!model) missingReference("model '" + mat.model + "'");
-  return [model, layout, &mat, bricks = std::move(bricks), groundTruths](const double* in, double* out) {
+  ProbeScene scene = probeSceneOf(perm, illuminanceInput);
+  return [model, layout, &mat, scene, bricks = std::move(bricks), groundTruths](const double* in, double* out) {
     ref::ModelEvalInput e;
-    auto vec = [&](const std::string& name) {
-      const ProbeInput* pi = layout.find(name);
-      return ref::Vec3{in[pi->offset], in[pi->offset + 1], in[pi->offset + 2]};
-    };
-    e.n = vec("n");
-    e.v = vec("v");
-    e.l = vec("l");
-    if (layout.find("illuminance")) e.illuminance = vec("illuminance");
+    sceneFromRecord(scene, layout, in, e);
     e.bricks = bricks;
     e.groundTruths = groundTruths;
+    e.features.insert(mat.features.begin(), mat.features.end());
     for (const auto& prm : mat.params) {
+      if (prm.user) continue;  // read only by surface code, whose results come fed below
       if (prm.constant) {
         e.inputs[prm.name] = prm.value;
       } else {
         const ProbeInput* pi = layout.find(prm.name);
         e.inputs[prm.name].assign(in + pi->offset, in + pi->offset + componentCount(prm.type));
       }
+    }
+    // With surface code the model inputs are what surface() computed on the GPU; they are
+    // passed through unchanged, so NaN or Inf from user code shows in the comparison.
+    const double* fed = in + layout.inStride;
+    for (const auto& f : layout.fedOutputs) {
+      const double* v = fed + (f.offset - componentCount(layout.output));
+      e.inputs[f.name].assign(v, v + componentCount(f.type));
+      for (int k = 0; k < componentCount(f.type); ++k) out[f.offset + k] = v[k];
     }
     ref::Vec3 r = model(e);
     out[0] = r.x;
@@ -105,8 +111,10 @@ ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& 
     p.tolerance.abs += b->tolerance.abs;
   }
   p.tolerance.reason = "sum of the bound bricks' tolerances plus 1e-5 for the composition";
+  // The result is linear in the lights' illuminance and the environment's radiance, and so is
+  // its absolute error.
+  p.tolerance.abs *= probeSceneRadianceBound(probeSceneOf(perm, false));
   if (illuminanceInput) {
-    // The result is linear in the illuminance, and so is its absolute error.
     p.tolerance.abs *= kIlluminanceRange.hi;
     p.tolerance.reason += "; abs scaled by the largest illuminance";
     // fp16 shading takes pre-exposed light (Filament's pre-exposure), from the smallest
@@ -117,13 +125,15 @@ ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& 
   }
   if (p.precision == ShaderPrecision::Fp16) p.tolerance = fp16Tolerance();
 
+  for (const auto& in : probeSceneInputs(probeSceneOf(perm, illuminanceInput)))
+    if (in.name != "illuminance") p.domain.ranges[in.name] = in.range;
   for (const auto& prm : mat.params)
     if (!prm.constant) p.domain.ranges[prm.name] = prm.range;
   p.domain = domainAtPrecision(p.domain, p.precision);
   std::map<std::string, std::string> bricks;
-  for (const auto& [slot, id] : mat.bricks) bricks[slot] = boundBrick(perm, slot);
+  for (const auto& [role, id] : boundRoles(lib, perm)) bricks[role] = id;
 
-  p.reference = materialReferenceEval(mat, p.shader.layout, bricks);
+  p.reference = materialReferenceEval(perm, p.shader.layout, bricks, false, illuminanceInput);
   return p;
 }
 
@@ -145,9 +155,12 @@ ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std:
   run.conditioning.assign(run.count * layout.outStride, 0.0);
   std::vector<uint32_t> directionColumns =
       conditioning ? directionInputColumns(layout) : std::vector<uint32_t>{};
-  std::vector<double> record(layout.inStride), perturbed(layout.inStride), moved(layout.outStride);
+  // Fed outputs (surface values the GPU computed) follow the inputs in the reference's record.
+  const uint32_t fed = layout.fedCount(), fedFrom = layout.outStride - fed;
+  std::vector<double> record(layout.inStride + fed), perturbed(layout.inStride + fed), moved(layout.outStride);
   for (uint64_t i = 0; i < run.count; ++i) {
     for (uint32_t k = 0; k < layout.inStride; ++k) record[k] = inputs[i * layout.inStride + k];
+    for (uint32_t k = 0; k < fed; ++k) record[layout.inStride + k] = run.gpu[i * layout.outStride + fedFrom + k];
     double* ref = run.reference.data() + i * layout.outStride;
     program.reference(record.data(), ref);
     if (directionColumns.empty()) continue;

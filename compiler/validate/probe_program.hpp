@@ -74,13 +74,14 @@ inline constexpr uint32_t kConditioningPatterns = 8;
 ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program,
                   std::vector<float> inputs, bool conditioning = true);
 ErrorStats compare(const ProbeRun& run, const ProbeProgram& program);
-// The double reference of a material probe: the model's reference composition with the
-// given slot -> brick binding, reading n, v, l, [illuminance,] and the non-constant
-// parameters from a record laid out as `layout`. With `groundTruths`, each bound brick that
-// has a ground truth is evaluated by it (bench's yardstick). `mat` must outlive the result.
+// The double reference of a permutation's probe: the model's reference composition with the
+// given role -> brick binding, reading the scene (frame, lights, environment; see
+// probe_scene_reference.hpp) and the non-constant parameters from a record laid out as
+// `layout`. With `groundTruths`, each bound brick that has a ground truth is evaluated by it
+// (bench's yardstick). The permutation's material must outlive the result.
 std::function<void(const double*, double*)> materialReferenceEval(
-    const MaterialDesc& mat, const ProbeLayout& layout, std::map<std::string, std::string> bricks,
-    bool groundTruths = false);
+    const Permutation& perm, const ProbeLayout& layout, std::map<std::string, std::string> bricks,
+    bool groundTruths = false, bool illuminanceInput = false);
 // Record columns holding the direction vectors n, v, l (empty if the probe has none).
 std::vector<uint32_t> directionInputColumns(const ProbeLayout& layout);
 

@@ -15,7 +15,7 @@ namespace mb::ref::lights {
 // GGX D (Walter et al. 2007, eq. 33) in pbrt-v4's tan^2 form, as a function of n.h.
 inline double ggxD(double NoH, double alpha) {
   double cos2 = NoH * NoH;
-  if (cos2 == 0.0) return 0.0;
+  if (cos2 == 0.0) return alpha * alpha / kPi;  // the limit (cos^2 + sin^2 / alpha^2)^-2 / (pi alpha^2)
   double tan2 = (1.0 - cos2) / cos2;
   double e = 1.0 + tan2 / (alpha * alpha);
   return 1.0 / (kPi * alpha * alpha * cos2 * cos2 * e * e);

@@ -4,6 +4,16 @@
 
 namespace mb::ref {
 
+double probeEnvironmentShape(const Vec3& r, double lod) {
+  // probe_scene.glsl's mb_probe_environment_shape: positive for unit r and lod >= 0, and
+  // varied enough that a wrong reflection vector or mip level shows.
+  return (1.5 + 0.5 * r.x + 0.25 * r.y - 0.125 * r.z) * (1.0 + 0.125 * lod);
+}
+
+Vec3 Environment::prefilteredAt(const Vec3& r, double lod) const {
+  return prefiltered * probeEnvironmentShape(r, lod);
+}
+
 double ModelEvalInput::floatInput(const std::string& name) const {
   auto it = inputs.find(name);
   if (it == inputs.end() || it->second.size() != 1)
@@ -18,9 +28,9 @@ Vec3 ModelEvalInput::vec3Input(const std::string& name) const {
   return {it->second[0], it->second[1], it->second[2]};
 }
 
-static const Reference& boundReference(const ModelEvalInput& in, const std::string& slot) {
-  auto b = in.bricks.find(slot);
-  if (b == in.bricks.end()) throw std::logic_error("no brick bound to slot '" + slot + "'");
+static const Reference& boundReference(const ModelEvalInput& in, const std::string& role) {
+  auto b = in.bricks.find(role);
+  if (b == in.bricks.end()) throw std::logic_error("no brick bound to role '" + role + "'");
   if (in.groundTruths)
     if (const Reference* truth = Registry::groundTruths().find(b->second)) return *truth;
   const Reference* r = Registry::references().find(b->second);
@@ -28,29 +38,15 @@ static const Reference& boundReference(const ModelEvalInput& in, const std::stri
   return *r;
 }
 
-static std::vector<double> pack(const ModelEvalInput& in, std::initializer_list<double> args,
-                                bool withGeometry, std::initializer_list<double> tail) {
-  std::vector<double> p(args);
-  if (withGeometry) {
-    for (const Vec3& v : {in.n, in.v, in.l}) p.insert(p.end(), {v.x, v.y, v.z});
-  }
-  p.insert(p.end(), tail);
-  return p;
-}
-
-double ModelEvalInput::callScalar(const std::string& slot, std::initializer_list<double> args,
-                                  bool withGeometry, std::initializer_list<double> tail) const {
-  auto p = pack(*this, args, withGeometry, tail);
+double ModelEvalInput::scalar(const std::string& role, const Args& args) const {
   double out = 0;
-  boundReference(*this, slot).eval(p.data(), &out);
+  boundReference(*this, role).eval(args.values.data(), &out);
   return out;
 }
 
-Vec3 ModelEvalInput::callVec3(const std::string& slot, std::initializer_list<double> args,
-                              bool withGeometry, std::initializer_list<double> tail) const {
-  auto p = pack(*this, args, withGeometry, tail);
+Vec3 ModelEvalInput::vec3(const std::string& role, const Args& args) const {
   double out[3] = {0, 0, 0};
-  boundReference(*this, slot).eval(p.data(), out);
+  boundReference(*this, role).eval(args.values.data(), out);
   return {out[0], out[1], out[2]};
 }
 

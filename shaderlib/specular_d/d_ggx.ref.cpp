@@ -7,7 +7,9 @@ namespace mb::ref {
 
 static double dGgx(const Geometry& g, double alpha) {
   double cos2 = g.NoH * g.NoH;
-  if (cos2 == 0.0) return 0.0;  // h in the tangent plane: tan^2 is infinite, D -> 0
+  // h in the tangent plane: tan^2 is infinite, but cos^4 (1 + tan^2 / alpha^2)^2 =
+  // (cos^2 + sin^2 / alpha^2)^2 -> 1 / alpha^4, so D -> alpha^2 / pi (not 0).
+  if (cos2 == 0.0) return alpha * alpha / kPi;
   double tan2 = (1.0 - cos2) / cos2;
   double e = 1.0 + tan2 / (alpha * alpha);
   return 1.0 / (kPi * alpha * alpha * cos2 * cos2 * e * e);

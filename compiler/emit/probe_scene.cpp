@@ -1,0 +1,170 @@
+#include "emit/probe_scene.hpp"
+
+#include <algorithm>
+#include <numbers>
+
+namespace mb {
+namespace {
+
+// Distances keep 1/d^2 <= 16; intensities up to 4 (pre-exposed units): the scene stays in the
+// range where a composition's absolute error is meaningful, while the falloff radius range
+// straddles the distance range, so windowing reaches zero for some samples.
+constexpr Range kIntensity{0.0, 4.0};
+constexpr Range kDistance{0.25, 20.0};
+constexpr Range kFalloffRadius{0.5, 40.0};
+constexpr Range kPrefiltered{0.0, 4.0};
+
+void lightInputs(const std::string& type, std::vector<ProbeSceneInput>& out) {
+  auto add = [&](const std::string& name, ValueType t, Range r) { out.push_back({type + name, t, r}); };
+  if (type == "dir") return;  // l and the optional illuminance
+  add("Intensity", ValueType::Vec3, kIntensity);
+  add("Distance", ValueType::Float, kDistance);
+  add("FalloffRadius", ValueType::Float, kFalloffRadius);
+  if (type == "spot") {
+    add("AxisAngle", ValueType::Float, {0.0, 1.5});  // between the axis and -l, radians
+    add("CosOuter", ValueType::Float, {0.2, 0.98});
+    add("InnerFraction", ValueType::Float, {0.0, 1.0});  // cosInner = cosOuter + f (1 - cosOuter)
+  } else if (type == "sphere") {
+    add("RadiusFraction", ValueType::Float, {0.0, 0.9});  // radius / distance = sin(alpha)
+  } else if (type == "tube") {
+    add("AxisAngle", ValueType::Float, {0.0, std::numbers::pi});  // around l
+    add("AxisTilt", ValueType::Float, {-1.0, 1.0});               // towards l
+    add("HalfLengthFraction", ValueType::Float, {0.0, 2.0});      // of the distance
+    add("RadiusFraction", ValueType::Float, {0.0, 0.3});
+  }
+}
+
+}  // namespace
+
+bool ProbeScene::has(const std::string& light) const {
+  return std::find(lights.begin(), lights.end(), light) != lights.end();
+}
+
+std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene) {
+  std::vector<ProbeSceneInput> out;
+  if (scene.has("dir") && scene.illuminanceInput) out.push_back({"illuminance", ValueType::Vec3, {0.0, 1.0}});
+  if (scene.fullFrame) {
+    out.push_back({"ngTilt", ValueType::Float, {0.0, 0.5}});
+    out.push_back({"tangentAngle", ValueType::Float, {0.0, std::numbers::pi}});
+  }
+  for (const auto& type : scene.lights) lightInputs(type, out);
+  if (scene.environment != "none") {
+    // Radiance SH of a plausible environment: a positive mean and weaker higher bands.
+    out.push_back({"sh0", ValueType::Vec3, {0.0, 2.0}});
+    for (int i = 1; i < 9; ++i) out.push_back({"sh" + std::to_string(i), ValueType::Vec3, {-0.5, 0.5}});
+    out.push_back({"ao", ValueType::Float, {0.0, 1.0}});
+  }
+  if (scene.environment == "ibl_lut" || scene.environment == "ibl_analytic")
+    out.push_back({"prefiltered", ValueType::Vec3, kPrefiltered});
+  if (scene.environment == "ibl_lut") {
+    // DFG LUT texels: Int Gv Fc <= Int Gv <= 1 in Filament's LUT.
+    out.push_back({"dfgX", ValueType::Float, {0.0, 0.45}});
+    out.push_back({"dfgY", ValueType::Float, {0.45, 1.0}});
+    out.push_back({"dfgZ", ValueType::Float, {0.0, 1.0}});
+  }
+  return out;
+}
+
+double probeSceneRadianceBound(const ProbeScene& scene) {
+  double bound = 0;
+  for (const auto& type : scene.lights)
+    bound += type == "dir" ? 1.0 : kIntensity.hi / (kDistance.lo * kDistance.lo);
+  if (scene.environment != "none") {
+    // |E(n)| <= pi (|L00| + 2/3 sum |L1m| + 1/4 sum |L2m|) * sqrt(4 pi)-ish; 4 pi covers it.
+    bound += 4.0 * std::numbers::pi * (2.0 + 8 * 0.5);
+    // The probe's environment shape is at most (1.5 + 0.875)(1 + kProbeMaxMip / 8).
+    bound += kPrefiltered.hi * 2.375 * (1.0 + 0.125 * kProbeMaxMip);
+  }
+  return std::max(bound, 1.0);
+}
+
+std::vector<std::string> probeSceneGlobals(const ProbeScene& scene) {
+  std::vector<std::string> g;
+  if (scene.environment == "none") return g;
+  g.push_back("// The probe's environment fetches: record values shaped by a smooth known function of");
+  g.push_back("// the lookup direction and level (mirrored by ref::probeEnvironmentShape).");
+  g.push_back("vec3 mbProbePrefiltered;");
+  g.push_back("vec3 mbProbeDfg;");
+  g.push_back("float mb_probe_environment_shape(vec3 r, float lod) {");
+  g.push_back("    return (1.5 + 0.5 * r.x + 0.25 * r.y - 0.125 * r.z) * (1.0 + 0.125 * lod);");
+  g.push_back("}");
+  g.push_back("vec3 mb_fetch_prefiltered(vec3 r, float lod) {");
+  g.push_back("    return mbProbePrefiltered * mb_probe_environment_shape(r, lod);");
+  g.push_back("}");
+  g.push_back("vec3 mb_fetch_dfg(float NoV, float perceptualRoughness) {");
+  g.push_back("    return mbProbeDfg;");
+  g.push_back("}");
+  return g;
+}
+
+std::vector<std::string> probeSceneFrame(const ProbeScene& scene) {
+  std::vector<std::string> s;
+  s.push_back("ShadingFrame f;");
+  s.push_back("f.n = normalize(p_n);");
+  s.push_back("f.v = normalize(p_v);");
+  s.push_back("vec3 mbT0, mbB0;");
+  s.push_back("mb_orthonormal_basis(f.n, mbT0, mbB0);");
+  if (scene.fullFrame) {
+    s.push_back("f.ng = normalize(f.n + p_ngTilt * mbB0);");
+    s.push_back("f.t = cos(p_tangentAngle) * mbT0 + sin(p_tangentAngle) * mbB0;");
+  } else {
+    s.push_back("f.ng = f.n;");
+    s.push_back("f.t = mbT0;");
+  }
+  if (scene.environment != "none") {
+    // Before preparePixel: an IBL mode fetches the DFG texel while preparing the pixel.
+    bool ibl = scene.environment == "ibl_lut" || scene.environment == "ibl_analytic";
+    s.push_back(std::string("mbProbePrefiltered = ") + (ibl ? "p_prefiltered" : "vec3(0.0)") + ";");
+    s.push_back(std::string("mbProbeDfg = ") +
+                (scene.environment == "ibl_lut" ? "vec3(p_dfgX, p_dfgY, p_dfgZ)" : "vec3(0.0, 1.0, 0.0)") + ";");
+  }
+  return s;
+}
+
+std::vector<std::string> probeSceneShading(const ProbeScene& scene) {
+  std::vector<std::string> s;
+  s.push_back("vec3 lu = normalize(p_l);");
+  s.push_back("vec3 lt, lb;");
+  s.push_back("mb_orthonormal_basis(lu, lt, lb);");
+  for (const auto& type : scene.lights) {
+    if (type == "dir") {
+      s.push_back(std::string("r += shadeDirectionalLight(px, f, DirectionalLight(lu, ") +
+                  (scene.illuminanceInput ? "p_illuminance" : "vec3(1.0)") + "));");
+    } else if (type == "point") {
+      s.push_back("r += shadePointLight(px, f, PointLight(lu * p_pointDistance, p_pointIntensity, "
+                  "p_pointFalloffRadius));");
+    } else if (type == "spot") {
+      s.push_back("{");
+      s.push_back("    vec3 axis = -cos(p_spotAxisAngle) * lu + sin(p_spotAxisAngle) * lt;");
+      s.push_back("    float cosInner = p_spotCosOuter + p_spotInnerFraction * (1.0 - p_spotCosOuter);");
+      s.push_back("    r += shadeSpotLight(px, f, SpotLight(lu * p_spotDistance, axis, p_spotIntensity, "
+                  "p_spotFalloffRadius, p_spotCosOuter, cosInner));");
+      s.push_back("}");
+    } else if (type == "sphere") {
+      s.push_back("r += shadeSphereLight(px, f, SphereLight(lu * p_sphereDistance, p_sphereRadiusFraction * "
+                  "p_sphereDistance, p_sphereIntensity, p_sphereFalloffRadius));");
+    } else if (type == "tube") {
+      s.push_back("{");
+      s.push_back("    vec3 axis = normalize(cos(p_tubeAxisAngle) * lt + sin(p_tubeAxisAngle) * lb + "
+                  "p_tubeAxisTilt * lu);");
+      s.push_back("    vec3 center = lu * p_tubeDistance;");
+      s.push_back("    vec3 halfSegment = axis * (p_tubeHalfLengthFraction * p_tubeDistance);");
+      s.push_back("    r += shadeTubeLight(px, f, TubeLight(center - halfSegment, center + halfSegment, "
+                  "p_tubeRadiusFraction * p_tubeDistance, p_tubeIntensity, p_tubeFalloffRadius));");
+      s.push_back("}");
+    }
+  }
+  if (scene.environment != "none") {
+    s.push_back("{");
+    s.push_back("    Environment env;");
+    for (int i = 0; i < 9; ++i)
+      s.push_back("    env.sh[" + std::to_string(i) + "] = p_sh" + std::to_string(i) + ";");
+    s.push_back("    env.ao = p_ao;");
+    s.push_back("    env.maxMip = " + std::to_string(static_cast<int>(kProbeMaxMip)) + ".0;");
+    s.push_back("    r += shadeEnvironment(px, f, env);");
+    s.push_back("}");
+  }
+  return s;
+}
+
+}  // namespace mb

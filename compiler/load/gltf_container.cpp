@@ -1,0 +1,190 @@
+// .gltf / .glb reading (glTF 2.0 spec, "GLB File Format Specification"): little-endian
+// uint32 header {magic "glTF", version 2, total length}, then chunks {length, type, data},
+// each 4-byte aligned; the first chunk is JSON (0x4E4F534A), an optional second is BIN
+// (0x004E4942), and chunks of other types are ignored. Nothing here trusts a length field
+// before checking it against the bytes actually present.
+#include "load/gltf_container.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <filesystem>
+#include <fstream>
+
+namespace mb {
+
+namespace {
+
+constexpr uint32_t kGlbMagic = 0x46546C67;  // "glTF"
+constexpr uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
+constexpr uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
+constexpr size_t kHeaderSize = 12;
+constexpr size_t kChunkHeaderSize = 8;
+// JSON text is held in memory with a position per value; a .gltf with buffers embedded as
+// data URIs is large but not this large.
+constexpr uint64_t kMaxGltfJsonBytes = 1ull << 30;
+
+// The bytes of a .glb, in memory or read on demand from the file: the BIN chunk can be
+// hundreds of megabytes of images that material import never needs.
+class ByteSource {
+ public:
+  virtual ~ByteSource() = default;
+  virtual uint64_t size() const = 0;
+  virtual std::string read(uint64_t offset, uint64_t count) = 0;  // within [0, size())
+
+  uint32_t u32(uint64_t offset) {
+    std::string b = read(offset, 4);
+    uint32_t v = 0;
+    for (int i = 3; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(b[static_cast<size_t>(i)]);
+    return v;
+  }
+};
+
+class MemorySource : public ByteSource {
+ public:
+  explicit MemorySource(const std::string& bytes) : bytes_(bytes) {}
+  uint64_t size() const override { return bytes_.size(); }
+  std::string read(uint64_t offset, uint64_t count) override {
+    return bytes_.substr(static_cast<size_t>(offset), static_cast<size_t>(count));
+  }
+
+ private:
+  const std::string& bytes_;
+};
+
+class FileSource : public ByteSource {
+ public:
+  FileSource(std::ifstream& in, uint64_t size) : in_(in), size_(size) {}
+  uint64_t size() const override { return size_; }
+  std::string read(uint64_t offset, uint64_t count) override {
+    std::string out(static_cast<size_t>(count), '\0');
+    in_.clear();
+    in_.seekg(static_cast<std::streamoff>(offset));
+    in_.read(out.data(), static_cast<std::streamsize>(count));
+    out.resize(static_cast<size_t>(in_.gcount()));  // a file that shrank underneath us
+    out.resize(static_cast<size_t>(count), '\0');
+    return out;
+  }
+
+ private:
+  std::ifstream& in_;
+  uint64_t size_;
+};
+
+void appendU32(std::string& out, uint32_t v) {
+  for (int i = 0; i < 4; ++i) out += static_cast<char>((v >> (8 * i)) & 0xFF);
+}
+
+// A binary file has no lines: the position is line 1, column = byte offset + 1, and the
+// message repeats the offset, which is what a hex dump shows (docs/gltf.md).
+[[noreturn]] void glbError(const std::string& code, const std::string& file, uint64_t offset,
+                           const std::string& message) {
+  throw DiagnosticError({{Severity::Error, code, {file, 1, static_cast<int>(std::min<uint64_t>(offset + 1, INT32_MAX))},
+                          "invalid .glb at byte " + std::to_string(offset) + ": " + message}});
+}
+
+bool isGlb(ByteSource& bytes) { return bytes.size() >= 4 && bytes.u32(0) == kGlbMagic; }
+
+std::string jsonChunkOf(ByteSource& bytes, const std::string& file) {
+  const uint64_t size = bytes.size();
+  if (size < kHeaderSize)
+    glbError("E-GLB-TRUNCATED", file, size,
+             "the header needs 12 bytes, the file has " + std::to_string(size));
+  uint32_t version = bytes.u32(4);
+  if (version != 2)
+    glbError("E-GLB-HEADER", file, 4,
+             "container version " + std::to_string(version) + ", expected 2 (glTF 2.0)");
+  uint64_t length = bytes.u32(8);
+  if (length > size)
+    glbError("E-GLB-TRUNCATED", file, size,
+             "the header says " + std::to_string(length) + " bytes, the file has " +
+                 std::to_string(size) + " (truncated)");
+  if (length < size)
+    glbError("E-GLB-HEADER", file, 8,
+             "the header says " + std::to_string(length) + " bytes, the file has " + std::to_string(size));
+
+  std::string json;
+  size_t chunkIndex = 0;
+  for (uint64_t at = kHeaderSize; at < length; ++chunkIndex) {
+    if (length - at < kChunkHeaderSize)
+      glbError("E-GLB-TRUNCATED", file, at, "chunk header needs 8 bytes, " +
+                                                std::to_string(length - at) + " remain");
+    uint64_t chunkLength = bytes.u32(at);
+    uint32_t type = bytes.u32(at + 4);
+    uint64_t data = at + kChunkHeaderSize;
+    if (chunkLength > length - data)
+      glbError("E-GLB-CHUNK", file, at,
+               "chunk " + std::to_string(chunkIndex) + " says " + std::to_string(chunkLength) +
+                   " bytes, only " + std::to_string(length - data) + " remain");
+    if (chunkLength % 4 != 0)
+      glbError("E-GLB-CHUNK", file, at,
+               "chunk " + std::to_string(chunkIndex) + " length " + std::to_string(chunkLength) +
+                   " is not a multiple of 4 (chunks are 4-byte aligned)");
+    if (chunkIndex == 0) {
+      if (type != kChunkJson)
+        glbError("E-GLB-CHUNK", file, at + 4, "the first chunk must be of type JSON");
+      if (chunkLength > kMaxGltfJsonBytes)
+        glbError("E-FILE-TOO-LARGE", file, at, "a JSON chunk of " + std::to_string(chunkLength) +
+                                                   " bytes is over the limit of " + std::to_string(kMaxGltfJsonBytes));
+      json = bytes.read(data, chunkLength);
+    } else if (type == kChunkJson) {
+      glbError("E-GLB-CHUNK", file, at + 4, "a second JSON chunk (only the first may be JSON)");
+    } else if (type == kChunkBin && chunkIndex != 1) {
+      glbError("E-GLB-CHUNK", file, at + 4, "a BIN chunk must directly follow the JSON chunk");
+    }
+    at = data + chunkLength;
+  }
+  if (chunkIndex == 0) glbError("E-GLB-TRUNCATED", file, kHeaderSize, "no JSON chunk");
+  return json;
+}
+
+}  // namespace
+
+JsonDocument parseGltfJson(const std::string& bytes, const std::string& file) {
+  MemorySource source(bytes);
+  // Positions of a .glb's JSON errors are line:column in the JSON chunk's text.
+  return JsonDocument::parse(isGlb(source) ? jsonChunkOf(source, file) : bytes, file);
+}
+
+JsonDocument loadGltfJson(const std::string& path) {
+  std::error_code ec;
+  // Not a regular file (a directory, /dev/zero) must not hang or crash the import.
+  bool regular = std::filesystem::is_regular_file(path, ec);
+  uint64_t size = regular ? std::filesystem::file_size(path, ec) : 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!regular || ec || !in) {
+    throw DiagnosticError({{Severity::Error, "E-FILE-NOT-FOUND", {path, 0, 0},
+                            "cannot open file: expected a readable .gltf or .glb file", ""}});
+  }
+  FileSource source(in, size);
+  if (isGlb(source)) return JsonDocument::parse(jsonChunkOf(source, path), path);
+  if (size > kMaxGltfJsonBytes) {
+    throw DiagnosticError({{Severity::Error, "E-FILE-TOO-LARGE", {path, 0, 0},
+                            "a .gltf of " + std::to_string(size) + " bytes is over the limit of " +
+                                std::to_string(kMaxGltfJsonBytes) + " bytes of JSON", ""}});
+  }
+  return JsonDocument::parse(source.read(0, size), path);
+}
+
+std::string packGlb(const std::string& json, const std::string& bin) {
+  std::string jsonChunk = json;
+  while (jsonChunk.size() % 4 != 0) jsonChunk += ' ';
+  std::string binChunk = bin;
+  while (binChunk.size() % 4 != 0) binChunk += '\0';
+  size_t total = kHeaderSize + kChunkHeaderSize + jsonChunk.size() +
+                 (bin.empty() ? 0 : kChunkHeaderSize + binChunk.size());
+  std::string out;
+  appendU32(out, kGlbMagic);
+  appendU32(out, 2);
+  appendU32(out, static_cast<uint32_t>(total));
+  appendU32(out, static_cast<uint32_t>(jsonChunk.size()));
+  appendU32(out, kChunkJson);
+  out += jsonChunk;
+  if (!bin.empty()) {
+    appendU32(out, static_cast<uint32_t>(binChunk.size()));
+    appendU32(out, kChunkBin);
+    out += binChunk;
+  }
+  return out;
+}
+
+}  // namespace mb

@@ -1,0 +1,52 @@
+// glTF 2.0 material import (docs/gltf.md): every material of a .gltf or .glb becomes a
+// MaterialSource of the `standard` model, with features clearcoat / anisotropy / sheen from
+// KHR_materials_clearcoat / _anisotropy / _sheen. Factors become constants; each texture
+// becomes a parameter input that carries the sampled texel (the engine samples, the shader
+// combines), with generated surface code doing the glTF combination. Only the JSON is read:
+// buffers, images and meshes are the engine's.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "load/material_desc.hpp"
+
+namespace mb {
+
+// Where an engine gets the value of one texture parameter input.
+struct GltfTextureInput {
+  std::string param;    // the user parameter, e.g. "baseColorTexture" (empty: no parameter,
+                        // the engine applies it to the shading frame: normalTexture)
+  std::string channels; // what the parameter holds: "rgb", "r", "g" or "a" of the texel
+  bool srgb = false;    // the image is sRGB-encoded: sample it through an sRGB view
+  int texture = -1;     // index into glTF `textures`
+  int image = -1;       // its `source` image (-1: none, e.g. given by a texture extension)
+  std::string uri;      // the image's uri, or "bufferView N" for an embedded image
+  int texCoord = 0;     // which TEXCOORD_n set
+  bool transform = false;  // KHR_texture_transform present: the engine applies it to the UVs
+  double scale = 1.0;   // normalTexture scale / occlusionTexture strength, else 1
+};
+
+struct GltfMaterial {
+  MaterialSource source;
+  int index = 0;                        // position in glTF `materials`
+  std::string gltfName;                 // as written (may be empty)
+  std::vector<GltfTextureInput> textures;
+};
+
+// Reads a .gltf / .glb (the container is detected by content) and maps every material.
+// Throws DiagnosticError (file:line:column; docs/gltf.md) for malformed files and for
+// extensions in extensionsRequired that are not supported. Warnings (unsupported extension
+// used, alpha not shaded, ...) go into each MaterialSource::warnings; warnings about the file
+// as a whole go to the first material.
+std::vector<GltfMaterial> readGltf(const std::string& path);
+std::vector<GltfMaterial> parseGltf(const std::string& bytes, const std::string& file);
+
+// readGltf without the texture records.
+std::vector<MaterialSource> readGltfMaterials(const std::string& path);
+
+// Reads and resolves every material against the library; collects the diagnostics of all
+// materials before throwing once. A file without materials is an error (E-GLTF-NO-MATERIALS):
+// there is nothing to compile.
+std::vector<MaterialDesc> importGltfMaterials(const std::string& path, const ShaderLibrary& lib);
+
+}  // namespace mb

@@ -1,0 +1,98 @@
+#include "load/project_files.hpp"
+
+#include <fstream>
+#include <sstream>
+
+namespace mb {
+
+namespace fs = std::filesystem;
+
+std::optional<std::string> readTextFile(const std::string& path, const SourceLocation& at,
+                                        const std::string& what, DiagnosticSink& sink) {
+  std::error_code ec;
+  auto status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) {
+    sink.error("E-FILE-NOT-FOUND", at, "cannot open file '" + path + "': expected a readable " + what);
+    return std::nullopt;
+  }
+  if (!fs::is_regular_file(status)) {
+    sink.error("E-FILE-NOT-FOUND", at, "'" + path + "' is not a regular file: expected a readable " + what);
+    return std::nullopt;
+  }
+  auto size = fs::file_size(path, ec);
+  if (!ec && size > kMaxMaterialFileBytes) {
+    sink.error("E-FILE-TOO-LARGE", at,
+               "'" + path + "' has " + std::to_string(size) + " bytes: a " + what + " is at most " +
+                   std::to_string(kMaxMaterialFileBytes) + " bytes");
+    return std::nullopt;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    sink.error("E-FILE-NOT-FOUND", at, "cannot open file '" + path + "': expected a readable " + what);
+    return std::nullopt;
+  }
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string readMaterialFile(const std::string& path, const std::string& what) {
+  DiagnosticSink sink;
+  auto text = readTextFile(path, SourceLocation(path, 0, 0), what, sink);
+  sink.throwIfErrors();
+  return *text;
+}
+
+namespace {
+
+fs::path absoluteNormal(const fs::path& p) {
+  std::error_code ec;
+  fs::path a = fs::absolute(p, ec);
+  return (ec ? p : a).lexically_normal();
+}
+
+// True when `p` (absolute, normalized) lies in `dir` (absolute, normalized).
+bool inside(const fs::path& p, const fs::path& dir) {
+  fs::path rel = p.lexically_relative(dir);
+  return !rel.empty() && *rel.begin() != "..";
+}
+
+}  // namespace
+
+ProjectFiles::ProjectFiles(const std::string& topFile)
+    : dir_(absoluteNormal(fs::path(topFile)).parent_path()) {}
+
+std::optional<std::string> ProjectFiles::resolve(const std::string& written, const std::string& fromFile,
+                                                 const SourceLocation& at, DiagnosticSink& sink) const {
+  fs::path w(written);
+  if (written.empty()) {
+    sink.error("E-PATH-ESCAPE", at, "empty path: expected a file relative to the including file");
+    return std::nullopt;
+  }
+  if (w.is_absolute() || w.has_root_name() || w.has_root_directory()) {
+    sink.error("E-PATH-ESCAPE", at,
+               "absolute path '" + written + "': expected a path relative to the including file, inside the "
+               "project directory '" + dir_.string() + "'");
+    return std::nullopt;
+  }
+  fs::path shown = (fs::path(fromFile).parent_path() / w).lexically_normal();
+  fs::path full = absoluteNormal(shown);
+  bool ok = inside(full, dir_);
+  // A symbolic link inside the project may still point out of it.
+  std::error_code ec;
+  if (ok && fs::exists(full, ec)) {
+    fs::path real = fs::weakly_canonical(full, ec);
+    fs::path realDir = fs::weakly_canonical(dir_, ec);
+    if (!ec) ok = inside(real, realDir);
+  }
+  if (!ok) {
+    sink.error("E-PATH-ESCAPE", at,
+               "'" + written + "' leaves the project directory '" + dir_.string() +
+                   "': includes and surface files must lie in the directory of the top-level material "
+                   "file or below it");
+    return std::nullopt;
+  }
+  return shown.string();
+}
+
+}  // namespace mb

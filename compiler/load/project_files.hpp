@@ -1,0 +1,42 @@
+// Files a material description reads besides itself (macro-form #include, a JSON surface
+// `file`), and the rule that keeps them inside the project: the directory that holds the
+// top-level material file (docs/macro-form.md "Includes and the project directory").
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "core/diagnostics.hpp"
+
+namespace mb {
+
+// Reads a whole text file. Reports E-FILE-NOT-FOUND (missing, unreadable, or not a regular
+// file: a directory or /dev/zero must not hang the loader) or E-FILE-TOO-LARGE at `at`.
+std::optional<std::string> readTextFile(const std::string& path, const SourceLocation& at,
+                                        const std::string& what, DiagnosticSink& sink);
+
+// A top-level description file's text; throws DiagnosticError when readTextFile reports.
+std::string readMaterialFile(const std::string& path, const std::string& what);
+
+class ProjectFiles {
+ public:
+  // `topFile`: the material file named on the command line; its directory is the project.
+  explicit ProjectFiles(const std::string& topFile);
+
+  // The path of `written` (as written in `fromFile`, relative to fromFile's directory), for
+  // reading and for diagnostics. An absolute path, or one that leaves the project directory
+  // (by `..` or through a symbolic link), is E-PATH-ESCAPE at `at`.
+  std::optional<std::string> resolve(const std::string& written, const std::string& fromFile,
+                                     const SourceLocation& at, DiagnosticSink& sink) const;
+
+  const std::filesystem::path& directory() const { return dir_; }
+
+ private:
+  std::filesystem::path dir_;  // absolute, normalized
+};
+
+// Largest description or surface file read (bigger is certainly not a material).
+constexpr std::uintmax_t kMaxMaterialFileBytes = 16u << 20;
+
+}  // namespace mb

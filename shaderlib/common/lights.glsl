@@ -1,0 +1,76 @@
+// What an engine passes to a permutation: the shading frame, one struct per light type and
+// the environment (docs/models.md). Positions are relative to the shading point
+// (toLight = lightPosition - worldPosition); intensities are luminous intensities (colour
+// times candela) and become illuminance through the bound light_falloff brick.
+
+struct ShadingFrame {
+    vec3 n;   // shading normal (after normal mapping), unit
+    vec3 v;   // towards the viewer, unit
+    vec3 ng;  // geometric normal: clear coat, horizon specular occlusion
+    vec3 t;   // tangent: anisotropy (orthonormalized against n by the bricks)
+};
+
+struct DirectionalLight {
+    vec3 l;            // unit, towards the light
+    vec3 illuminance;  // at the surface, facing the light
+};
+
+struct PointLight {
+    vec3 toLight;
+    vec3 intensity;
+    float falloffRadius;  // influence radius (windowed falloff)
+};
+
+struct SpotLight {
+    vec3 toLight;
+    vec3 axis;       // unit, the direction the spot shines in
+    vec3 intensity;
+    float falloffRadius;
+    float cosOuter;  // cosine of the outer half-angle (zero light outside)
+    float cosInner;  // cosine of the inner half-angle (full light inside)
+};
+
+struct SphereLight {
+    vec3 toCenter;
+    float radius;
+    vec3 intensity;
+    float falloffRadius;
+};
+
+struct TubeLight {
+    vec3 toStart;  // the capsule's segment, from the shading point
+    vec3 toEnd;
+    float radius;
+    vec3 intensity;
+    float falloffRadius;
+};
+
+struct Environment {
+    vec3 sh[9];    // radiance SH coefficients L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22
+    float ao;      // ambient occlusion in [0, 1]
+    float maxMip;  // mip level of the roughest prefiltered level
+};
+
+// Texture fetches are hooks that the includer defines (the engine, or the validation probe),
+// so that validation can feed their values per sample.
+vec3 mb_fetch_prefiltered(vec3 r, float lod);
+vec3 mb_fetch_dfg(float NoV, float perceptualRoughness);
+
+// Filament's smooth spot cone: saturate(cos * scale + offset), squared.
+float mb_spot_attenuation(vec3 l, vec3 axis, float cosOuter, float cosInner) {
+    float scale = 1.0 / max(cosInner - cosOuter, 1e-4);
+    float offset = -cosOuter * scale;
+    float a = clamp(dot(-l, axis) * scale + offset, 0.0, 1.0);
+    return a * a;
+}
+
+// Orthonormal t, b around a unit n, continuous except across n.z = 0's sign flip (Duff et al.
+// 2017, "Building an Orthonormal Basis, Revisited", JCGT 6(1)): a tangent for callers that
+// have none, and the validation probe's frame construction.
+void mb_orthonormal_basis(vec3 n, out vec3 t, out vec3 b) {
+    float s = n.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (s + n.z);
+    float c = n.x * n.y * a;
+    t = vec3(1.0 + s * n.x * n.x * a, s * c, -s * n.x);
+    b = vec3(c, s + n.y * n.y * a, -n.y);
+}

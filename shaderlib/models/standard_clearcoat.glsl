@@ -1,0 +1,71 @@
+// Standard model, clear coat feature (seed 000 "More PBR / Clear Coating Material", after
+// Filament "Physically Based Rendering in Filament" sec. 4.9): a colourless dielectric layer
+// (IOR 1.5, F0 = 0.04) over the base, shaded about the geometric normal f.ng (seed 000: the
+// coat ignores the normal map), with its own roughness through the `roughness` role.
+// Included before the skeleton; the skeleton calls these hooks under MB_FEATURE_CLEARCOAT,
+// standard_environment.glsl calls mb_clearcoat_environment under MB_ENV_IBL.
+
+struct ClearCoatPixel {
+    float strength;             // clearCoat in [0, 1]
+    float perceptualRoughness;  // of the coat
+    float alpha;                // MB_SLOT_roughness(perceptualRoughness)
+    float ambientOcclusion;     // the material's, for the coat's specular occlusion
+};
+
+// The coat's Fresnel reflectance at normal incidence: IOR 1.5 (seed 000, Filament).
+#define MB_CLEARCOAT_F0 0.04
+
+ClearCoatPixel mb_clearcoat_prepare(MaterialInputs m, ShadingFrame f, inout vec3 f0, inout float perceptualRoughness) {
+    ClearCoatPixel cc;
+    cc.strength = m.clearCoat;
+    cc.perceptualRoughness = m.clearCoatRoughness;
+    cc.alpha = MB_SLOT_roughness(cc.perceptualRoughness);
+    cc.ambientOcclusion = m.ambientOcclusion;
+    // Under the coat the base's outer medium is IOR 1.5, not air: F0ClearCoatToSurface (seed
+    // 000), blended by the coat's strength as Filament does, so that clearCoat = 0 leaves f0
+    // exactly unchanged (mix(a, b, 0) = a).
+    f0 = mix(f0, MB_SLOT_f0_clearcoat(f0), cc.strength);
+    // Seed 000: linearRoughness = lerp(linearRoughness, max(linearRoughness,
+    // linearClearCoatRoughness), clearCoat); its "linear" roughness is the perceptual one.
+    perceptualRoughness = mix(perceptualRoughness, max(perceptualRoughness, cc.perceptualRoughness), cc.strength);
+    return cc;
+}
+
+// The coat's specular for light direction l, about the geometric normal, times its own
+// saturate(ng.l) (the base's share already carries n.l): strength * D * V * Fc * (ng.l).
+// attenuation = 1 - strength * Fc is what reaches the base and comes back (Filament's
+// clearCoatLobe; Fc at l.h, as Filament).
+vec3 mb_clearcoat_direct(ClearCoatPixel cc, ShadingFrame f, vec3 l, out float attenuation) {
+    Geometry g = makeGeometry(f.ng, f.v, l);
+    float D = MB_SLOT_clearcoat_d(g, cc.alpha);
+    float V = MB_SLOT_clearcoat_v(g, cc.alpha);
+    float Fc = MB_SLOT_clearcoat_fresnel(g, vec3(MB_CLEARCOAT_F0), 1.0).x * cc.strength;
+    attenuation = 1.0 - Fc;
+    // Cosine on V before D, as the core does: at fp16 D * V alone may overflow where n.l = 0.
+    // chi+(ng.h) (Walter et al. 2007, eq. 33): no coat microfacet faces h when h is below the
+    // coat's plane, which happens here, unlike for the base, with ng.l > 0: the viewer is below
+    // ng's horizon (ng.v < -ng.l; ng is not the shading normal). makeGeometry clamps ng.h to 0
+    // there, and a D brick evaluated at n.h = 0 gives its grazing value (alpha^2 / pi for GGX).
+    float lobe = g.NoH > 0.0 ? D * (V * g.NoL) : 0.0;
+#ifdef MB_FP16
+    lobe = min(lobe, 65504.0);  // Filament's saturateMediump, as in the core
+#endif
+    return vec3(lobe * Fc);
+}
+
+#ifdef MB_ENV_IBL
+// The coat's image-based specular (Filament evaluateClearCoatIBL): the prefiltered radiance
+// along r = reflect(-v, ng) at the coat's mip level, times Fc(ng.v) * strength and the
+// specular occlusion of the coat (the specular_occlusion role about ng with the material ao
+// times env.ao and the coat's roughness). attenuation = 1 - Fc(ng.v) * strength. Geometry
+// with l = r: its v.h is |v + r| / 2 = |ng.v|, so the Fresnel brick sees v.h = n.v.
+vec3 mb_clearcoat_environment(ClearCoatPixel cc, ShadingFrame f, Environment env, out float attenuation) {
+    vec3 r = reflect(-f.v, f.ng);
+    Geometry g = makeGeometry(f.ng, f.v, r);
+    float Fc = MB_SLOT_clearcoat_fresnel(g, vec3(MB_CLEARCOAT_F0), 1.0).x * cc.strength;
+    attenuation = 1.0 - Fc;
+    float lod = MB_SLOT_mip_mapping(cc.perceptualRoughness, g.NoV, env.maxMip);
+    float occlusion = MB_SLOT_specular_occlusion(g, f.ng, env.ao * cc.ambientOcclusion, cc.perceptualRoughness);
+    return mb_fetch_prefiltered(r, lod) * (Fc * occlusion);
+}
+#endif

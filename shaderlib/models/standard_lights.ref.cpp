@@ -1,0 +1,128 @@
+// Reference of the standard model's point, spot, sphere and tube lights (seed 002 "Lighting
+// model" / "Area lights", Karis 2013, Real Shading in Unreal Engine 4), in double and written
+// from the equations, independently of standard_lights.glsl. Conventions: docs/models/lights.md.
+#include <algorithm>
+#include <cmath>
+
+#include "common/lights_reference.hpp"
+#include "models/standard_reference.hpp"
+
+namespace mb::ref::standard {
+namespace {
+
+// The light bricks' declared domain (sin alpha <= 0.95); nearer than radius / 0.95 the light
+// is shaded as at that bound (docs/models/lights.md, "Degenerate lights").
+constexpr double kMaxSinAlpha = 0.95;
+
+Vec3 punctual(const ModelEvalInput& in, const Pixel& px, const Vec3& l, const Vec3& illuminance) {
+  double NoL = clamp01(dot(in.frame.n, l));
+  return light(in, px, l, l, 1.0, NoL, NoL) * illuminance;
+}
+
+// Filament's smooth spot cone: the cosine to the axis mapped linearly from cosOuter (0) to
+// cosInner (1), clamped and squared; the width is kept >= 1e-4 as in the contract
+// (docs/models.md).
+double spotCone(const SpotLight& s, const Vec3& l) {
+  double width = std::max(s.cosInner - s.cosOuter, 1e-4);
+  double t = clamp01((dot(l * -1.0, s.axis) - s.cosOuter) / width);
+  return t * t;
+}
+
+// A sphere of radius R centred at `toCenter`, as the surface sees it (Karis 2013, "Sphere
+// Lights"): unit centre direction, sin of the angular radius, the horizon-wrapped cosine and
+// the illuminance I * falloff at the centre distance (at the radius when inside the light).
+struct SphereView {
+  Vec3 l;
+  double sinAlpha = 0, cosine = 0;
+  Vec3 illuminance;
+};
+
+SphereView sphereView(const ModelEvalInput& in, const Vec3& toCenter, double radius, const Vec3& intensity,
+                      double falloffRadius) {
+  const Vec3 n = in.frame.n, v = in.frame.v;
+  SphereView s;
+  double d = length(toCenter);
+  s.l = d > 0.0 ? toCenter / d : n;
+  double dLight = std::max(d, radius);
+  s.sinAlpha = dLight > 0.0 ? std::min(radius / dLight, kMaxSinAlpha) : 0.0;
+  s.cosine = in.scalar("sphere_horizon_wrap", Args().geometry(n, v, s.l) << s.sinAlpha);
+  s.illuminance = intensity * in.scalar("light_falloff", Args() << s.l * dLight << falloffRadius);
+  return s;
+}
+
+// chi+(n.h) of GGX D (Walter et al. 2007, eq. 33) for the representative direction lD: its
+// half vector may face away from n when lD is far below the horizon; D is then 0. n.h <= 1e-4
+// counts as facing away (the tube's -r direction has n.h = 0 exactly; see the GLSL).
+constexpr double kMinNoH = 1e-4;
+bool facing(double NoH) { return NoH > kMinNoH; }
+
+// The light direction whose half vector with v makes the angle acos(NoH) with n, in the plane
+// of n and the centre's half vector h: n rotated by that angle about the axis n x h
+// (Rodrigues), then v reflected about it.
+Vec3 directionWithNoH(const Vec3& n, const Vec3& v, const Vec3& h, double NoH) {
+  Vec3 axis = cross(n, h);
+  double len = length(axis);
+  axis = len > 0.0 ? axis / len : lights::frameAround(n).u;
+  double angle = std::acos(std::clamp(NoH, -1.0, 1.0));
+  // Rodrigues for a vector perpendicular to the axis: n cos + (axis x n) sin.
+  Vec3 hD = n * std::cos(angle) + cross(axis, n) * std::sin(angle);
+  return hD * (2.0 * dot(v, hD)) - v;
+}
+
+// Karis 2013 "Tube Lights" line irradiance, E / I = (n.L0/|L0| + n.L1/|L1|) / (|L0||L1| + L0.L1),
+// as a point light: direction w bisecting L0 and L1, distance^2 = |L0||L1| cos(theta / 2)
+// (theta the angle the segment subtends; derivation in the GLSL and docs/models/lights.md).
+Vec3 tubeEquivalentPoint(const Vec3& n, const Vec3& L0, const Vec3& L1) {
+  double d0 = length(L0), d1 = length(L1);
+  if (d0 == 0.0 || d1 == 0.0) return (d0 == 0.0 ? L0 : L1);  // an end at the shading point
+  double theta = std::atan2(length(cross(L0, L1)), dot(L0, L1));
+  Vec3 bisector = L0 / d0 + L1 / d1;
+  double b = length(bisector);
+  Vec3 w = b > 0.0 ? bisector / b : n;
+  return w * std::sqrt(d0 * d1 * std::cos(0.5 * theta));
+}
+
+}  // namespace
+
+Vec3 shadePoint(const ModelEvalInput& in, const Pixel& px, const PointLight& light) {
+  Vec3 l = normalize(light.toLight);
+  double falloff = in.scalar("light_falloff", Args() << light.toLight << light.falloffRadius);
+  return punctual(in, px, l, light.intensity * falloff);
+}
+
+Vec3 shadeSpot(const ModelEvalInput& in, const Pixel& px, const SpotLight& light) {
+  Vec3 l = normalize(light.toLight);
+  double falloff = in.scalar("light_falloff", Args() << light.toLight << light.falloffRadius);
+  return punctual(in, px, l, light.intensity * (falloff * spotCone(light, l)));
+}
+
+// `light` (the BRDF of one direction) is hidden by a parameter of that name: the area lights
+// call theirs `sphere` and `tube`.
+Vec3 shadeSphere(const ModelEvalInput& in, const Pixel& px, const SphereLight& sphere) {
+  const Vec3 n = in.frame.n, v = in.frame.v;
+  SphereView s = sphereView(in, sphere.toCenter, sphere.radius, sphere.intensity, sphere.falloffRadius);
+  Geometry g = makeGeometry(n, v, s.l);
+  double NoH = in.scalar("sphere_max_noh", Args().geometry(n, v, s.l) << s.sinAlpha);
+  Vec3 lD = directionWithNoH(g.n, g.v, g.h, NoH);
+  // chi+ on the brick's n.h (clamped to [0, 1] by the sphere_max_noh bricks).
+  double energy =
+      facing(NoH) ? in.scalar("sphere_energy_normalization", Args().geometry(n, v, s.l) << px.alpha << s.sinAlpha) : 0.0;
+  return light(in, px, s.l, lD, energy, s.cosine, s.cosine) * s.illuminance;
+}
+
+Vec3 shadeTube(const ModelEvalInput& in, const Pixel& px, const TubeLight& tube) {
+  const Vec3 n = in.frame.n, v = in.frame.v;
+  const Vec3 L0 = tube.toStart, L1 = tube.toEnd;
+  Vec3 P = tubeEquivalentPoint(n, L0, L1);
+  SphereView s = sphereView(in, P, tube.radius, tube.intensity, tube.falloffRadius);
+  Vec3 lD = in.vec3("tube_light_point", Args().geometry(n, v, s.l) << L0 << L1 << tube.radius);
+  // The brick's direction is undefined (NaN) when its point is the shading point itself (a
+  // segment through it): the equivalent direction stands in.
+  if (!(dot(lD, lD) > 0.5)) lD = s.l;
+  double energy = facing(makeGeometry(n, v, lD).NoH) ? in.scalar("tube_energy_normalization",
+                                                Args().geometry(n, v, lD) << px.alpha << L0 << L1 << tube.radius)
+                                   : 0.0;
+  return light(in, px, s.l, lD, energy, s.cosine, s.cosine) * s.illuminance;
+}
+
+}  // namespace mb::ref::standard
