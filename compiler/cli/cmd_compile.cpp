@@ -116,7 +116,7 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
 Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<CompileArgs>();
   CLI::App* cmd = app.add_subcommand("compile", "Compile materials into a package of SPIR-V and GLSL");
-  cmd->add_option("materials", args->materials, "Material files: .json, .mat (macro form), .gltf/.glb (one material each)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("materials", args->materials, "Material files: .json, .mat (macro form), .gltf/.glb (one material each)")->required();
   cmd->add_option("-o,--output", args->out, "Package directory (replaced atomically)")->required();
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   cmd->add_option("--lights", args->lights, "Light types every permutation shades (default: dir)")

@@ -100,7 +100,7 @@ Command addEvalCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<EvalArgs>();
   CLI::App* cmd = app.add_subcommand("eval", "Evaluate a brick or a material at inputs from a CSV file, on the GPU and with the reference");
   cmd->add_option("--brick", args->brick, "Brick id (see `matbricks bricks`)");
-  cmd->add_option("--material", args->material, "Material JSON file")->check(CLI::ExistingFile);
+  cmd->add_option("--material", args->material, "Material JSON file");
   cmd->add_option("--input", args->input, "CSV file; header = the probe's input names (see `bricks --json`)")->required();
   cmd->add_flag("--json", args->json, "JSON output");
   cmd->add_option("--precision", args->precision, "fp32, or fp16 (true half arithmetic; only NaN/Inf fail)")

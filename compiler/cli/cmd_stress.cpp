@@ -130,7 +130,7 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
 Command addStressCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<StressArgs>();
   CLI::App* cmd = app.add_subcommand("stress", "Run bricks and materials over adversarial inputs; fail on NaN/Inf in their domain");
-  cmd->add_option("materials", args->materials, "Material JSON files")->check(CLI::ExistingFile);
+  cmd->add_option("materials", args->materials, "Material JSON files");
   cmd->add_option("--brick", args->bricks, "Stress this brick (repeatable)");
   cmd->add_flag("--all-bricks", args->allBricks, "Stress every brick of the library");
   cmd->add_option("--precision", args->precision, "fp32, fp16 (true half arithmetic) or all")

@@ -173,6 +173,18 @@ JsonDocument JsonDocument::parse(const std::string& text, const std::string& fil
     std::string msg = pos != std::string::npos ? what.substr(pos) : what;
     throw DiagnosticError({{Severity::Error, "E-JSON-SYNTAX", locationOfOffset(text, offset, file),
                             "invalid JSON: " + msg, ""}});
+  } catch (const nlohmann::json::out_of_range& e) {
+    // A number literal beyond a double (e.g. 1e999): nlohmann reports it without a position;
+    // the literal it quotes is found in the text.
+    std::string what = e.what();
+    size_t q0 = what.find('\''), q1 = q0 == std::string::npos ? q0 : what.find('\'', q0 + 1);
+    std::string literal = q1 == std::string::npos ? "" : what.substr(q0 + 1, q1 - q0 - 1);
+    size_t offset = literal.empty() ? std::string::npos : text.find(literal);
+    throw DiagnosticError({{Severity::Error, "E-JSON-SYNTAX",
+                            offset == std::string::npos ? SourceLocation{file, 1, 1} : locationOfOffset(text, offset, file),
+                            "invalid JSON: number " + (literal.empty() ? std::string("literal") : "'" + literal + "'") +
+                                " is out of the range of a double",
+                            ""}});
   }
   std::map<std::string, size_t> values, keys;
   PositionScanner(text, values, keys).run();

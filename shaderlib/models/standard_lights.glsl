@@ -58,7 +58,7 @@ MbSphereView mb_sphere_view(ShadingFrame f, vec3 toCenter, float radius, vec3 in
     float dLight = max(d, radius);
     s.g = makeGeometry(f.n, f.v, l);
     s.sinAlpha = dLight > 0.0 ? min(radius / dLight, MB_AREA_LIGHT_MAX_SIN_ALPHA) : 0.0;
-    // Seed 002 "实现细节" 1-2 (UE4): n.l from the centre, wrapped where the sphere crosses the
+    // Seed 002, implementation notes 1-2 (UE4): n.l from the centre, wrapped where the sphere crosses the
     // horizon; UE4 multiplies diffuse and specular alike by it.
     s.cosine = MB_SLOT_sphere_horizon_wrap(s.g, s.sinAlpha);
     s.illuminance = intensity * MB_SLOT_light_falloff(l * dLight, falloffRadius);
@@ -80,33 +80,22 @@ bool mb_facing(Geometry gD) {
 #endif
 
 #ifdef MB_LIGHT_SPHERE
-// The light direction whose half vector with v has n.h = NoH: g's half vector turned towards
-// (or away from) n in the plane of n and h, then v mirrored about it. An n.h within an ulp of
-// 1 is taken as exactly 1: fp32 cannot tell those values from 1, and sqrt(1 - n.h^2) would
-// turn the last ulp into a 3.5e-4 rad tilt of the peak (a 6% drop of GGX D at alpha = 0.002).
-vec3 mb_direction_with_noh(Geometry g, float NoH) {
-    vec3 across = g.h - dot(g.n, g.h) * g.n;
-    float len2 = dot(across, across);
-    vec3 t, b;
-    if (len2 > 0.0) {
-        t = across * inversesqrt(len2);
-    } else {
-        mb_orthonormal_basis(g.n, t, b);  // h = n: every plane through n holds it
-    }
-    float sinH = NoH > 1.0 - 1.1920929e-7 ? 0.0 : sqrt(max(1.0 - NoH * NoH, 0.0));  // 1 - 2^-23
-    vec3 hD = NoH * g.n + sinH * t;
-    return reflect(-g.v, hD);
-}
-
-// Seed 002 "Sphere Lights": D at the representative direction (the sphere_max_noh brick's n.h)
-// times the energy normalization; diffuse, V and F at the centre direction; both lobes times
-// the horizon-wrapped cosine.
+// Seed 002 "Sphere Lights": D at Karis's representative point (the point of the sphere closest
+// to the mirror ray) times the energy normalization; diffuse, V and F at the centre direction;
+// both lobes times the horizon-wrapped cosine. The representative direction comes from the
+// sphere_light_point role (a tube_light_point brick, called with a zero-length segment: the
+// tube bricks' sphere step is Karis's sphere closest point, eqs. 11-12), built from vectors.
+// An earlier form took D at the n.h of the sphere_max_noh bricks and rebuilt a direction from
+// it; one fp32 n.h carries an angle error ~6e-7 / sin(theta_h), which GGX D amplifies by up to
+// 2 / alpha (13% at roughness 0.04, docs/models/lights.md), so the direction is passed instead.
 vec3 mb_shade_sphere(ShadingPixel px, ShadingFrame f, SphereLight light) {
     MbSphereView s = mb_sphere_view(f, light.toCenter, light.radius, light.intensity, light.falloffRadius);
-    float NoH = MB_SLOT_sphere_max_noh(s.g, s.sinAlpha);
-    Geometry gD = makeGeometry(f.n, f.v, mb_direction_with_noh(s.g, NoH));
-    // chi+ as mb_facing, on the brick's n.h (clamped to [0, 1] by the sphere_max_noh bricks).
-    float energy = NoH > MB_AREA_LIGHT_MIN_NOH ? MB_SLOT_sphere_energy_normalization(s.g, px.alpha, s.sinAlpha) : 0.0;
+    vec3 lD = MB_SLOT_sphere_light_point(s.g, light.toCenter, light.toCenter, light.radius);
+    // The shading point on the sphere's centre has no direction (the brick's normalize(0)):
+    // the centre direction stands in (false for NaN too).
+    lD = dot(lD, lD) > 0.5 ? lD : s.g.l;
+    Geometry gD = makeGeometry(f.n, f.v, lD);
+    float energy = mb_facing(gD) ? MB_SLOT_sphere_energy_normalization(s.g, px.alpha, s.sinAlpha) : 0.0;
     return mb_standard_light(px, f, s.g, gD, energy, s.cosine, s.cosine) * s.illuminance;
 }
 #endif

@@ -56,19 +56,6 @@ SphereView sphereView(const ModelEvalInput& in, const Vec3& toCenter, double rad
 constexpr double kMinNoH = 1e-4;
 bool facing(double NoH) { return NoH > kMinNoH; }
 
-// The light direction whose half vector with v makes the angle acos(NoH) with n, in the plane
-// of n and the centre's half vector h: n rotated by that angle about the axis n x h
-// (Rodrigues), then v reflected about it.
-Vec3 directionWithNoH(const Vec3& n, const Vec3& v, const Vec3& h, double NoH) {
-  Vec3 axis = cross(n, h);
-  double len = length(axis);
-  axis = len > 0.0 ? axis / len : lights::frameAround(n).u;
-  double angle = std::acos(std::clamp(NoH, -1.0, 1.0));
-  // Rodrigues for a vector perpendicular to the axis: n cos + (axis x n) sin.
-  Vec3 hD = n * std::cos(angle) + cross(axis, n) * std::sin(angle);
-  return hD * (2.0 * dot(v, hD)) - v;
-}
-
 // Karis 2013 "Tube Lights" line irradiance, E / I = (n.L0/|L0| + n.L1/|L1|) / (|L0||L1| + L0.L1),
 // as a point light: direction w bisecting L0 and L1, distance^2 = |L0||L1| cos(theta / 2)
 // (theta the angle the segment subtends; derivation in the GLSL and docs/models/lights.md).
@@ -101,12 +88,14 @@ Vec3 shadeSpot(const ModelEvalInput& in, const Pixel& px, const SpotLight& light
 Vec3 shadeSphere(const ModelEvalInput& in, const Pixel& px, const SphereLight& sphere) {
   const Vec3 n = in.frame.n, v = in.frame.v;
   SphereView s = sphereView(in, sphere.toCenter, sphere.radius, sphere.intensity, sphere.falloffRadius);
-  Geometry g = makeGeometry(n, v, s.l);
-  double NoH = in.scalar("sphere_max_noh", Args().geometry(n, v, s.l) << s.sinAlpha);
-  Vec3 lD = directionWithNoH(g.n, g.v, g.h, NoH);
-  // chi+ on the brick's n.h (clamped to [0, 1] by the sphere_max_noh bricks).
-  double energy =
-      facing(NoH) ? in.scalar("sphere_energy_normalization", Args().geometry(n, v, s.l) << px.alpha << s.sinAlpha) : 0.0;
+  // Karis's representative point, from the sphere_light_point role (a tube_light_point brick
+  // with a zero-length segment); the centre direction where it has none.
+  Vec3 lD = in.vec3("sphere_light_point",
+                    Args().geometry(n, v, s.l) << sphere.toCenter << sphere.toCenter << sphere.radius);
+  if (!(dot(lD, lD) > 0.5)) lD = s.l;
+  double energy = facing(makeGeometry(n, v, lD).NoH)
+                      ? in.scalar("sphere_energy_normalization", Args().geometry(n, v, s.l) << px.alpha << s.sinAlpha)
+                      : 0.0;
   return light(in, px, s.l, lD, energy, s.cosine, s.cosine) * s.illuminance;
 }
 
