@@ -133,11 +133,9 @@ size_t tokenStart(const std::string& text, size_t last) {
 }  // namespace
 
 // PositionScanner recurses once per nesting level, so a hostile file of a million '[' would
-// overflow the stack: every JSON input (library, material, glTF) is refused beyond this depth
-// before anything recursive runs. Real files stay far below it (a glTF scene ~10 levels).
-constexpr int kMaxJsonDepth = 256;
-
-static void checkNestingDepth(const std::string& text, const std::string& file) {
+// overflow the stack: every JSON input (library, material, glTF) is refused beyond
+// `maxDepth` before anything recursive runs.
+static void checkNestingDepth(const std::string& text, const std::string& file, int maxDepth) {
   int depth = 0;
   bool inString = false;
   for (size_t i = 0; i < text.size(); ++i) {
@@ -148,17 +146,17 @@ static void checkNestingDepth(const std::string& text, const std::string& file) 
     } else if (c == '"') {
       inString = true;
     } else if (c == '[' || c == '{') {
-      if (++depth > kMaxJsonDepth)
+      if (++depth > maxDepth)
         throw DiagnosticError({{Severity::Error, "E-JSON-SYNTAX", locationOfOffset(text, i, file),
-                                "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels", ""}});
+                                "JSON nested deeper than " + std::to_string(maxDepth) + " levels", ""}});
     } else if (c == ']' || c == '}') {
       --depth;
     }
   }
 }
 
-JsonDocument JsonDocument::parse(const std::string& text, const std::string& file) {
-  checkNestingDepth(text, file);
+JsonDocument JsonDocument::parse(const std::string& text, const std::string& file, int maxDepth) {
+  checkNestingDepth(text, file, maxDepth);
   JsonDocument doc;
   doc.file_ = file;
   try {

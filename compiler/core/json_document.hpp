@@ -13,8 +13,10 @@ namespace mb {
 
 class JsonDocument {
  public:
-  // Parses `text` (read from `file`). Syntax errors throw DiagnosticError (code E-JSON-SYNTAX).
-  static JsonDocument parse(const std::string& text, const std::string& file);
+  // Parses `text` (read from `file`). Syntax errors, and nesting deeper than `maxDepth`, throw
+  // DiagnosticError (code E-JSON-SYNTAX). Real files stay far below the default (a glTF
+  // scene ~10 levels).
+  static JsonDocument parse(const std::string& text, const std::string& file, int maxDepth = 256);
   // Reads and parses a file. A missing file throws DiagnosticError (code E-FILE-NOT-FOUND).
   static JsonDocument load(const std::string& path);
 

@@ -18,33 +18,9 @@ using nlohmann::json;
 
 namespace {
 
-// A material is at most 4 levels deep. JsonDocument's position scanner recurses once per
-// level, so a hostile file of a million '[' would overflow the stack: refuse deep nesting
-// before parsing.
-constexpr int kMaxJsonDepth = 64;
-
-void checkNestingDepth(const std::string& text, const std::string& file) {
-  int depth = 0;
-  bool inString = false;
-  for (size_t i = 0; i < text.size(); ++i) {
-    char c = text[i];
-    if (inString) {
-      if (c == '\\') ++i;
-      else if (c == '"') inString = false;
-      continue;
-    }
-    if (c == '"') {
-      inString = true;
-    } else if (c == '[' || c == '{') {
-      if (++depth > kMaxJsonDepth)
-        throw DiagnosticError({{Severity::Error, "E-JSON-SYNTAX", locationOfOffset(text, i, file),
-                                "JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
-                                    " levels: a material is at most 4 levels deep"}});
-    } else if (c == ']' || c == '}') {
-      --depth;
-    }
-  }
-}
+// A material is at most 4 levels deep: anything past 64 is refused by JsonDocument::parse
+// before its recursive position scanner runs.
+constexpr int kMaxMaterialJsonDepth = 64;
 
 class JsonMaterialReader {
  public:
@@ -213,8 +189,7 @@ class JsonMaterialReader {
 
 MaterialDesc parseMaterialJson(const std::string& text, const std::string& file,
                                const ShaderLibrary& lib) {
-  checkNestingDepth(text, file);
-  JsonDocument doc = JsonDocument::parse(text, file);
+  JsonDocument doc = JsonDocument::parse(text, file, kMaxMaterialJsonDepth);
   DiagnosticSink sink;
   return finishMaterial(JsonMaterialReader(doc, lib, sink).run(), lib, sink);
 }
