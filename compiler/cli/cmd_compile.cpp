@@ -1,113 +1,125 @@
-// matbricks compile MATERIAL... -o DIR: emit + compile every permutation, then write the
-// package (one .glsl and one .spv per permutation, plus manifest.json) atomically.
-#include <chrono>
+// matbricks compile: materials (or a scene) -> the required permutations -> built in
+// parallel through the cache, to every target -> a package written atomically
+// (docs/cli.md, docs/scenes.md, docs/targets.md, docs/package.md).
 #include <cstdio>
 #include <iostream>
 #include <map>
-#include <nlohmann/json.hpp>
+#include <thread>
 
 #include "cli/cli_common.hpp"
+#include "compile/build.hpp"
 #include "compile/glsl_compiler.hpp"
-#include "emit/emitter.hpp"
-#include "permute/permutation.hpp"
-#include "write/package_writer.hpp"
+#include "compile/targets.hpp"
+#include "load/scene_desc.hpp"
+#include "permute/scene_plan.hpp"
+#include "write/package_contents.hpp"
 
 namespace mb::cli {
 namespace {
 
 struct CompileArgs {
   std::vector<std::string> materials;
+  std::string scene;
   std::string out;
   bool quiet = false;
+  bool explain = false;
   std::vector<std::string> lights{"dir"};
   std::string environment = "none";
   std::string precision = "fp32";
+  std::string quality = "high";
+  std::vector<std::string> targets;  // empty: the scene's, else spirv
+  unsigned jobs = 0;
+  std::string cacheDir;
+  bool noCache = false;
+  std::string headerName = "matbricks_materials.hpp";
+  std::string cppNamespace = "matbricks_materials";
+  CLI::Option* axisOptions[4] = {};
 };
 
-nlohmann::json paramJson(const MaterialParam& p) {
-  nlohmann::json j{{"name", p.name}, {"type", toString(p.type)}, {"constant", p.constant}, {"user", p.user}};
-  j[p.constant ? "value" : "default"] = p.value;
-  if (!p.constant) j["range"] = {p.range.lo, p.range.hi};
-  return j;
-}
-
-int runCompile(const CompileArgs& a, const GlobalOptions& g) {
-  ShaderLibrary lib = loadLibrary(g);
-  std::vector<MaterialDesc> materials = loadMaterials(a.materials, lib, g);
-  std::vector<Permutation> perms = permutationsFor(materials);
-  for (auto& perm : perms) {
-    perm.lights = canonicalLights(a.lights);
-    perm.environment = a.environment;
-    perm.precision = a.precision;
-  }
-
-  // Two materials of one name would write the same files: refuse rather than keep either.
-  std::map<std::string, const MaterialDesc*> byKey;
+// Two materials of one name would write the same files: refuse rather than keep either.
+void refuseDuplicateKeys(const std::vector<Permutation>& perms, const std::vector<const MaterialDesc*>& sources) {
+  std::map<std::string, size_t> byKey;
   std::vector<Diagnostic> duplicates;
-  for (const auto& perm : perms) {
-    auto [it, fresh] = byKey.emplace(perm.key(), perm.material);
+  for (size_t i = 0; i < perms.size(); ++i) {
+    auto [it, fresh] = byKey.emplace(perms[i].key(), i);
     if (!fresh)
-      duplicates.push_back({Severity::Error, "E-DUPLICATE-MATERIAL", {perm.material->sourceFile, 1, 1},
-                            "material '" + perm.material->name + "' is also defined in " + it->second->sourceFile +
-                                ": permutation '" + perm.key() + "' would be written twice",
+      duplicates.push_back({Severity::Error, "E-DUPLICATE-MATERIAL", {sources[i]->sourceFile, 1, 1},
+                            "material '" + sources[i]->name + "' is also defined in " +
+                                sources[it->second]->sourceFile + ": permutation '" + perms[i].key() +
+                                "' would be written twice",
                             "rename one of them"});
   }
   if (!duplicates.empty()) throw DiagnosticError(duplicates);
+}
 
-  PackageWriter pkg;
-  nlohmann::json manifest{{"generator", "matbricks " MB_VERSION},
-                          {"toolchain", toolchainVersion()},
-                          {"permutations", nlohmann::json::array()}};
-  std::vector<Diagnostic> errors;
-  for (const auto& perm : perms) {
-    EmittedShader shader = emitPermutation(lib, perm);
-    auto t0 = std::chrono::steady_clock::now();
-    CompileResult compiled;
-    try {
-      // fp16 skips spirv-opt, as validation does (probe_program.cpp: SPIRV-Tools v2023.1's
-      // folding emits invalid 16-bit constants).
-      CompileOptions options;
-      options.optimize = perm.precision == "fp32";
-      compiled = compileComputeGlsl(shader.glsl, shader.fileName, options);
-    } catch (const DiagnosticError& e) {
-      errors.insert(errors.end(), e.diagnostics().begin(), e.diagnostics().end());
-      continue;
-    }
-    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    std::string hash = contentHash(compiled.spirv.data(), compiled.spirv.size() * 4);
-    pkg.addFile(shader.key + ".glsl", shader.glsl);
-    pkg.addFile(shader.key + ".spv", compiled.spirv);
+int runCompile(const CompileArgs& a, const GlobalOptions& g) {
+  // Usage errors exit 2 (CLI::ValidationError), as CLI11's own do.
+  if (a.scene.empty() == a.materials.empty())
+    throw CLI::ValidationError("compile takes either MATERIAL files or --scene FILE, not both or neither");
+  if (!a.scene.empty())
+    for (const CLI::Option* o : a.axisOptions)
+      if (o && o->count() > 0)
+        throw CLI::ValidationError(o->get_name() + " conflicts with --scene: the scene file sets that axis (docs/scenes.md)");
+  if (a.out.empty() && !a.explain)
+    throw CLI::ValidationError("compile needs -o DIR (or --explain, which only counts)");
 
-    const MaterialDesc& m = *perm.material;
-    nlohmann::json entry{{"key", shader.key},
-                         {"material", m.name},
-                         {"source", m.sourceFile},
-                         {"model", m.model},
-                         {"description", m.description},
-                         {"features", m.features},
-                         {"lights", perm.lights},
-                         {"environment", perm.environment},
-                         {"precision", perm.precision},
-                         {"glsl", shader.key + ".glsl"},
-                         {"spirv", shader.key + ".spv"},
-                         {"spirv_hash_xxh64", hash},
-                         {"spirv_instructions", spirvInstructionCount(compiled.spirv)},
-                         {"bricks", nlohmann::json::object()},
-                         {"bricks_included", shader.bricks},
-                         {"parameters", nlohmann::json::array()},
-                         {"probe_inputs", shader.layout.columns()}};
-    for (const auto& [role, id] : boundRoles(lib, perm)) entry["bricks"][role] = id;
-    for (const auto& p : m.params) entry["parameters"].push_back(paramJson(p));
-    manifest["permutations"].push_back(entry);
-    if (!a.quiet) {
-      std::printf("compiled %-44s %7.2f ms  %5zu instructions  %s\n", shader.key.c_str(), ms,
-                  spirvInstructionCount(compiled.spirv), hash.c_str());
-    }
+  ShaderLibrary lib = loadLibrary(g);
+  SceneDesc scene;
+  std::vector<MaterialDesc> materials;
+  ScenePlan plan;
+  std::vector<std::string> targets = a.targets;
+  if (!a.scene.empty()) {
+    scene = loadScene(a.scene, lib);
+    printDiagnostics(scene.warnings, g);
+    plan = planScene(scene, lib);
+    if (targets.empty()) targets = scene.targets;
+  } else {
+    materials = loadMaterials(a.materials, lib, g);
+    AxisPoint axes;
+    axes.lights = canonicalLights(a.lights);
+    axes.environment = a.environment;
+    axes.precision = a.precision;
+    axes.quality = a.quality;
+    plan = planMaterials(materials, axes, lib);
+    std::vector<const MaterialDesc*> sources;
+    for (const auto& p : plan.required) sources.push_back(p.material);
+    refuseDuplicateKeys(plan.required, sources);
   }
-  if (!errors.empty()) throw DiagnosticError(errors);  // nothing written
-  pkg.addFile("manifest.json", manifest.dump(2) + "\n");
-  pkg.commit(a.out);
-  if (!a.quiet) std::printf("wrote %zu permutation(s) to %s\n", perms.size(), a.out.c_str());
+  if (targets.empty()) targets = {"spirv"};
+
+  BuildOptions options;
+  options.jobs = a.jobs;
+  options.targets = targets;
+  options.cacheDir = a.noCache ? std::filesystem::path() : (a.cacheDir.empty() ? ShaderCache::defaultDir()
+                                                                               : std::filesystem::path(a.cacheDir));
+  BuildStats stats;
+  std::vector<BuiltPermutation> built = buildPermutations(lib, plan.required, options, &stats);
+
+  if (!a.quiet && !a.explain)
+    for (const auto& b : built)
+      std::printf("compiled %-52s %7.2f ms  %5zu instructions  %s%s\n", b.shader.key.c_str(), b.compileMs,
+                  spirvInstructionCount(b.artifacts.spirv), b.spirvHash.c_str(), b.fromCache ? "  (cached)" : "");
+  if (a.explain) std::fputs(explainText(plan, built.size(), stats.uniqueSpirv).c_str(), stdout);
+
+  if (!a.out.empty()) {
+    PackageWriter pkg;
+    PackageInputs in;
+    in.lib = &lib;
+    in.plan = &plan;
+    in.built = &built;
+    in.targets = targets;
+    in.sceneFile = a.scene;
+    in.headerName = a.headerName;
+    in.cppNamespace = a.cppNamespace;
+    addPackageFiles(pkg, in);
+    pkg.commit(a.out);
+  }
+  if (!a.quiet)
+    std::printf("%s %zu permutation(s) (%zu unique SPIR-V, %zu compiled, %zu cached%s) in %.0f ms with %u job(s)%s\n",
+                a.out.empty() ? "built" : "wrote", built.size(), stats.uniqueSpirv, stats.compiled, stats.cacheHits,
+                stats.cacheCorrupt ? (", " + std::to_string(stats.cacheCorrupt) + " corrupt cache entries rebuilt").c_str() : "",
+                stats.wallMs, options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency()),
+                a.out.empty() ? "" : (" to " + a.out).c_str());
   return kExitOk;
 }
 
@@ -115,16 +127,31 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
 
 Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<CompileArgs>();
-  CLI::App* cmd = app.add_subcommand("compile", "Compile materials into a package of SPIR-V and GLSL");
-  cmd->add_option("materials", args->materials, "Material files: .json, .mat (macro form), .gltf/.glb (one material each)")->required();
-  cmd->add_option("-o,--output", args->out, "Package directory (replaced atomically)")->required();
+  CLI::App* cmd = app.add_subcommand("compile", "Compile materials, or exactly what a scene needs, into a package");
+  cmd->add_option("materials", args->materials, "Material files: .json, .mat (macro form), .gltf/.glb");
+  cmd->add_option("--scene", args->scene, "Scene file (.json, .gltf, .glb): compile exactly the permutations it needs");
+  cmd->add_option("-o,--output", args->out, "Package directory (replaced atomically)");
+  cmd->add_flag("--explain", args->explain,
+                "Print possible / required / compiled / unique counts and which axis multiplied them");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
-  cmd->add_option("--lights", args->lights, "Light types every permutation shades (default: dir)")
+  args->axisOptions[0] = cmd->add_option("--lights", args->lights, "Light types every permutation shades (default: dir)")
+                             ->delimiter(',')
+                             ->check(CLI::IsMember(allLightTypes()));
+  args->axisOptions[1] = cmd->add_option("--environment", args->environment, "Environment mode (default: none)")
+                             ->check(CLI::IsMember(allEnvironmentModes()));
+  args->axisOptions[2] = cmd->add_option("--precision", args->precision, "fp32 or fp16")
+                             ->check(CLI::IsMember(allPrecisions()));
+  args->axisOptions[3] = cmd->add_option("--quality", args->quality, "low, medium or high (default: high)")
+                             ->check(CLI::IsMember(allQualityLevels()));
+  cmd->add_option("--targets", args->targets, "Output languages (default: the scene's, else spirv): " +
+                                                  [] { std::string s; for (const auto& t : allTargets()) s += (s.empty() ? "" : ",") + t; return s; }())
       ->delimiter(',')
-      ->check(CLI::IsMember(allLightTypes()));
-  cmd->add_option("--environment", args->environment, "Environment mode (default: none)")
-      ->check(CLI::IsMember(allEnvironmentModes()));
-  cmd->add_option("--precision", args->precision, "fp32 or fp16")->check(CLI::IsMember({"fp32", "fp16"}));
+      ->check(CLI::IsMember(allTargets()));
+  cmd->add_option("-j,--jobs", args->jobs, "Parallel compile jobs (default: every core); output is identical at every -j");
+  cmd->add_option("--cache-dir", args->cacheDir, "Compile cache directory (default: $MATBRICKS_CACHE_DIR, $XDG_CACHE_HOME/matbricks or ~/.cache/matbricks)");
+  cmd->add_flag("--no-cache", args->noCache, "Neither read nor write the compile cache");
+  cmd->add_option("--header", args->headerName, "Name of the generated C++ header (default: matbricks_materials.hpp)");
+  cmd->add_option("--namespace", args->cppNamespace, "C++ namespace of the generated header (default: matbricks_materials)");
   return {cmd, [args, &g] { return runCompile(*args, g); }};
 }
 

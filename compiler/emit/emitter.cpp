@@ -395,7 +395,8 @@ void writePermutationProbe(GlslWriter& w, const ProbeLayout& layout, const Permu
 
 }  // namespace
 
-EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput) {
+EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput,
+                             EmitMode /*mode*/) {
   const MaterialDesc& mat = *perm.material;
   const ShaderPrecision precision = precisionOf(perm);
   const ShadingModel* model = lib.findModel(mat.model);

@@ -37,6 +37,14 @@ struct ProbeLayout {
   const ProbeInput* find(const std::string& name) const;
 };
 
+// What a permutation's compute entry point is for (docs/package.md "Kernel ABI"):
+//  Probe   validation, stress, bench: every non-constant material parameter is a record input,
+//          sampled per record.
+//  Engine  the package's kernel: the non-constant material parameters come from one std140
+//          uniform block (set 0, binding 2; the C++ header's parameter struct mirrors it) and
+//          the records hold only the geometry and the scene's light and environment inputs.
+enum class EmitMode { Probe, Engine };
+
 struct EmittedShader {
   std::string key;       // permutation key, or "brick.<id>"
   std::string fileName;  // "<key>.glsl"
@@ -56,7 +64,8 @@ EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
 // instead of 1, so that stress can drive very large and very small light intensities.
 // Throws DiagnosticError (E-PERMUTATION-INVALID) for lights or an environment the model
 // does not shade.
-EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput = false);
+EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput = false,
+                             EmitMode mode = EmitMode::Probe);
 // Permutation::precision as an enum; throws DiagnosticError for an unknown name.
 ShaderPrecision precisionOf(const Permutation& perm);
 // The brick bound to `role` in this permutation (the material's choice, adjusted for the

@@ -25,7 +25,10 @@ bool Permutation::hasLight(const std::string& type) const {
 }
 
 std::string Permutation::key() const {
-  return material->name + "." + material->model + "." + lightsKey() + "." + environment + "." + precision;
+  std::string k = material->name + "." + material->model + "." + lightsKey() + "." + environment + "." + precision;
+  if (quality != "high") k += "." + quality;
+  for (const auto& f : folded) k += ".without-" + f;
+  return k;
 }
 
 std::vector<Permutation> permutationsFor(const std::vector<MaterialDesc>& materials) {

@@ -10,12 +10,20 @@
 namespace mb {
 
 struct Permutation {
+  // The material as this permutation shades it: after quality selection and feature folding
+  // (permute/specialize.hpp), `material` is the specialized copy, not the loaded one.
   const MaterialDesc* material = nullptr;
   std::vector<std::string> lights{"dir"};  // light types, in allLightTypes() order
   std::string environment = "none";        // one of allEnvironmentModes()
-  std::string precision = "fp32";
-  // Stable, readable and file-name safe: "<material>.<model>.<lights>.<env>.<precision>",
-  // lights joined by '+' ("dir+point+sphere").
+  std::string precision = "fp32";          // one of allPrecisions()
+  std::string quality = "high";            // one of allQualityLevels()
+  // Features of the loaded material that the scene proved constant at their neutral value
+  // and that were folded away (no lobe emitted), in the model's feature order.
+  std::vector<std::string> folded;
+  // Stable, readable and file-name safe:
+  //   "<material>.<model>.<lights>.<env>.<precision>[.<quality>][.without-<feature>]..."
+  // lights joined by '+' ("dir+point+sphere"); the quality only when it is not "high" and one
+  // ".without-<feature>" per folded feature, so that keys of earlier axes never change.
   std::string key() const;
   std::string lightsKey() const;
   bool hasLight(const std::string& type) const;

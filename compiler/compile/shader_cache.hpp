@@ -1,0 +1,55 @@
+// compile: a content-addressed on-disk cache of compiled permutations (docs/targets.md
+// "Cache"). The key covers everything that affects the output: the emitted GLSL (which holds
+// every brick's source verbatim), the brick source files' own hashes, the compile options and
+// targets, the matbricks version, and the glslang, SPIRV-Tools and SPIRV-Cross versions.
+//
+// Safe for concurrent invocations: an entry is written to a unique temporary file in the
+// cache directory and renamed into place, so a reader sees either no entry or a whole one.
+// Every entry carries a hash of its payload; an entry that fails the check (truncated,
+// edited, wrong format) is reported as corrupt, ignored and rebuilt.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace mb {
+
+// Everything one permutation compiles to.
+struct CompiledArtifacts {
+  std::vector<uint32_t> spirv;
+  std::map<std::string, std::string> targets;  // target -> text, for every non-spirv target
+  nlohmann::json reflection;                   // reflectSpirv(spirv)
+};
+
+class ShaderCache {
+ public:
+  // An empty dir disables the cache (every lookup misses, store does nothing).
+  explicit ShaderCache(std::filesystem::path dir);
+  // The default directory: $MATBRICKS_CACHE_DIR, else $XDG_CACHE_HOME/matbricks, else
+  // ~/.cache/matbricks.
+  static std::filesystem::path defaultDir();
+
+  bool enabled() const { return !dir_.empty(); }
+  const std::filesystem::path& dir() const { return dir_; }
+  // 32 hex digits (XXH3-128) over the given parts, each length-prefixed.
+  static std::string key(const std::vector<std::string>& parts);
+
+  enum class Lookup { Hit, Miss, Corrupt };
+  // Thread-safe. On Corrupt the entry is deleted (and will be rebuilt by the caller).
+  Lookup load(const std::string& key, CompiledArtifacts& out) const;
+  // Thread-safe; failures to write (read-only dir, full disk) are not errors: the build goes
+  // on uncached, and the return value says so.
+  bool store(const std::string& key, const CompiledArtifacts& artifacts) const;
+  // Path of an entry (for tests that corrupt one on purpose).
+  std::filesystem::path entryPath(const std::string& key) const;
+
+ private:
+  std::filesystem::path dir_;
+};
+
+}  // namespace mb

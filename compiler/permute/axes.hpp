@@ -1,0 +1,45 @@
+// Permutation axes and the one place that says which combinations are valid
+// (docs/scenes.md "Axes and validity"). Emit, the scene planner and the `--explain` counts
+// all ask invalidReason(); nothing else encodes a rule about which axes go together.
+#pragma once
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "library/shader_library.hpp"
+#include "permute/permutation.hpp"
+
+namespace mb {
+
+const std::vector<std::string>& allPrecisions();     // fp32, fp16
+const std::vector<std::string>& allQualityLevels();  // low, medium, high
+
+// One point of the axis space of one model, before it is bound to a material.
+struct AxisPoint {
+  std::vector<std::string> features;  // enabled, model order
+  std::vector<std::string> lights;    // canonicalLights() order; may be empty
+  std::string environment = "none";
+  std::string precision = "fp32";
+  std::string quality = "high";
+};
+
+// Why this combination is invalid for `model`, or nullopt when it is valid. The rules (each
+// with its reason): a light type / environment mode / feature the model does not have, an
+// unknown precision or quality, a quality level the model's manifest does not define.
+std::optional<std::string> invalidReason(const ShadingModel& model, const AxisPoint& point);
+// The same for a bound permutation (its material's features, its lights, ...).
+std::optional<std::string> invalidReason(const ShadingModel& model, const Permutation& perm);
+
+// The size of each axis of a model's full product, as a keyword system would enumerate it:
+// features 2^k, lights 2^n light subsets, environments, precisions, qualities.
+struct AxisSize {
+  std::string axis;  // "features", "lights", "environment", "precision", "quality"
+  size_t values = 1;
+};
+std::vector<AxisSize> axisSizes(const ShadingModel& model);
+// How many points of that product are valid (invalidReason() == nullopt), counted without
+// building permutations.
+size_t validCombinationCount(const ShadingModel& model);
+
+}  // namespace mb
