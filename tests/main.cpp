@@ -6,10 +6,21 @@
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
 
 int main(int argc, char* argv[]) {
   ::setenv("VK_ICD_FILENAMES", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json", 0);
   ::setenv("MATBRICKS_VALIDATION", "1", 0);
   ::setenv("MATBRICKS_CLI", MB_CLI_PATH, 0);
-  return Catch::Session().run(argc, argv);
+  // Compiles in tests (and the CLI runs they start) use a cache of their own, never the
+  // user's ~/.cache/matbricks: one directory per test process, removed when it ends. Tests of
+  // concurrent cache use make their own shared directory.
+  const auto cache = std::filesystem::temp_directory_path() / ("matbricks-test-cache-" + std::to_string(::getpid()));
+  ::setenv("MATBRICKS_CACHE_DIR", cache.c_str(), 0);
+  int rc = Catch::Session().run(argc, argv);
+  std::error_code ec;
+  std::filesystem::remove_all(cache, ec);
+  return rc;
 }

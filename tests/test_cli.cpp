@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "support/cli_support.hpp"
 #include "support/pipeline_support.hpp"
 
 using namespace mb;
@@ -15,14 +16,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path tempDir(const std::string& name) {
-  fs::path p = fs::temp_directory_path() / ("mb_cli_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p;
-}
+fs::path tempDir(const std::string& name) { return test::freshTempDir("cli", name); }
 
-std::string material(const std::string& file) { return (test::sourceDir() / "materials" / file).string(); }
+std::string material(const std::string& file) { return test::materialPath(file); }
 
 // Two in-domain CSV rows for a brick, built from `bricks --json` alone.
 std::string csvFor(const nlohmann::json& brick) {
@@ -81,18 +77,24 @@ TEST_CASE("compile writes a complete, deterministic package", "[cli][package]") 
   REQUIRE(b.exitCode == 0);
   auto manifest = nlohmann::json::parse(test::readFile(dir / "a/manifest.json"));
   REQUIRE(manifest["permutations"].size() == test::exampleMaterialFiles().size());
+  std::set<std::string> hashes;
   for (const auto& p : manifest["permutations"]) {
-    CHECK(fs::exists(dir / "a" / p["spirv"].get<std::string>()));
-    CHECK(fs::exists(dir / "a" / p["glsl"].get<std::string>()));
+    CHECK(fs::exists(dir / "a" / p["files"]["spirv"].get<std::string>()));
+    CHECK(fs::exists(dir / "a" / p["include"].get<std::string>()));
     CHECK(p["spirv_instructions"].get<int>() > 0);
+    hashes.insert(p["spirv_hash_xxh64"].get<std::string>());
   }
+  // docs/package.md: manifest, header, one include per permutation, one SPIR-V per hash.
   size_t files = 0;
-  for (const auto& e : fs::directory_iterator(dir / "a")) {
+  for (const auto& e : fs::recursive_directory_iterator(dir / "a")) {
+    if (!e.is_regular_file()) continue;
     ++files;
-    INFO(e.path().filename());
-    CHECK(test::readFile(e.path()) == test::readFile(dir / "b" / e.path().filename()));
+    fs::path rel = fs::relative(e.path(), dir / "a");
+    INFO(rel);
+    CHECK(test::readFile(e.path()) == test::readFile(dir / "b" / rel));
   }
-  CHECK(files == 1 + 2 * manifest["permutations"].size());
+  CHECK(fs::exists(dir / "a/matbricks_materials.hpp"));
+  CHECK(files == 2 + manifest["permutations"].size() + hashes.size());
   fs::remove_all(dir);
 }
 

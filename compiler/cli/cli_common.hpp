@@ -53,5 +53,6 @@ Command addStressCommand(CLI::App& app, GlobalOptions& g);
 Command addBenchCommand(CLI::App& app, GlobalOptions& g);
 Command addLutCommand(CLI::App& app, GlobalOptions& g);
 Command addEnergyCommand(CLI::App& app, GlobalOptions& g);
+Command addVerifyCommand(CLI::App& app, GlobalOptions& g);
 
 }  // namespace mb::cli

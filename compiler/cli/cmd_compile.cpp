@@ -12,6 +12,7 @@
 #include "compile/targets.hpp"
 #include "load/scene_desc.hpp"
 #include "permute/scene_plan.hpp"
+#include "write/depfile.hpp"
 #include "write/package_contents.hpp"
 
 namespace mb::cli {
@@ -33,6 +34,7 @@ struct CompileArgs {
   bool noCache = false;
   std::string headerName = "matbricks_materials.hpp";
   std::string cppNamespace = "matbricks_materials";
+  std::string depfile;
   CLI::Option* axisOptions[4] = {};
 };
 
@@ -62,6 +64,7 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
         throw CLI::ValidationError(o->get_name() + " conflicts with --scene: the scene file sets that axis (docs/scenes.md)");
   if (a.out.empty() && !a.explain)
     throw CLI::ValidationError("compile needs -o DIR (or --explain, which only counts)");
+  if (!a.depfile.empty() && a.out.empty()) throw CLI::ValidationError("--depfile needs -o DIR (its target is DIR/manifest.json)");
 
   ShaderLibrary lib = loadLibrary(g);
   SceneDesc scene;
@@ -70,7 +73,7 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
   std::vector<std::string> targets = a.targets;
   if (!a.scene.empty()) {
     scene = loadScene(a.scene, lib);
-    printDiagnostics(scene.warnings, g);
+    if (!scene.warnings.empty()) printDiagnostics(scene.warnings, g);
     plan = planScene(scene, lib);
     if (targets.empty()) targets = scene.targets;
   } else {
@@ -114,6 +117,13 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
     addPackageFiles(pkg, in);
     pkg.commit(a.out);
   }
+  if (!a.depfile.empty()) {
+    // After the package, so a failed compile leaves the previous depfile with its package.
+    const std::string absTarget =
+        std::filesystem::absolute(std::filesystem::path(a.out) / "manifest.json").lexically_normal().generic_string();
+    PackageWriter::writeFileAtomically(a.depfile,
+                                       makeDepfile(absTarget, compileInputs(lib, plan.required, built, {a.scene})));
+  }
   if (!a.quiet)
     std::printf("%s %zu permutation(s) (%zu unique SPIR-V, %zu compiled, %zu cached%s) in %.0f ms with %u job(s)%s\n",
                 a.out.empty() ? "built" : "wrote", built.size(), stats.uniqueSpirv, stats.compiled, stats.cacheHits,
@@ -152,6 +162,8 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_flag("--no-cache", args->noCache, "Neither read nor write the compile cache");
   cmd->add_option("--header", args->headerName, "Name of the generated C++ header (default: matbricks_materials.hpp)");
   cmd->add_option("--namespace", args->cppNamespace, "C++ namespace of the generated header (default: matbricks_materials)");
+  cmd->add_option("--depfile", args->depfile,
+                  "Also write every file the compile read, in Makefile syntax, with the package's manifest.json as target");
   return {cmd, [args, &g] { return runCompile(*args, g); }};
 }
 

@@ -3,6 +3,7 @@
 
 #include "cli/cli_common.hpp"
 #include "compile/glsl_compiler.hpp"
+#include "compile/targets.hpp"
 
 using namespace mb;
 using namespace mb::cli;
@@ -10,7 +11,7 @@ using namespace mb::cli;
 int main(int argc, char** argv) {
   CLI::App app{"matbricks " MB_VERSION ": PBR brick library, material compiler and validator"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("matbricks " MB_VERSION " (") + toolchainVersion() + ")");
+  app.set_version_flag("--version", std::string("matbricks " MB_VERSION " (") + toolchainVersion() + "; " + spirvCrossVersion() + ")");
   GlobalOptions g;
   app.add_option("--shaderlib", g.shaderlib, "Brick library root (default: $MATBRICKS_SHADERLIB or the source tree's shaderlib/)");
   app.add_option("--device", g.device, "Vulkan device: case-insensitive substring of its name (default: lavapipe)");
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
   commands.push_back(addLutCommand(app, g));
   commands.push_back(addEnergyCommand(app, g));
   commands.push_back(addStressCommand(app, g));
+  commands.push_back(addVerifyCommand(app, g));
 
   try {
     app.parse(argc, argv);

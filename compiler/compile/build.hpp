@@ -25,7 +25,8 @@ struct BuiltPermutation {
   CompiledArtifacts artifacts;
   std::string spirvHash;         // contentHash() of the SPIR-V words (16 hex digits)
   bool fromCache = false;
-  double compileMs = 0;          // 0 for a cache hit
+  double compileMs = 0;          // 0 for a cache hit, and for a permutation whose GLSL an
+                                 // earlier one already emitted (compiled once, reported once)
 };
 
 struct BuildStats {
@@ -36,6 +37,12 @@ struct BuildStats {
   size_t uniqueSpirv = 0;     // distinct SPIR-V hashes
   double wallMs = 0;
 };
+
+// The cache key of one emitted shader (shader_cache.hpp): format version, MB_VERSION, the
+// glslang/SPIRV-Tools/SPIRV-Cross versions, optimize/validate, the non-spirv targets with
+// their options (targets.hpp targetOptions), the GLSL, and each included brick's file hash.
+std::string buildCacheKey(const ShaderLibrary& lib, const EmittedShader& shader, bool optimize,
+                          const std::vector<std::string>& targets);
 
 // Throws DiagnosticError collecting every permutation's errors (GLSL errors at the user's
 // file:line:column, E-TARGET-FAILED, ...); nothing is returned partially.

@@ -21,12 +21,6 @@ double msSince(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// glslang must be initialized once per process (the ~130 ms first-compile cost is paid once).
-void ensureGlslangInitialized() {
-  static std::once_flag once;
-  std::call_once(once, [] { glslang::InitializeProcess(); });
-}
-
 constexpr auto kTargetEnv = SPV_ENV_VULKAN_1_1;
 
 // Maps (file, line) of the emitted source, as its #line directives define them, to the text
@@ -142,6 +136,16 @@ void validateSpirv(const std::vector<uint32_t>& spirv, const std::string& displa
 }
 
 }  // namespace
+
+// glslang must be initialized once per process (the ~130 ms first-compile cost is paid once).
+// InitializeProcess is not safe to race (glslang PR #2801, shaderc #1059), hence call_once;
+// after it, TShader/TProgram/GlslangToSpv run concurrently on separate threads, each with its
+// own thread-local pool allocator (glslang issue #2438). FinalizeProcess is never called: the
+// symbol tables live until exit.
+void ensureGlslangInitialized() {
+  static std::once_flag once;
+  std::call_once(once, [] { glslang::InitializeProcess(); });
+}
 
 CompileResult compileComputeGlsl(const std::string& source, const std::string& displayName,
                                  const CompileOptions& options) {

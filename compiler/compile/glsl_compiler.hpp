@@ -26,6 +26,9 @@ struct CompileResult {
 CompileResult compileComputeGlsl(const std::string& source, const std::string& displayName,
                                  const CompileOptions& options = {});
 
+// Initializes glslang once per process; thread-safe. Every glslang user calls it first.
+void ensureGlslangInitialized();
+
 // glslang + SPIRV-Tools versions, for cache keys and --version.
 std::string toolchainVersion();
 // Number of instructions in a SPIR-V module (deterministic cost proxy).

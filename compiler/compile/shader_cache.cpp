@@ -1,13 +1,197 @@
-// INTERIM (replaced by the content-addressed cache).
+// compile: the on-disk cache (shader_cache.hpp, docs/targets.md "Cache").
+//
+// Entry file: a 32-byte header, then the payload.
+//   header   "MBCACHE1" (8 bytes), XXH3-64 of kFormatVersion (u64), payload size (u64),
+//            XXH3-64 of the payload (u64)
+//   payload  u64 SPIR-V word count, the words; u64 target count, then per target u64 name
+//            length, name, u64 text length, text; u64 reflection length, reflection JSON text
+// Integers are little-endian as the host writes them: the cache is per machine.
 #include "compile/shader_cache.hpp"
 
-namespace mb {
+#include <unistd.h>
 
-ShaderCache::ShaderCache(std::filesystem::path dir) : dir_(std::move(dir)) {}
-std::filesystem::path ShaderCache::defaultDir() { return {}; }
-std::string ShaderCache::key(const std::vector<std::string>&) { return "0"; }
-ShaderCache::Lookup ShaderCache::load(const std::string&, CompiledArtifacts&) const { return Lookup::Miss; }
-bool ShaderCache::store(const std::string&, const CompiledArtifacts&) const { return false; }
-std::filesystem::path ShaderCache::entryPath(const std::string& key) const { return dir_ / key; }
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <thread>
+
+#include <xxhash.h>
+
+namespace mb {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr char kMagic[8] = {'M', 'B', 'C', 'A', 'C', 'H', 'E', '1'};
+constexpr size_t kHeaderSize = 32;
+
+uint64_t formatTag() { return XXH3_64bits(ShaderCache::kFormatVersion, std::strlen(ShaderCache::kFormatVersion)); }
+
+void putU64(std::string& out, uint64_t v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); }
+void putBytes(std::string& out, const std::string& bytes) {
+  putU64(out, bytes.size());
+  out += bytes;
+}
+
+// Reads the payload back; every length is bounds-checked, so a bad entry is reported, never
+// read past its end.
+class Reader {
+ public:
+  Reader(const std::string& bytes, size_t pos) : bytes_(bytes), pos_(pos) {}
+  bool u64(uint64_t& v) {
+    if (bytes_.size() - pos_ < sizeof v) return false;
+    std::memcpy(&v, bytes_.data() + pos_, sizeof v);
+    pos_ += sizeof v;
+    return true;
+  }
+  bool raw(void* dst, uint64_t size) {
+    if (bytes_.size() - pos_ < size) return false;
+    std::memcpy(dst, bytes_.data() + pos_, size);
+    pos_ += size;
+    return true;
+  }
+  bool str(std::string& s) {
+    uint64_t n = 0;
+    if (!u64(n) || bytes_.size() - pos_ < n) return false;
+    s.assign(bytes_.data() + pos_, n);
+    pos_ += n;
+    return true;
+  }
+  bool atEnd() const { return pos_ == bytes_.size(); }
+
+ private:
+  const std::string& bytes_;
+  size_t pos_;
+};
+
+std::string serialize(const CompiledArtifacts& a) {
+  std::string payload;
+  putU64(payload, a.spirv.size());
+  payload.append(reinterpret_cast<const char*>(a.spirv.data()), a.spirv.size() * sizeof(uint32_t));
+  putU64(payload, a.targets.size());
+  for (const auto& [name, text] : a.targets) {
+    putBytes(payload, name);
+    putBytes(payload, text);
+  }
+  putBytes(payload, a.reflection.dump());
+  std::string file(kMagic, sizeof kMagic);
+  putU64(file, formatTag());
+  putU64(file, payload.size());
+  putU64(file, XXH3_64bits(payload.data(), payload.size()));
+  return file + payload;
+}
+
+bool deserialize(const std::string& file, CompiledArtifacts& out) {
+  if (file.size() < kHeaderSize || std::memcmp(file.data(), kMagic, sizeof kMagic) != 0) return false;
+  Reader header(file, sizeof kMagic);
+  uint64_t tag = 0, size = 0, hash = 0;
+  header.u64(tag);
+  header.u64(size);
+  header.u64(hash);
+  if (tag != formatTag() || size != file.size() - kHeaderSize) return false;
+  if (XXH3_64bits(file.data() + kHeaderSize, size) != hash) return false;
+  Reader r(file, kHeaderSize);
+  CompiledArtifacts a;
+  uint64_t words = 0, targets = 0;
+  if (!r.u64(words) || words > size / sizeof(uint32_t)) return false;
+  a.spirv.resize(words);
+  if (!r.raw(a.spirv.data(), words * sizeof(uint32_t)) || !r.u64(targets)) return false;
+  for (uint64_t i = 0; i < targets; ++i) {
+    std::string name, text;
+    if (!r.str(name) || !r.str(text)) return false;
+    a.targets[name] = std::move(text);
+  }
+  std::string reflection;
+  if (!r.str(reflection) || !r.atEnd()) return false;
+  a.reflection = nlohmann::json::parse(reflection, nullptr, /*allow_exceptions=*/false);
+  if (a.reflection.is_discarded()) return false;
+  out = std::move(a);
+  return true;
+}
+
+// A temporary name no other writer uses: two processes differ by pid, two threads of one
+// process by thread id, two writes of one thread by the counter.
+fs::path uniqueTempPath(const fs::path& entry) {
+  static std::atomic<uint64_t> counter{0};
+  std::ostringstream name;
+  name << entry.filename().string() << ".tmp." << ::getpid() << "."
+       << std::hash<std::thread::id>{}(std::this_thread::get_id()) << "." << counter++;
+  return entry.parent_path() / name.str();
+}
+
+}  // namespace
+
+ShaderCache::ShaderCache(fs::path dir) : dir_(std::move(dir)) {}
+
+fs::path ShaderCache::defaultDir() {
+  if (const char* d = std::getenv("MATBRICKS_CACHE_DIR"); d && *d) return d;
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return fs::path(x) / "matbricks";
+  if (const char* h = std::getenv("HOME"); h && *h) return fs::path(h) / ".cache" / "matbricks";
+  return {};  // nowhere to put it: uncached
+}
+
+std::string ShaderCache::key(const std::vector<std::string>& parts) {
+  XXH3_state_t* state = XXH3_createState();
+  XXH3_128bits_reset(state);
+  for (const auto& p : parts) {
+    // Length-prefixed, so that ("ab","c") and ("a","bc") differ.
+    const uint64_t n = p.size();
+    XXH3_128bits_update(state, &n, sizeof n);
+    XXH3_128bits_update(state, p.data(), p.size());
+  }
+  const XXH128_hash_t h = XXH3_128bits_digest(state);
+  XXH3_freeState(state);
+  char buf[33];
+  std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(h.high64),
+                static_cast<unsigned long long>(h.low64));
+  return buf;
+}
+
+fs::path ShaderCache::entryPath(const std::string& key) const { return dir_ / key.substr(0, 2) / (key + ".mbc"); }
+
+ShaderCache::Lookup ShaderCache::load(const std::string& key, CompiledArtifacts& out) const {
+  if (!enabled()) return Lookup::Miss;
+  const fs::path path = entryPath(key);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Lookup::Miss;
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return Lookup::Miss;
+  if (deserialize(bytes, out)) return Lookup::Hit;
+  // Corrupt: delete it so the rebuilt entry replaces it. A concurrent writer renames a whole
+  // entry over the path; at worst this removes that fresh entry and a later run rebuilds it.
+  std::error_code ec;
+  fs::remove(path, ec);
+  return Lookup::Corrupt;
+}
+
+bool ShaderCache::store(const std::string& key, const CompiledArtifacts& artifacts) const {
+  if (!enabled()) return false;
+  const fs::path path = entryPath(key);
+  std::error_code ec;
+  fs::create_directories(path.parent_path(), ec);
+  if (ec) return false;
+  const fs::path tmp = uniqueTempPath(path);
+  const std::string bytes = serialize(artifacts);
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) {
+      fs::remove(tmp, ec);
+      return false;
+    }
+  }
+  // rename(2) replaces the target atomically: a reader opens the old entry, the new one, or
+  // none, never a partial file. Two writers of one key write identical bytes.
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    return false;
+  }
+  return true;
+}
 
 }  // namespace mb

@@ -36,6 +36,8 @@ class ShaderCache {
 
   bool enabled() const { return !dir_.empty(); }
   const std::filesystem::path& dir() const { return dir_; }
+  // Version of the entry format and of the key's recipe; part of every key (build.cpp).
+  static constexpr const char* kFormatVersion = "matbricks-cache-1";
   // 32 hex digits (XXH3-128) over the given parts, each length-prefixed.
   static std::string key(const std::vector<std::string>& parts);
 
@@ -45,7 +47,7 @@ class ShaderCache {
   // Thread-safe; failures to write (read-only dir, full disk) are not errors: the build goes
   // on uncached, and the return value says so.
   bool store(const std::string& key, const CompiledArtifacts& artifacts) const;
-  // Path of an entry (for tests that corrupt one on purpose).
+  // Path of an entry (for tests that corrupt one on purpose): <dir>/<key[0:2]>/<key>.mbc.
   std::filesystem::path entryPath(const std::string& key) const;
 
  private:

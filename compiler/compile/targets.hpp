@@ -36,6 +36,10 @@ nlohmann::json reflectSpirv(const std::vector<uint32_t>& spirv);
 std::string crossCompile(const std::vector<uint32_t>& spirv, const std::string& target,
                          const std::string& displayName);
 
+// The options `target` is cross-compiled with (version, dialect, bindings), as one line, so
+// that the cache key changes when they do.
+std::string targetOptions(const std::string& target);
+
 // Versions of SPIRV-Cross (for the cache key and `--version`).
 std::string spirvCrossVersion();
 

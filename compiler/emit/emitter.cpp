@@ -7,6 +7,7 @@
 #include "emit/fp16_rewrite.hpp"
 #include "emit/glsl_writer.hpp"
 #include "emit/probe_scene.hpp"
+#include "permute/axes.hpp"
 
 namespace mb {
 namespace {
@@ -97,14 +98,24 @@ std::string readInput(const ProbeInput& in) {
 // The compute entry point that validation and benchmarks run (harness kernel contract).
 // The buffers are fp32 at every precision: at fp16 inputs are converted to half after the
 // load and the result back to float before the store.
+// Engine mode adds `params`: the non-constant material parameters, read from one std140
+// uniform block (fp32 at every precision, like the record buffers) instead of the record.
 void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::vector<std::string>& body,
-                const std::vector<std::string>& globals, ShaderPrecision p) {
+                const std::vector<std::string>& globals, ShaderPrecision p,
+                const std::vector<ProbeInput>& params = {}) {
   w.line("#ifndef MB_NO_PROBE");
   w.line("// Probe: record i holds the inputs below; the result goes to mbOut.");
   w.line("layout(local_size_x = 64) in;");
   w.line("layout(std430, set = 0, binding = 0) readonly buffer MbIn { float mbIn[]; };");
   w.line("layout(std430, set = 0, binding = 1) writeonly buffer MbOut { float mbOut[]; };");
   w.line("layout(push_constant) uniform MbPush { uint count; } mbPush;");
+  if (!params.empty()) {
+    // std140 (GLSL 4.50 spec 7.6.2.2): the C++ header's struct mirrors it, checked against
+    // the SPIRV-Cross reflection of the compiled module (docs/package.md).
+    w.line("layout(std140, set = 0, binding = 2) uniform MaterialParamsBlock {");
+    for (const auto& prm : params) w.line(std::string("    ") + glslType(prm.type) + " " + prm.name + ";");
+    w.line("} mbParams;");
+  }
   for (const auto& g : globals) w.line(atPrecision(g, p));
   w.line("void main() {");
   w.line("    uint i = gl_GlobalInvocationID.x;");
@@ -114,6 +125,11 @@ void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::vector<std:
     std::string type = atPrecision(glslType(in.type), p);
     std::string value = p == ShaderPrecision::Fp16 ? type + "(" + readInput(in) + ")" : readInput(in);
     w.line("    " + type + " p_" + in.name + " = " + value + ";");
+  }
+  for (const auto& prm : params) {
+    std::string type = atPrecision(glslType(prm.type), p);
+    std::string value = "mbParams." + prm.name;
+    w.line("    " + type + " p_" + prm.name + " = " + (p == ShaderPrecision::Fp16 ? type + "(" + value + ")" : value) + ";");
   }
   for (const auto& s : body) w.line("    " + atPrecision(s, p));
   w.line("    uint o = i * " + std::to_string(layout.outStride) + "u;");
@@ -133,12 +149,6 @@ void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::vector<std:
   }
   w.line("}");
   w.line("#endif  // MB_NO_PROBE");
-}
-
-std::string quotedNames(const std::vector<std::string>& names) {
-  std::string s;
-  for (const auto& n : names) s += (s.empty() ? "'" : ", '") + n + "'";
-  return s.empty() ? "(none)" : s;
 }
 
 std::string literal(ValueType type, const std::vector<double>& v) {
@@ -285,18 +295,9 @@ std::string upper(std::string s) {
 
 // A permutation must ask only for what its model shades (docs/models.md).
 void checkPermutation(const ShadingModel& model, const Permutation& perm) {
-  std::vector<Diagnostic> errors;
-  SourceLocation at{perm.material->sourceFile, 0, 0};
-  for (const auto& t : perm.lights)
-    if (std::find(model.lights.begin(), model.lights.end(), t) == model.lights.end())
-      errors.push_back({Severity::Error, "E-PERMUTATION-INVALID", at,
-                        "model '" + model.name + "' does not shade '" + t + "' lights (it shades " +
-                            quotedNames(model.lights) + ")"});
-  if (std::find(model.environments.begin(), model.environments.end(), perm.environment) == model.environments.end())
-    errors.push_back({Severity::Error, "E-PERMUTATION-INVALID", at,
-                      "model '" + model.name + "' has no environment mode '" + perm.environment +
-                          "' (it has " + quotedNames(model.environments) + ")"});
-  if (!errors.empty()) throw DiagnosticError(errors);
+  // The validity rules live in permute/axes.cpp (docs/scenes.md "Axes and validity").
+  if (auto reason = invalidReason(model, perm))
+    throw DiagnosticError({{Severity::Error, "E-PERMUTATION-INVALID", {perm.material->sourceFile, 0, 0}, *reason}});
 }
 
 void writeDefines(GlslWriter& w, const Permutation& perm) {
@@ -380,7 +381,7 @@ void writeApi(GlslWriter& w, const Permutation& perm, ShaderPrecision precision)
 }
 
 void writePermutationProbe(GlslWriter& w, const ProbeLayout& layout, const Permutation& perm,
-                           const ProbeScene& scene, ShaderPrecision p) {
+                           const ProbeScene& scene, ShaderPrecision p, const std::vector<ProbeInput>& params) {
   std::vector<std::string> body;
   for (const auto& s : probeSceneFrame(scene)) body.push_back(s);
   std::string args;
@@ -390,13 +391,33 @@ void writePermutationProbe(GlslWriter& w, const ProbeLayout& layout, const Permu
   body.push_back("ShadingPixel px = preparePixel(m, f);");
   body.push_back("vec3 r = emittedRadiance(px);");
   for (const auto& s : probeSceneShading(scene)) body.push_back(s);
-  writeProbe(w, layout, body, probeSceneGlobals(scene), p);
+  writeProbe(w, layout, body, probeSceneGlobals(scene), p, params);
+}
+
+// Engine records: the probe's inputs without the non-constant material parameters, which move
+// to the uniform block (returned, offsets in floats as in the probe record). The output is the
+// radiance only: an engine has no use for the fed-back MaterialInputs.
+std::vector<ProbeInput> splitEngineLayout(ProbeLayout& layout, const MaterialDesc& mat) {
+  std::vector<ProbeInput> params;
+  ProbeLayout engine;
+  for (const auto& in : layout.inputs) {
+    bool isParam = std::any_of(mat.params.begin(), mat.params.end(),
+                               [&](const MaterialParam& p) { return !p.constant && p.name == in.name; });
+    if (isParam)
+      params.push_back(in);
+    else
+      addInput(engine, in.name, in.type);
+  }
+  engine.output = layout.output;
+  engine.outStride = static_cast<uint32_t>(componentCount(layout.output));
+  layout = engine;
+  return params;
 }
 
 }  // namespace
 
 EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput,
-                             EmitMode /*mode*/) {
+                             EmitMode mode) {
   const MaterialDesc& mat = *perm.material;
   const ShaderPrecision precision = precisionOf(perm);
   const ShadingModel* model = lib.findModel(mat.model);
@@ -406,6 +427,8 @@ EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm,
   out.fileName = out.key + ".glsl";
   const ProbeScene scene = probeSceneOf(perm, illuminanceInput);
   out.layout = materialProbeLayout(perm, illuminanceInput);
+  std::vector<ProbeInput> params;
+  if (mode == EmitMode::Engine) params = splitEngineLayout(out.layout, mat);
 
   GlslWriter w(out.fileName);
   writeHeader(w, "permutation " + out.key, precision);
@@ -433,7 +456,7 @@ EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm,
   if (mat.surface.present())
     w.include(mat.surface.where.file, atPrecision(mat.surface.glsl, precision), std::max(1, mat.surface.where.line));
   writeApi(w, perm, precision);
-  writePermutationProbe(w, out.layout, perm, scene, precision);
+  writePermutationProbe(w, out.layout, perm, scene, precision, params);
   out.glsl = w.str();
   return out;
 }

@@ -417,7 +417,7 @@ class LibraryLoader {
     if (!doc) return;
     JsonFields f(*doc, sink_);
     if (!f.object("", {"name", "description", "skeleton", "requires", "lights", "environments", "roles", "inputs"},
-                  {"features", "parts"}, "shading model '" + name + "'"))
+                  {"features", "parts", "quality"}, "shading model '" + name + "'"))
       return;
     ShadingModel m;
     m.name = name;
@@ -436,7 +436,47 @@ class LibraryLoader {
     if (f.find("/features")) m.features = readFeatures(f);
     m.roles = readRoles(f, m);
     m.inputs = readModelInputs(f, m);
+    if (f.find("/quality")) m.quality = readQuality(f, m);
     data_.models.push_back(std::move(m));
+  }
+
+  // "quality": {"low": {role: brick}, "medium": {...}}. "high" is the default bindings and is
+  // not written (docs/scenes.md "Quality"); the level names are permute/axes.hpp's
+  // allQualityLevels() minus "high" (the library does not depend on permute).
+  std::map<std::string, std::map<std::string, std::string>> readQuality(JsonFields& f, const ShadingModel& m) {
+    static const std::vector<std::string> levels{"low", "medium"};
+    std::map<std::string, std::map<std::string, std::string>> out;
+    if (!f.object("/quality", {}, levels, "quality table")) return out;
+    std::vector<std::string> roleNames;
+    for (const auto& r : m.roles) roleNames.push_back(r.role);
+    for (const auto& level : levels) {
+      std::string lptr = JsonFields::member("/quality", level);
+      if (!f.find(lptr) || !f.isObject(lptr)) continue;
+      auto& bindings = out[level];
+      for (const auto& item : f.find(lptr)->items()) {
+        std::string ptr = JsonFields::member(lptr, item.key());
+        auto id = f.string(ptr);
+        const ModelRole* role = m.findRole(item.key());
+        if (!role) {
+          f.error("E-UNKNOWN-ROLE", f.keyAt(ptr),
+                  "quality '" + level + "' binds unknown role '" + item.key() + "': model '" + m.name + "' has " +
+                      quotedList(roleNames),
+                  didYouMean(item.key(), roleNames));
+          continue;
+        }
+        if (!id) continue;
+        const Brick* b = findLoadedBrick(*id);
+        if (!b || b->slot != role->slot) {
+          f.error("E-UNKNOWN-BRICK", f.valueAt(ptr),
+                  "quality '" + level + "' binds '" + *id + "' to role '" + role->role + "', but it is not a brick of slot '" +
+                      role->slot + "'",
+                  didYouMean(*id, loadedBricksOf(role->slot)));
+          continue;
+        }
+        bindings[role->role] = *id;
+      }
+    }
+    return out;
   }
 
   // A string array whose entries must come from `allowed`, each once.

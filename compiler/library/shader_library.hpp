@@ -110,6 +110,10 @@ struct ShadingModel {
   std::vector<ModelFeature> features;
   std::vector<ModelRole> roles;
   std::vector<ModelInput> inputs;          // core inputs, then feature inputs, as listed
+  // Manifest "quality": level ("low", "medium") -> role -> brick that replaces the role's
+  // default at that level (docs/scenes.md "Quality"). "high" is the default bindings; a level
+  // absent here is not defined by the model (permute/axes.hpp invalidReason).
+  std::map<std::string, std::map<std::string, std::string>> quality;
 
   const ModelRole* findRole(const std::string& role) const;
   const ModelFeature* findFeature(const std::string& feature) const;

@@ -1,19 +1,108 @@
-// INTERIM (replaced by the validity rules).
+// The permutation axes and their validity rules: the only place that says which combinations
+// go together (docs/scenes.md "Axes and validity"). The emitter (checkPermutation), the scene
+// planner and the --explain counts all ask invalidReason().
 #include "permute/axes.hpp"
 
+#include <algorithm>
+
+#include "core/json_fields.hpp"
+
 namespace mb {
+
+namespace {
+
+bool contains(const std::vector<std::string>& v, const std::string& x) {
+  return std::find(v.begin(), v.end(), x) != v.end();
+}
+
+std::vector<std::string> featureNames(const ShadingModel& model) {
+  std::vector<std::string> out;
+  for (const auto& f : model.features) out.push_back(f.name);
+  return out;
+}
+
+// Levels the model defines: "high" (its default bindings) always, others by its manifest.
+bool definesQuality(const ShadingModel& model, const std::string& quality) {
+  return quality == "high" || model.quality.count(quality) > 0;
+}
+
+}  // namespace
 
 const std::vector<std::string>& allPrecisions() {
   static const std::vector<std::string> v{"fp32", "fp16"};
   return v;
 }
+
 const std::vector<std::string>& allQualityLevels() {
   static const std::vector<std::string> v{"low", "medium", "high"};
   return v;
 }
-std::optional<std::string> invalidReason(const ShadingModel&, const AxisPoint&) { return std::nullopt; }
-std::optional<std::string> invalidReason(const ShadingModel&, const Permutation&) { return std::nullopt; }
-std::vector<AxisSize> axisSizes(const ShadingModel&) { return {}; }
-size_t validCombinationCount(const ShadingModel&) { return 0; }
+
+std::optional<std::string> invalidReason(const ShadingModel& model, const AxisPoint& point) {
+  const std::string m = "model '" + model.name + "'";
+  for (const auto& f : point.features)
+    if (!model.findFeature(f))
+      return m + " has no feature '" + f + "' (it has " + quotedList(featureNames(model)) + ")";
+  for (const auto& t : point.lights)
+    if (!contains(model.lights, t))
+      return m + " does not shade '" + t + "' lights (it shades " + quotedList(model.lights) + ")";
+  if (!contains(model.environments, point.environment))
+    return m + " has no environment mode '" + point.environment + "' (it has " + quotedList(model.environments) + ")";
+  if (!contains(allPrecisions(), point.precision))
+    return "unknown precision '" + point.precision + "' (expected " + quotedList(allPrecisions()) + ")";
+  if (!contains(allQualityLevels(), point.quality))
+    return "unknown quality level '" + point.quality + "' (expected " + quotedList(allQualityLevels()) + ")";
+  if (!definesQuality(model, point.quality))
+    return m + " defines no quality level '" + point.quality + "' (its manifest's \"quality\" table has no such level)";
+  return std::nullopt;
+}
+
+std::optional<std::string> invalidReason(const ShadingModel& model, const Permutation& perm) {
+  AxisPoint p;
+  p.features = perm.material->features;
+  // Folded features were features of the material: they must be the model's too.
+  p.features.insert(p.features.end(), perm.folded.begin(), perm.folded.end());
+  p.lights = perm.lights;
+  p.environment = perm.environment;
+  p.precision = perm.precision;
+  p.quality = perm.quality;
+  return invalidReason(model, p);
+}
+
+std::vector<AxisSize> axisSizes(const ShadingModel& model) {
+  return {{"features", size_t{1} << model.features.size()},
+          {"lights", size_t{1} << allLightTypes().size()},
+          {"environment", allEnvironmentModes().size()},
+          {"precision", allPrecisions().size()},
+          {"quality", allQualityLevels().size()}};
+}
+
+// Every rule of invalidReason() looks at one axis at a time, so the valid points are the
+// product of each axis's valid values: a feature or light subset is valid exactly when all
+// its members are. Each value is still judged by invalidReason() itself (against a valid
+// base point), so this count cannot drift from the rules. tests/test_scene_axes.cpp checks it
+// against a brute-force enumeration of the whole product.
+size_t validCombinationCount(const ShadingModel& model) {
+  AxisPoint base;
+  base.lights = {};
+  base.environment = model.environments.empty() ? "none" : model.environments.front();
+  auto validWith = [&](auto&& set) {
+    AxisPoint p = base;
+    set(p);
+    return !invalidReason(model, p).has_value();
+  };
+  size_t features = 0;
+  for (const auto& f : model.features) features += validWith([&](AxisPoint& p) { p.features = {f.name}; });
+  size_t lights = 0;
+  for (const auto& t : allLightTypes()) lights += validWith([&](AxisPoint& p) { p.lights = {t}; });
+  size_t envs = 0;
+  for (const auto& e : allEnvironmentModes()) envs += validWith([&](AxisPoint& p) { p.environment = e; });
+  size_t precisions = 0;
+  for (const auto& x : allPrecisions()) precisions += validWith([&](AxisPoint& p) { p.precision = x; });
+  size_t qualities = 0;
+  for (const auto& q : allQualityLevels()) qualities += validWith([&](AxisPoint& p) { p.quality = q; });
+  if (!validWith([](AxisPoint&) {})) return 0;
+  return (size_t{1} << features) * (size_t{1} << lights) * envs * precisions * qualities;
+}
 
 }  // namespace mb

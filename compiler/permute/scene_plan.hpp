@@ -16,8 +16,10 @@ namespace mb {
 struct MaterialPlanNote {
   std::string material;
   std::vector<std::string> folded;                              // features folded away
+  std::vector<std::string> absent;  // model features the material never enabled (nothing to fold)
   std::vector<std::pair<std::string, std::string>> keptReasons;  // feature -> why it stays
-  std::vector<std::pair<std::string, std::string>> qualityBricks;  // role -> brick changed by quality
+  // "<level>:<role>" -> the brick that quality level bound instead of the default
+  std::vector<std::pair<std::string, std::string>> qualityBricks;
 };
 
 struct ScenePlan {

@@ -31,6 +31,8 @@ MaterialDesc foldFeatures(const MaterialDesc& material, const std::vector<std::s
 // The feature-complete ("uber") form used to check pruning: every feature of the model on.
 // Inputs of features the material lacks (or folded) become constants at `use`'s value, or
 // the input's neutral value, or its default; the other inputs keep the material's form.
+// Pass the plan's specialized material (Permutation::material: folded, quality applied), not
+// the loaded one: then a folded feature counts as lacking, and a kept one keeps its input.
 MaterialDesc featureComplete(const MaterialDesc& material, const MaterialUse& use, const ShaderLibrary& lib);
 
 }  // namespace mb

@@ -1,55 +1,44 @@
-// INTERIM (replaced by the engine-ready package): the previous layout.
+// write: the engine-ready package (docs/package.md): file names, deduplication by SPIR-V hash,
+// and the parts of package_parts.hpp. Every output is a pure function of the inputs (no time,
+// no host paths beyond those given, std::map-sorted JSON keys), so packages are byte-identical
+// across runs and job counts.
 #include "write/package_contents.hpp"
 
-#include <nlohmann/json.hpp>
+#include <set>
 
-#include "compile/glsl_compiler.hpp"
-#include "emit/emitter.hpp"
+#include "compile/targets.hpp"
+#include "write/package_parts.hpp"
 
 namespace mb {
-namespace {
-
-nlohmann::json paramJson(const MaterialParam& p) {
-  nlohmann::json j{{"name", p.name}, {"type", toString(p.type)}, {"constant", p.constant}, {"user", p.user}};
-  j[p.constant ? "value" : "default"] = p.value;
-  if (!p.constant) j["range"] = {p.range.lo, p.range.hi};
-  return j;
-}
-
-}  // namespace
 
 void addPackageFiles(PackageWriter& pkg, const PackageInputs& in) {
-  nlohmann::json manifest{{"generator", "matbricks " MB_VERSION},
-                          {"toolchain", toolchainVersion()},
-                          {"permutations", nlohmann::json::array()}};
+  std::vector<PackagedPermutation> perms;
+  std::set<std::string> written;  // SPIR-V hashes whose files are already added
   for (size_t i = 0; i < in.built->size(); ++i) {
-    const BuiltPermutation& b = (*in.built)[i];
-    const Permutation& perm = in.plan->required[i];
-    pkg.addFile(b.shader.key + ".glsl", b.shader.glsl);
-    pkg.addFile(b.shader.key + ".spv", b.artifacts.spirv);
-    const MaterialDesc& m = *perm.material;
-    nlohmann::json entry{{"key", b.shader.key},
-                         {"material", m.name},
-                         {"source", m.sourceFile},
-                         {"model", m.model},
-                         {"description", m.description},
-                         {"features", m.features},
-                         {"lights", perm.lights},
-                         {"environment", perm.environment},
-                         {"precision", perm.precision},
-                         {"glsl", b.shader.key + ".glsl"},
-                         {"spirv", b.shader.key + ".spv"},
-                         {"spirv_hash_xxh64", b.spirvHash},
-                         {"spirv_instructions", spirvInstructionCount(b.artifacts.spirv)},
-                         {"bricks", nlohmann::json::object()},
-                         {"bricks_included", b.shader.bricks},
-                         {"parameters", nlohmann::json::array()},
-                         {"probe_inputs", b.shader.layout.columns()}};
-    for (const auto& [role, id] : boundRoles(*in.lib, perm)) entry["bricks"][role] = id;
-    for (const auto& p : m.params) entry["parameters"].push_back(paramJson(p));
-    manifest["permutations"].push_back(entry);
+    PackagedPermutation p;
+    p.perm = &in.plan->required[i];
+    p.built = &(*in.built)[i];
+    const std::string& hash = p.built->spirvHash;
+    const bool fresh = written.insert(hash).second;
+    for (const auto& target : allTargets()) {
+      const bool isSpirv = target == "spirv";
+      auto text = p.built->artifacts.targets.find(target);
+      if (!isSpirv && text == p.built->artifacts.targets.end()) continue;
+      std::string path = target + "/" + hash + targetExtension(target);
+      p.files[target] = path;
+      // Identical SPIR-V gives identical cross-compiled text: one file serves every permutation.
+      if (!fresh) continue;
+      if (isSpirv)
+        pkg.addFile(path, p.built->artifacts.spirv);
+      else
+        pkg.addFile(path, text->second);
+    }
+    p.include = "include/" + p.built->shader.key + ".glsl";
+    pkg.addFile(p.include, engineInclude(p));
+    perms.push_back(std::move(p));
   }
-  pkg.addFile("manifest.json", manifest.dump(2) + "\n");
+  pkg.addFile("manifest.json", packageManifest(in, perms).dump(2) + "\n");
+  pkg.addFile(in.headerName, packageHeader(in, perms));
 }
 
 }  // namespace mb

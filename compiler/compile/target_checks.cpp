@@ -1,0 +1,103 @@
+#include "compile/target_checks.hpp"
+
+#include <sstream>
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+#include <spirv-tools/libspirv.hpp>
+
+#include "compile/glsl_compiler.hpp"
+
+namespace mb {
+namespace {
+
+// The first "ERROR: ..." line of a glslang info log (the rest repeats or summarizes it).
+std::string firstError(const std::string& log) {
+  std::istringstream in(log);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("ERROR:", 0) == 0) return line;
+  return log.empty() ? "glslang failed without a message" : log.substr(0, log.find('\n'));
+}
+
+std::string validate(const std::vector<uint32_t>& spirv, spv_target_env env) {
+  spvtools::SpirvTools tools(env);
+  std::string first;
+  tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t&, const char* msg) {
+    if (first.empty()) first = msg;
+  });
+  return tools.Validate(spirv) ? "" : "spirv-val: " + (first.empty() ? "invalid module" : first);
+}
+
+struct Reparse {
+  glslang::EShSource source;
+  glslang::EShClient client;
+  glslang::EShTargetClientVersion clientVersion;
+  glslang::EShTargetLanguageVersion spirvVersion;
+  int defaultVersion;
+  EShMessages messages;
+  spv_target_env validateEnv;
+};
+
+std::string reparse(const std::string& text, const Reparse& r) {
+  ensureGlslangInitialized();
+  glslang::TShader shader(EShLangCompute);
+  const char* str = text.c_str();
+  shader.setStrings(&str, 1);
+  shader.setEntryPoint("main");
+  shader.setEnvInput(r.source, EShLangCompute, r.client, 100);
+  shader.setEnvClient(r.client, r.clientVersion);
+  shader.setEnvTarget(glslang::EShTargetSpv, r.spirvVersion);
+  // The #version line of the source decides the profile; defaultVersion only applies without one.
+  if (!shader.parse(GetDefaultResources(), r.defaultVersion, false, r.messages))
+    return "glslang: " + firstError(shader.getInfoLog());
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(r.messages)) return "glslang link: " + firstError(program.getInfoLog());
+  // Without the entry point glslang's HLSL front end only warns, and makes an empty main.
+  if (std::string(program.getInfoLog()).find("Entry point not found") != std::string::npos)
+    return "glslang link: no entry point 'main'";
+  std::vector<uint32_t> spirv;
+  spv::SpvBuildLogger logger;
+  glslang::SpvOptions options;
+  options.disableOptimizer = true;
+  glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), spirv, &logger, &options);
+  return validate(spirv, r.validateEnv);
+}
+
+}  // namespace
+
+std::string checkGlsl(const std::string& source, bool es) {
+  // The #version line decides how glslang parses: check that it is the target's.
+  const std::string version = es ? "#version 310 es\n" : "#version 450\n";
+  if (source.rfind(version, 0) != 0) return "expected the source to start with '" + version.substr(0, version.size() - 1) + "'";
+  // Plain (non-Vulkan) GLSL: compiled as for OpenGL's ARB_gl_spirv, the closest glslang gets
+  // to what a GL/GLES driver's compiler accepts.
+  return reparse(source, {glslang::EShSourceGlsl, glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450,
+                          glslang::EShTargetSpv_1_0, es ? 310 : 450, EShMsgSpvRules, SPV_ENV_OPENGL_4_5});
+}
+
+std::string checkHlsl(const std::string& source) {
+  const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | EShMsgReadHlsl);
+  return reparse(source, {glslang::EShSourceHlsl, glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1,
+                          glslang::EShTargetSpv_1_3, 100, messages, SPV_ENV_VULKAN_1_1});
+}
+
+std::string checkMsl(const std::string& source, const SpvcModule& module) {
+  spvc_compiler c = module.compiler();
+  const char* entry = spvc_compiler_get_cleansed_entry_point_name(c, "main", SpvExecutionModelGLCompute);
+  const std::string kernel = std::string("kernel void ") + (entry ? entry : "main0") + "(";
+  if (source.find(kernel) == std::string::npos) return "MSL: no '" + kernel + "' in the output";
+  for (spvc_resource_type type : {SPVC_RESOURCE_TYPE_STORAGE_BUFFER, SPVC_RESOURCE_TYPE_UNIFORM_BUFFER,
+                                  SPVC_RESOURCE_TYPE_PUSH_CONSTANT})
+    for (const auto& r : module.resources(type)) {
+      const unsigned index = spvc_compiler_msl_get_automatic_resource_binding(c, r.id);
+      const std::string attr = "[[buffer(" + std::to_string(index) + ")]]";
+      if (index == ~0u || source.find(attr) == std::string::npos)
+        return std::string("MSL: buffer '") + spvc_compiler_get_name(c, r.id) + "' has no " + attr + " argument";
+    }
+  return "";
+}
+
+}  // namespace mb

@@ -1,0 +1,194 @@
+// write: the package's C++17 header (docs/package.md "C++ header"). The parameter structs are
+// declared from the material's parameter types by std140's rules (GLSL 4.50 spec 7.6.2.2:
+// float 4-aligned, vec2 8, vec3/vec4 16, struct size rounded to 16), and every offset and the
+// size are static_asserted against the SPIRV-Cross reflection of the compiled module, so a
+// disagreement between our C++ layout and the SPIR-V is a compile error in the engine.
+#include <cctype>
+#include <map>
+#include <sstream>
+
+#include "core/diagnostics.hpp"
+#include "write/package_parts.hpp"
+
+namespace mb {
+namespace {
+
+std::string identifier(const std::string& name) {
+  std::string id;
+  for (char c : name) id += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  if (id.empty() || std::isdigit(static_cast<unsigned char>(id[0]))) id = "m_" + id;
+  return id;
+}
+
+std::string quoted(const std::string& s) {
+  std::string q = "\"";
+  for (char c : s) q += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+  return q + "\"";
+}
+
+std::string memberDecl(const std::string& name, ValueType type) {
+  switch (type) {
+    case ValueType::Float: return "float " + name + ";";
+    case ValueType::Vec2: return "alignas(8) float " + name + "[2];";
+    default: return "alignas(16) float " + name + "[3];";
+  }
+}
+
+[[noreturn]] void layoutMismatch(const PackagedPermutation& p, const std::string& what) {
+  throw DiagnosticError({{Severity::Error, "E-INTERNAL", {p.built->shader.key, 0, 0},
+                          "the compiled parameter block disagrees with the material: " + what, ""}});
+}
+
+// One distinct parameter block: its C++ struct text (without the name) and the asserts.
+struct Block {
+  std::string name;
+  std::string members;  // declarations, one per line
+  std::string asserts;  // static_asserts, with NAME standing for the struct name
+  uint64_t size = 0;    // SPIRV-Cross declared size
+};
+
+Block blockOf(const PackagedPermutation& p, const nlohmann::json& reflected) {
+  Block b;
+  b.size = reflected.at("size").get<uint64_t>();
+  const nlohmann::json& members = reflected.at("members");
+  size_t k = 0;
+  for (const auto& prm : p.perm->material->params) {
+    if (prm.constant) continue;
+    if (k >= members.size() || members[k].at("name") != prm.name)
+      layoutMismatch(p, "member " + std::to_string(k) + " is not '" + prm.name + "'");
+    b.members += "  " + memberDecl(prm.name, prm.type) + "\n";
+    b.asserts += "static_assert(offsetof(NAME, " + prm.name + ") == " +
+                 std::to_string(members[k].at("offset").get<uint64_t>()) + ", \"std140 offset of " + prm.name +
+                 " (SPIRV-Cross)\");\n";
+    ++k;
+  }
+  if (k != members.size()) layoutMismatch(p, "the block has " + std::to_string(members.size()) + " members");
+  const uint64_t rounded = (b.size + 15) / 16 * 16;
+  b.asserts += "static_assert(sizeof(NAME) == " + std::to_string(rounded) + ", \"std140 size " +
+               std::to_string(b.size) + " rounded to 16 (SPIRV-Cross)\");\n";
+  return b;
+}
+
+std::string replaceName(std::string text, const std::string& name) {
+  for (size_t at = text.find("NAME"); at != std::string::npos; at = text.find("NAME", at + name.size()))
+    text.replace(at, 4, name);
+  return text;
+}
+
+const char* kPreamble = R"(#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+)";
+
+const char* kTypes = R"(// One input of a shading record: `offset` and `components` in floats (docs/package.md "Kernel ABI").
+struct RecordInput {
+  std::string_view name;
+  std::uint32_t offset;
+  std::uint32_t components;
+};
+
+struct Permutation {
+  std::string_view key;
+  std::string_view material;
+  std::string_view spirv;         // relative to the package directory
+  std::string_view include;       // the GLSL include, relative to the package directory
+  std::string_view paramsStruct;  // the parameter struct's name, empty when there is no block
+  std::size_t paramsSize;         // bytes of the std140 block at set 0, binding 2 (0: none)
+  std::uint32_t recordStride;     // floats per shading record (binding 0)
+  std::uint32_t resultStride;     // floats per result (binding 1)
+  const RecordInput* inputs;
+  std::size_t inputCount;
+};
+
+)";
+
+const char* kLookups = R"(
+inline constexpr std::size_t kPermutationCount = sizeof(kPermutations) / sizeof(kPermutations[0]);
+
+// The permutation of `key`, or nullptr: static_assert(findPermutation("...")) makes a missing
+// permutation a build error, never a fallback.
+constexpr const Permutation* findPermutation(std::string_view key) {
+  for (const Permutation& p : kPermutations)
+    if (p.key == key) return &p;
+  return nullptr;
+}
+
+// The same as a bool, for static_assert(hasPermutation("...")).
+constexpr bool hasPermutation(std::string_view key) { return findPermutation(key) != nullptr; }
+
+// The float offset of a record input, or ~0u when the permutation's records lack it.
+constexpr std::uint32_t recordOffset(const Permutation& p, std::string_view input) {
+  for (std::size_t i = 0; i < p.inputCount; ++i)
+    if (p.inputs[i].name == input) return p.inputs[i].offset;
+  return ~0u;
+}
+)";
+
+}  // namespace
+
+const nlohmann::json* materialParamsBlock(const nlohmann::json& reflection) {
+  if (!reflection.is_object() || !reflection.contains("uniform_buffers")) return nullptr;
+  for (const auto& u : reflection["uniform_buffers"])
+    if (u.value("set", -1) == 0 && u.value("binding", -1) == 2) return &u;
+  return nullptr;
+}
+
+std::string packageHeader(const PackageInputs& in, const std::vector<PackagedPermutation>& perms) {
+  std::ostringstream structs, tables;
+  std::map<std::string, std::string> byLayout;  // members + asserts -> struct name
+  std::map<std::string, std::string> declared;  // struct name -> layout, to detect clashes
+  std::vector<std::string> structOf;            // per permutation
+  for (size_t i = 0; i < perms.size(); ++i) {
+    const PackagedPermutation& p = perms[i];
+    const nlohmann::json* reflected = materialParamsBlock(p.built->artifacts.reflection);
+    bool hasParams = false;
+    for (const auto& prm : p.perm->material->params) hasParams |= !prm.constant;
+    if (hasParams && !reflected) layoutMismatch(p, "no uniform block at set 0, binding 2 in the reflection");
+    if (!reflected) {
+      structOf.emplace_back();
+      continue;
+    }
+    Block b = blockOf(p, *reflected);
+    const std::string layout = b.members + b.asserts;
+    std::string name = identifier(p.perm->material->name) + "_Params";
+    for (int n = 2; declared.count(name) && declared[name] != layout; ++n)
+      name = identifier(p.perm->material->name) + "_Params_" + std::to_string(n);
+    if (!declared.count(name)) {
+      declared[name] = layout;
+      auto [first, fresh] = byLayout.emplace(layout, name);
+      if (fresh)
+        structs << "// std140 block MaterialParamsBlock (set 0, binding 2) of material '" << p.perm->material->name
+                << "'.\nstruct alignas(16) " << name << " {\n" << b.members << "};\n"
+                << replaceName(b.asserts, name) << "\n";
+      else
+        structs << "using " << name << " = " << first->second << ";  // the same block\n\n";
+    }
+    structOf.push_back(name);
+  }
+  for (size_t i = 0; i < perms.size(); ++i) {
+    tables << "inline constexpr RecordInput kInputs" << i << "[] = {";
+    for (const auto& r : perms[i].built->shader.layout.inputs)
+      tables << "{" << quoted(r.name) << ", " << r.offset << "u, " << componentCount(r.type) << "u}, ";
+    tables << "};\n";
+  }
+  tables << "\ninline constexpr Permutation kPermutations[] = {\n";
+  for (size_t i = 0; i < perms.size(); ++i) {
+    const PackagedPermutation& p = perms[i];
+    const nlohmann::json* reflected = materialParamsBlock(p.built->artifacts.reflection);
+    const ProbeLayout& l = p.built->shader.layout;
+    tables << "    {" << quoted(p.built->shader.key) << ", " << quoted(p.perm->material->name) << ", "
+           << quoted(p.files.at("spirv")) << ", " << quoted(p.include) << ", " << quoted(structOf[i]) << ", "
+           << (reflected ? reflected->at("size").get<uint64_t>() : 0) << "u, " << l.inStride << "u, " << l.outStride
+           << "u, kInputs" << i << ", " << l.inputs.size() << "u},\n";
+  }
+  tables << "};\n";
+  std::ostringstream out;
+  out << "// Generated by matbricks " MB_VERSION " (docs/package.md \"C++ header\"). Do not edit.\n" << kPreamble
+      << "namespace " << in.cppNamespace << " {\n\n"
+      << structs.str() << kTypes << tables.str() << kLookups << "\n}  // namespace " << in.cppNamespace << "\n";
+  return out.str();
+}
+
+}  // namespace mb

@@ -1,0 +1,69 @@
+#include "write/depfile.hpp"
+
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+namespace mb {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string absolutePath(const fs::path& p) { return fs::absolute(p).lexically_normal().generic_string(); }
+
+// Files named by `#line N "file"` directives: shader library files appear as
+// "shaderlib/<relative>" (ShaderLibrary::displayPath), user surface code as its own path.
+void addLineFiles(const ShaderLibrary& lib, const std::string& glsl, std::set<std::string>& out) {
+  std::istringstream in(glsl);
+  const std::string libPrefix = ShaderLibrary::displayPath("");
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("#line ", 0) != 0) continue;
+    size_t open = line.find('"'), close = line.rfind('"');
+    if (open == std::string::npos || close <= open) continue;
+    std::string file = line.substr(open + 1, close - open - 1);
+    if (file.rfind(libPrefix, 0) == 0)
+      out.insert(absolutePath(lib.root() / file.substr(libPrefix.size())));
+    else if (fs::exists(file))  // the generated file's own name is not a file on disk
+      out.insert(absolutePath(file));
+  }
+}
+
+std::string escaped(const std::string& path) {
+  std::string e;
+  for (char c : path) {
+    if (c == ' ' || c == '#') e += '\\';
+    if (c == '$') e += '$';
+    e += c;
+  }
+  return e;
+}
+
+}  // namespace
+
+std::vector<std::string> compileInputs(const ShaderLibrary& lib, const std::vector<Permutation>& perms,
+                                       const std::vector<BuiltPermutation>& built,
+                                       const std::vector<std::string>& extra) {
+  std::set<std::string> files;
+  for (const auto& e : extra)
+    if (!e.empty()) files.insert(absolutePath(e));
+  files.insert(absolutePath(lib.root() / "manifest.json"));
+  // ShaderLibrary::load reads every slot's slot.json.
+  for (const auto& entry : fs::directory_iterator(lib.root()))
+    if (entry.is_directory() && fs::exists(entry.path() / "slot.json")) files.insert(absolutePath(entry.path() / "slot.json"));
+  for (const auto& p : perms) {
+    const MaterialDesc& m = *p.material;
+    if (!m.sourceFile.empty() && fs::exists(m.sourceFile)) files.insert(absolutePath(m.sourceFile));
+    if (m.surface.present() && fs::exists(m.surface.where.file)) files.insert(absolutePath(m.surface.where.file));
+    files.insert(absolutePath(lib.root() / "models" / (m.model + ".json")));
+  }
+  for (const auto& b : built) addLineFiles(lib, b.shader.glsl, files);
+  return {files.begin(), files.end()};
+}
+
+std::string makeDepfile(const std::string& target, const std::vector<std::string>& deps) {
+  std::string out = escaped(target) + ":";
+  for (const auto& d : deps) out += " \\\n  " + escaped(d);
+  return out + "\n";
+}
+
+}  // namespace mb

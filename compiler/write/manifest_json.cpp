@@ -1,0 +1,100 @@
+// write: manifest.json (docs/package.md "manifest.json"). nlohmann::json objects are
+// std::map-ordered, so keys come out sorted and the bytes are stable.
+#include <algorithm>
+
+#include "compile/glsl_compiler.hpp"
+#include "compile/targets.hpp"
+#include "emit/emitter.hpp"
+#include "write/package_parts.hpp"
+
+namespace mb {
+namespace {
+
+nlohmann::json paramJson(const MaterialParam& p) {
+  nlohmann::json j{{"name", p.name}, {"type", toString(p.type)}, {"constant", p.constant}, {"user", p.user}};
+  j[p.constant ? "value" : "default"] = p.value;
+  if (!p.constant) j["range"] = {p.range.lo, p.range.hi};
+  return j;
+}
+
+nlohmann::json axesJson(const std::vector<AxisSize>& axes) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& a : axes) j[a.axis] = a.values;
+  return j;
+}
+
+nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutation& p) {
+  const Permutation& perm = *p.perm;
+  const BuiltPermutation& b = *p.built;
+  const MaterialDesc& m = *perm.material;
+  nlohmann::json entry{{"key", b.shader.key},
+                       {"material", m.name},
+                       {"source", m.sourceFile},
+                       {"model", m.model},
+                       {"description", m.description},
+                       {"features", m.features},
+                       {"folded_features", perm.folded},
+                       {"lights", perm.lights},
+                       {"environment", perm.environment},
+                       {"precision", perm.precision},
+                       {"quality", perm.quality},
+                       {"bricks", nlohmann::json::object()},
+                       {"bricks_included", b.shader.bricks},
+                       {"parameters", nlohmann::json::array()},
+                       {"spirv_hash_xxh64", b.spirvHash},
+                       {"spirv_instructions", spirvInstructionCount(b.artifacts.spirv)},
+                       {"files", p.files},
+                       {"include", p.include},
+                       {"needs_fetch_hooks", needsFetchHooks(perm)},
+                       {"record_layout", recordLayoutJson(b.shader.layout)},
+                       {"reflection", b.artifacts.reflection.is_null() ? nlohmann::json::object()
+                                                                       : b.artifacts.reflection}};
+  for (const auto& [role, id] : boundRoles(*in.lib, perm)) entry["bricks"][role] = id;
+  for (const auto& prm : m.params) entry["parameters"].push_back(paramJson(prm));
+  return entry;
+}
+
+}  // namespace
+
+nlohmann::json recordLayoutJson(const ProbeLayout& layout) {
+  nlohmann::json inputs = nlohmann::json::array();
+  for (const auto& in : layout.inputs)
+    inputs.push_back({{"name", in.name}, {"type", toString(in.type)}, {"offset", in.offset}});
+  return {{"unit", "float32"},
+          {"inputs", std::move(inputs)},
+          {"stride", layout.inStride},
+          {"output", toString(layout.output)},
+          {"output_stride", layout.outStride}};
+}
+
+nlohmann::json packageManifest(const PackageInputs& in, const std::vector<PackagedPermutation>& perms) {
+  std::vector<std::string> hashes;
+  for (const auto& p : perms) hashes.push_back(p.built->spirvHash);
+  std::sort(hashes.begin(), hashes.end());
+  const size_t unique = static_cast<size_t>(std::unique(hashes.begin(), hashes.end()) - hashes.begin());
+  nlohmann::json targets = nlohmann::json::array();
+  for (const auto& t : allTargets())
+    if (t == "spirv" || std::find(in.targets.begin(), in.targets.end(), t) != in.targets.end()) targets.push_back(t);
+  nlohmann::json manifest{{"format", 1},
+                          {"generator", "matbricks " MB_VERSION},
+                          {"toolchain", toolchainVersion()},
+                          {"header", in.headerName},
+                          {"namespace", in.cppNamespace},
+                          {"targets", std::move(targets)},
+                          {"counts", {{"required", perms.size()}, {"unique_spirv", unique}}},
+                          {"kernel", {{"records", {{"set", 0}, {"binding", 0}}},
+                                      {"results", {{"set", 0}, {"binding", 1}}},
+                                      {"material_params", {{"set", 0}, {"binding", 2}, {"layout", "std140"}}},
+                                      {"push_constant", "uint count"}}},
+                          {"permutations", nlohmann::json::array()}};
+  if (!in.sceneFile.empty()) {
+    manifest["scene"] = {{"file", in.sceneFile},
+                         {"possible", in.plan->possible},
+                         {"possible_axes", axesJson(in.plan->possibleAxes)},
+                         {"required_axes", axesJson(in.plan->requiredAxes)}};
+  }
+  for (const auto& p : perms) manifest["permutations"].push_back(permutationJson(in, p));
+  return manifest;
+}
+
+}  // namespace mb

@@ -1,0 +1,41 @@
+// write: the parts of an engine-ready package (docs/package.md), each built by its own file:
+//   glsl_include.cpp   include/<key>.glsl
+//   manifest_json.cpp  manifest.json
+//   cpp_header.cpp     the C++17 header
+// package_contents.cpp decides the file names (deduplicated by SPIR-V hash) and adds them.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "write/package_contents.hpp"
+
+namespace mb {
+
+struct PackagedPermutation {
+  const Permutation* perm = nullptr;
+  const BuiltPermutation* built = nullptr;
+  std::map<std::string, std::string> files;  // target -> path in the package ("spirv/<hash>.spv")
+  std::string include;                       // "include/<key>.glsl"
+};
+
+// The emitted GLSL up to the probe, as a self-contained include: no #version, #extension or
+// #line (each #line becomes a "// from <file>:<line>" comment), an include guard and a header
+// comment naming the hooks the engine defines and the entry points it gets.
+std::string engineInclude(const PackagedPermutation& p);
+// Whether the permutation's environment calls the engine's fetch hooks (IBL modes).
+bool needsFetchHooks(const Permutation& perm);
+
+// The Engine record layout (offsets in floats) as the manifest stores it.
+nlohmann::json recordLayoutJson(const ProbeLayout& layout);
+nlohmann::json packageManifest(const PackageInputs& in, const std::vector<PackagedPermutation>& perms);
+
+// The C++17 header; its struct offsets come from each module's SPIRV-Cross reflection.
+std::string packageHeader(const PackageInputs& in, const std::vector<PackagedPermutation>& perms);
+
+// The material parameter block (set 0, binding 2) in a module's reflection, or null.
+const nlohmann::json* materialParamsBlock(const nlohmann::json& reflection);
+
+}  // namespace mb

@@ -1,0 +1,96 @@
+// buildPermutations (compile/build.hpp): parallel, deduplicated, deterministic, all-or-nothing.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+#include <spirv-tools/libspirv.hpp>
+
+#include "compile/targets.hpp"
+#include "support/build_support.hpp"
+
+using namespace mb;
+namespace fs = std::filesystem;
+
+TEST_CASE("output is bit-identical at -j1 and -j4, every target", "[build]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  const auto& mats = test::loadedMaterials(lib, {"brushed_metal", "clearcoat_metal", "filament_plastic", "satin_sheen",
+                                                 "worn_car_paint", "frostbite_dielectric"});
+  auto perms = test::permutationsOf(mats, {"dir", "point", "sphere"}, "ibl_lut");
+  for (const auto& p : test::permutationsOf(mats, {"dir"}, "sh", "fp16")) perms.push_back(p);
+  BuildOptions o;
+  o.targets = {"spirv", "glsl450", "hlsl", "msl"};
+  o.jobs = 1;
+  BuildStats s1, s4;
+  auto one = buildPermutations(lib, perms, o, &s1);
+  o.jobs = 4;
+  auto four = buildPermutations(lib, perms, o, &s4);
+  test::requireIdentical(one, four);
+  CHECK(s1.permutations == perms.size());
+  CHECK(s1.compiled == perms.size());
+  CHECK(s1.uniqueSpirv == s4.uniqueSpirv);
+  // Results in input order.
+  for (size_t i = 0; i < perms.size(); ++i) CHECK(four[i].shader.key == perms[i].key());
+}
+
+TEST_CASE("identical emitted GLSL is compiled once; unique SPIR-V is counted", "[build]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  const auto& mats = test::loadedMaterials(lib, {"ue4_metal", "filament_plastic"});
+  auto perms = test::permutationsOf(mats, {"dir"}, "none");
+  perms.push_back(perms[0]);  // the same permutation twice (two scene entries of one material)
+  BuildStats s;
+  auto built = buildPermutations(lib, perms, {}, &s);
+  CHECK(s.permutations == 3);
+  CHECK(s.compiled == 2);
+  CHECK(s.uniqueSpirv == 2);
+  CHECK(built[2].artifacts.spirv == built[0].artifacts.spirv);
+  CHECK(built[2].compileMs == 0);  // reported once, on the first
+  CHECK(built[0].compileMs > 0);
+  CHECK(built[0].spirvHash.size() == 16);
+}
+
+TEST_CASE("fp16 permutations skip spirv-opt and still validate", "[build][fp16]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  auto perms = test::permutationsOf(test::loadedMaterials(lib, {"worn_car_paint"}), {"dir", "point"}, "ibl_lut", "fp16");
+  auto built = buildPermutations(lib, perms, {});
+  spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
+  CHECK(tools.Validate(built[0].artifacts.spirv));
+  // glslang's own output keeps OpName debug names that spirv-opt's performance passes strip.
+  std::string text;
+  REQUIRE(tools.Disassemble(built[0].artifacts.spirv, &text));
+  CHECK(text.find("OpCapability Float16") != std::string::npos);
+  CHECK(text.find("OpName") != std::string::npos);
+}
+
+TEST_CASE("every failing permutation is reported, in input order, and nothing is returned", "[build]") {
+  // A library with one brick broken: every material that includes it fails.
+  test::ScratchDir root("build_broken_lib");
+  fs::copy(test::sourceDir() / "shaderlib", test::rootOf(root), fs::copy_options::recursive);
+  ShaderLibrary lib = ShaderLibrary::load(test::rootOf(root));
+  const auto& mats = test::loadedMaterials(lib, {"filament_plastic", "ue4_metal", "frostbite_dielectric"});
+  auto perms = test::permutationsOf(mats, {"dir"}, "none");
+  const std::string brickId = emitPermutation(lib, perms[0]).bricks.front();
+  const Brick* brick = lib.findBrick(brickId);
+  REQUIRE(brick);
+  std::vector<size_t> using_;
+  for (size_t i = 0; i < perms.size(); ++i) {
+    auto bricks = emitPermutation(lib, perms[i]).bricks;
+    if (std::find(bricks.begin(), bricks.end(), brickId) != bricks.end()) using_.push_back(i);
+  }
+  REQUIRE(using_.size() >= 2);
+  { std::ofstream(test::rootOf(root) / brick->file, std::ios::app) << "\nfloat broken() { return undefinedSymbol; }\n"; }
+  ShaderLibrary broken = ShaderLibrary::load(test::rootOf(root));
+  const auto& brokenMats = test::loadedMaterials(broken, {"filament_plastic", "ue4_metal", "frostbite_dielectric"});
+  BuildOptions o;
+  o.jobs = 3;
+  try {
+    buildPermutations(broken, test::permutationsOf(brokenMats, {"dir"}, "none"), o);
+    FAIL("a broken brick compiled");
+  } catch (const DiagnosticError& e) {
+    REQUIRE(e.diagnostics().size() == using_.size());
+    for (size_t k = 0; k < using_.size(); ++k) {
+      INFO(formatDiagnostic(e.diagnostics()[k]));
+      CHECK(e.diagnostics()[k].code == "E-GLSL");
+      CHECK(e.diagnostics()[k].where.file == ShaderLibrary::displayPath(brick->file));
+    }
+  }
+}

@@ -1,0 +1,217 @@
+// The on-disk compile cache (compile/shader_cache.hpp): keys, entries, corruption, and
+// concurrent builds sharing one directory. Every test uses its own scratch directory.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <thread>
+
+#include "compile/shader_cache.hpp"
+#include "compile/targets.hpp"
+#include "support/build_support.hpp"
+
+using namespace mb;
+namespace fs = std::filesystem;
+
+namespace {
+
+CompiledArtifacts sampleArtifacts() {
+  CompiledArtifacts a;
+  a.spirv = {0x07230203, 0x00010300, 7, 42, 0, 1, 2, 3};
+  a.targets["glsl450"] = "#version 450\nvoid main() {}\n";
+  a.targets["msl"] = std::string("kernel\0with a NUL", 17);
+  a.reflection = {{"entry_point", "main"}, {"workgroup_size", {64, 1, 1}}};
+  return a;
+}
+
+void requireSame(const CompiledArtifacts& a, const CompiledArtifacts& b) {
+  CHECK(a.spirv == b.spirv);
+  CHECK(a.targets == b.targets);
+  CHECK(a.reflection == b.reflection);
+}
+
+std::vector<Permutation> cachePermutations() {
+  const auto& mats = test::loadedMaterials(test::shippedLibrary(), {"filament_plastic", "satin_sheen", "ue4_metal"});
+  return test::permutationsOf(mats, {"dir", "point"}, "sh");
+}
+
+// Every entry under `dir` loads as a hit, and no temporary file is left behind.
+size_t requireAllEntriesValid(const ShaderCache& cache) {
+  size_t entries = 0;
+  for (const auto& e : fs::recursive_directory_iterator(cache.dir())) {
+    if (!e.is_regular_file()) continue;
+    INFO(e.path());
+    REQUIRE(e.path().extension() == ".mbc");
+    CompiledArtifacts a;
+    CHECK(cache.load(e.path().stem().string(), a) == ShaderCache::Lookup::Hit);
+    ++entries;
+  }
+  return entries;
+}
+
+}  // namespace
+
+TEST_CASE("cache keys are 128-bit hex, length-prefixed and order-sensitive", "[cache]") {
+  const std::string k = ShaderCache::key({"a", "bc"});
+  CHECK(k.size() == 32);
+  CHECK(k.find_first_not_of("0123456789abcdef") == std::string::npos);
+  CHECK(k == ShaderCache::key({"a", "bc"}));
+  CHECK(k != ShaderCache::key({"ab", "c"}));
+  CHECK(k != ShaderCache::key({"bc", "a"}));
+  CHECK(k != ShaderCache::key({"a", "bc", ""}));
+}
+
+TEST_CASE("a stored entry loads back whole; a missing one misses; a disabled cache does nothing", "[cache]") {
+  test::ScratchDir dir("cache_roundtrip");
+  ShaderCache cache(test::rootOf(dir));
+  const std::string key = ShaderCache::key({"roundtrip"});
+  CompiledArtifacts out;
+  CHECK(cache.load(key, out) == ShaderCache::Lookup::Miss);
+  REQUIRE(cache.store(key, sampleArtifacts()));
+  CHECK(cache.entryPath(key) == test::rootOf(dir) / key.substr(0, 2) / (key + ".mbc"));
+  REQUIRE(cache.load(key, out) == ShaderCache::Lookup::Hit);
+  requireSame(out, sampleArtifacts());
+
+  ShaderCache off{fs::path()};
+  CHECK(!off.enabled());
+  CHECK(!off.store(key, sampleArtifacts()));
+  CHECK(off.load(key, out) == ShaderCache::Lookup::Miss);
+}
+
+TEST_CASE("a corrupt entry is detected, deleted and reported", "[cache]") {
+  test::ScratchDir dir("cache_corrupt");
+  ShaderCache cache(test::rootOf(dir));
+  const std::string key = ShaderCache::key({"corrupt"});
+  REQUIRE(cache.store(key, sampleArtifacts()));
+  const std::string good = test::readFile(cache.entryPath(key));
+  REQUIRE(good.size() > 40);
+
+  auto corruptWith = [&](const std::string& bytes) {
+    { std::ofstream(cache.entryPath(key), std::ios::binary | std::ios::trunc) << bytes; }
+    CompiledArtifacts out;
+    CHECK(cache.load(key, out) == ShaderCache::Lookup::Corrupt);
+    CHECK(!fs::exists(cache.entryPath(key)));
+  };
+  SECTION("truncated") { corruptWith(good.substr(0, good.size() - 3)); }
+  SECTION("truncated inside the header") { corruptWith(good.substr(0, 20)); }
+  SECTION("empty") { corruptWith(""); }
+  SECTION("one payload byte flipped") {
+    std::string bad = good;
+    bad[bad.size() / 2] ^= 0x10;
+    corruptWith(bad);
+  }
+  SECTION("bad magic") {
+    std::string bad = good;
+    bad[0] = 'X';
+    corruptWith(bad);
+  }
+  SECTION("another format version") {
+    std::string bad = good;
+    bad[9] ^= 1;  // the format tag follows the 8-byte magic
+    corruptWith(bad);
+  }
+  SECTION("trailing bytes") { corruptWith(good + "x"); }
+}
+
+TEST_CASE("builds through the cache: a warm build hits, a corrupt entry is rebuilt to identical output", "[cache][build]") {
+  test::ScratchDir dir("cache_build");
+  const ShaderLibrary& lib = test::shippedLibrary();
+  auto perms = cachePermutations();
+  BuildOptions o;
+  o.targets = {"spirv", "glsl450", "hlsl"};
+  o.cacheDir = test::rootOf(dir);
+  o.jobs = 2;
+  BuildStats cold, warm, repaired;
+  auto first = buildPermutations(lib, perms, o, &cold);
+  CHECK(cold.compiled == perms.size());
+  CHECK(cold.cacheHits == 0);
+  ShaderCache cache(test::rootOf(dir));
+  CHECK(requireAllEntriesValid(cache) == perms.size());
+
+  auto second = buildPermutations(lib, perms, o, &warm);
+  CHECK(warm.compiled == 0);
+  CHECK(warm.cacheHits == perms.size());
+  for (const auto& b : second) CHECK(b.fromCache);
+  test::requireIdentical(first, second);
+
+  // Flip one byte of one entry: detected, rebuilt, stored again, output unchanged.
+  fs::path entry;
+  for (const auto& e : fs::recursive_directory_iterator(test::rootOf(dir)))
+    if (e.is_regular_file()) entry = e.path();
+  std::string bytes = test::readFile(entry);
+  bytes[bytes.size() - 5] ^= 0x01;
+  { std::ofstream(entry, std::ios::binary | std::ios::trunc) << bytes; }
+  auto third = buildPermutations(lib, perms, o, &repaired);
+  CHECK(repaired.cacheCorrupt == 1);
+  CHECK(repaired.compiled == 1);
+  CHECK(repaired.cacheHits == perms.size() - 1);
+  test::requireIdentical(first, third);
+  CHECK(requireAllEntriesValid(cache) == perms.size());
+}
+
+TEST_CASE("two concurrent builds on one cache directory give identical output and whole entries", "[cache][build]") {
+  test::ScratchDir dir("cache_concurrent");
+  const ShaderLibrary& lib = test::shippedLibrary();
+  auto perms = cachePermutations();
+  BuildOptions o;
+  o.targets = {"spirv", "msl"};
+  o.cacheDir = test::rootOf(dir);
+  o.jobs = 2;
+  // Load every brick source first: the library's source cache is filled on first use.
+  buildPermutations(lib, perms, BuildOptions{});
+  std::vector<BuiltPermutation> a, b;
+  std::thread other([&] { b = buildPermutations(lib, perms, o); });
+  a = buildPermutations(lib, perms, o);
+  other.join();
+  test::requireIdentical(a, b);
+  CHECK(requireAllEntriesValid(ShaderCache(test::rootOf(dir))) == perms.size());
+}
+
+TEST_CASE("two concurrent matbricks processes share a cache directory", "[cache][cli]") {
+  test::ScratchDir dir("cache_cli");
+  const std::string common = (test::sourceDir() / "materials/filament_plastic.json").string() + " " +
+                             (test::sourceDir() / "materials/ue4_metal.json").string() +
+                             " --lights dir,point --environment sh --targets spirv,glsl450 -q --cache-dir " +
+                             test::rootOf(dir).string();
+  test::CliResult r1, r2;
+  std::thread other([&] { r2 = test::runCli("compile " + common + " -o " + (test::rootOf(dir) / "out2").string()); });
+  r1 = test::runCli("compile " + common + " -o " + (test::rootOf(dir) / "out1").string());
+  other.join();
+  INFO(r1.output << r2.output);
+  REQUIRE(r1.exitCode == 0);
+  REQUIRE(r2.exitCode == 0);
+  size_t files = 0;
+  for (const auto& e : fs::recursive_directory_iterator(test::rootOf(dir) / "out1")) {
+    if (!e.is_regular_file()) continue;
+    const fs::path rel = fs::relative(e.path(), test::rootOf(dir) / "out1");
+    INFO(rel);
+    CHECK(test::readFile(e.path()) == test::readFile(test::rootOf(dir) / "out2" / rel));
+    ++files;
+  }
+  CHECK(files > 4);
+  fs::remove_all(test::rootOf(dir) / "out1");
+  fs::remove_all(test::rootOf(dir) / "out2");
+  CHECK(requireAllEntriesValid(ShaderCache(test::rootOf(dir))) == 2);
+}
+
+TEST_CASE("the cache key changes with a brick source, an option or the target list", "[cache]") {
+  test::ScratchDir root("cache_key_lib");
+  fs::copy(test::sourceDir() / "shaderlib", test::rootOf(root), fs::copy_options::recursive);
+  auto keyOf = [](const ShaderLibrary& lib, bool optimize, const std::vector<std::string>& targets) {
+    auto perms = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir"}, "none");
+    return buildCacheKey(lib, emitPermutation(lib, perms[0], false, EmitMode::Engine), optimize, targets);
+  };
+  ShaderLibrary lib = ShaderLibrary::load(test::rootOf(root));
+  const std::string base = keyOf(lib, true, {"spirv"});
+  CHECK(base == keyOf(lib, true, {"spirv"}));
+  CHECK(base != keyOf(lib, false, {"spirv"}));
+  CHECK(base != keyOf(lib, true, {"spirv", "hlsl"}));
+  CHECK(keyOf(lib, true, {"spirv", "hlsl", "msl"}) == keyOf(lib, true, {"msl", "hlsl"}));  // spirv always built
+
+  // A brick the permutation includes changes: a new key, even for a comment-only edit.
+  const Brick* brick = lib.findBrick(emitPermutation(lib, test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}),
+                                                                              {"dir"}, "none")[0]).bricks.front());
+  REQUIRE(brick);
+  { std::ofstream(test::rootOf(root) / brick->file, std::ios::app) << "// edited\n"; }
+  ShaderLibrary edited = ShaderLibrary::load(test::rootOf(root));
+  CHECK(keyOf(edited, true, {"spirv"}) != base);
+}

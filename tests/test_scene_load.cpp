@@ -1,0 +1,128 @@
+// Scene loading (docs/scenes.md): scene JSON errors at their positions, glTF scenes (lights
+// the nodes reference, materials the meshes use), merging a material listed twice.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+#include "load/scene_desc.hpp"
+#include "support/pipeline_support.hpp"
+
+using namespace mb;
+
+namespace {
+
+// A scene file "written" in examples/scenes/, so that material paths resolve as there.
+std::string sceneFile() { return (test::sourceDir() / "examples/scenes/test.json").string(); }
+
+std::vector<Diagnostic> errorsOf(const std::string& json) {
+  try {
+    parseSceneJson(json, sceneFile(), test::shippedLibrary());
+  } catch (const DiagnosticError& e) {
+    return e.diagnostics();
+  }
+  return {};
+}
+
+const Diagnostic* find(const std::vector<Diagnostic>& ds, const std::string& code) {
+  for (const auto& d : ds)
+    if (d.code == code) return &d;
+  return nullptr;
+}
+
+const std::string kClearcoat = R"("../../materials/clearcoat_metal.json")";
+
+}  // namespace
+
+TEST_CASE("scene JSON: axes, lights and uses are read", "[scene]") {
+  SceneDesc s = parseSceneJson(R"({"name": "t", "lights": [{"type": "point"}, {"type": "dir", "name": "sun"}],
+    "environment": ["ibl_lut", "sh"], "precision": "fp16", "quality": ["high", "low"], "targets": ["spirv", "glsl450"],
+    "materials": [{"file": )" + kClearcoat + R"(, "uses": [{"clearCoat": 0.25}]}]})",
+                               sceneFile(), test::shippedLibrary());
+  CHECK(s.name == "t");
+  CHECK(s.lightTypes() == std::vector<std::string>{"dir", "point"});
+  CHECK(s.environments == std::vector<std::string>{"sh", "ibl_lut"});  // canonical order
+  CHECK(s.precisions == std::vector<std::string>{"fp16"});
+  CHECK(s.qualities == std::vector<std::string>{"low", "high"});
+  CHECK(s.targets == std::vector<std::string>{"spirv", "glsl450"});
+  REQUIRE(s.materials.size() == 1);
+  REQUIRE(s.materials[0].uses.size() == 1);
+  CHECK(s.materials[0].uses[0].values.at("clearCoat") == std::vector<double>{0.25});
+  CHECK(s.materials[0].where.line == 3);
+}
+
+TEST_CASE("scene JSON: a material listed twice is merged, its uses appended", "[scene]") {
+  SceneDesc s = parseSceneJson(R"({"materials": [{"file": )" + kClearcoat + R"(, "uses": [{"clearCoat": 0}]},
+    {"file": )" + kClearcoat + R"(, "uses": [{"clearCoat": 1}]}]})",
+                               sceneFile(), test::shippedLibrary());
+  REQUIRE(s.materials.size() == 1);
+  CHECK(s.materials[0].uses.size() == 2);
+}
+
+TEST_CASE("scene JSON errors carry codes and positions", "[scene]") {
+  auto ds = errorsOf(R"({"lights": [{"type": "spher"}], "environment": "ibl",
+ "precision": ["fp32", "fp64"], "quality": "ultra", "targets": ["spirv", "dxil"], "ligths": [],
+ "materials": [{"file": )" + kClearcoat + R"(, "uses": [{"clearcoat": 0}, {"roughnes": 0.2},
+   {"clearCoat": 2.0}, {"baseColor": [1, 1]}, {"metallic": 0.5}]},
+  {"file": "nope.json"}]})");
+  auto expect = [&](const std::string& code, int line, const std::string& suggestion) {
+    INFO(code);
+    const Diagnostic* d = find(ds, code);
+    REQUIRE(d);
+    CHECK(d->where.line == line);
+    CHECK(d->where.column > 0);
+    CHECK(d->suggestion.find(suggestion) != std::string::npos);
+  };
+  expect("E-SCENE-LIGHT-TYPE", 1, "sphere");
+  expect("E-SCENE-AXIS-VALUE", 1, "");  // environment 'ibl' (then precision, quality)
+  expect("E-SCENE-TARGET", 2, "");
+  expect("E-UNKNOWN-FIELD", 2, "lights");
+  expect("E-SCENE-UNKNOWN-INPUT", 3, "clearCoat");
+  expect("E-SCENE-VALUE-RANGE", 4, "");
+  expect("E-SCENE-VALUE-TYPE", 4, "");
+  expect("E-SCENE-CONSTANT", 4, "run-time input");
+  expect("E-FILE-NOT-FOUND", 5, "");
+  size_t axisErrors = 0, unknownInputs = 0;
+  for (const auto& d : ds) {
+    axisErrors += d.code == "E-SCENE-AXIS-VALUE";
+    unknownInputs += d.code == "E-SCENE-UNKNOWN-INPUT";
+  }
+  CHECK(axisErrors == 3);  // environment, precision, quality
+  CHECK(unknownInputs == 2);
+  CHECK(find(ds, "E-SCENE-UNKNOWN-INPUT")->message.find("clearcoat") != std::string::npos);
+}
+
+TEST_CASE("scene JSON without materials, or with empty uses, is refused", "[scene]") {
+  CHECK(find(errorsOf(R"({"name": "x", "materials": []})"), "E-SCENE-NO-MATERIALS"));
+  CHECK(find(errorsOf(R"({"materials": [{"file": )" + kClearcoat + R"(, "uses": []}]})"), "E-SCENE-NO-USES"));
+  CHECK(find(errorsOf(R"({"environment": []})"), "E-FIELD-TYPE"));
+}
+
+TEST_CASE("glTF scene: referenced lights and the materials meshes use", "[scene]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  SceneDesc s = loadScene((test::sourceDir() / "examples/scenes/gallery.gltf").string(), lib);
+  // The spot light is defined but no node references it.
+  CHECK(s.lightTypes() == std::vector<std::string>{"dir", "point"});
+  REQUIRE(s.lights.size() == 2);
+  CHECK(s.lights[0].name == "sun");
+  CHECK(s.lights[0].where.line > 1);
+  std::vector<std::string> names;
+  for (const auto& m : s.materials) names.push_back(m.material.name);
+  // "Unused Gold" is used by no mesh: not part of the scene.
+  CHECK(names == std::vector<std::string>{"Lacquered_Oak", "Car_Paint", "Brushed_Steel", "Plaster"});
+  CHECK(s.environments == std::vector<std::string>{"none"});
+  CHECK(s.precisions == std::vector<std::string>{"fp32"});
+  CHECK(s.qualities == std::vector<std::string>{"high"});
+  CHECK(s.targets == std::vector<std::string>{"spirv"});
+  // clearcoatFactor 0 became the constant 0 of an enabled clear coat.
+  const MaterialParam* cc = s.materials[0].material.param("clearCoat");
+  REQUIRE(cc);
+  CHECK(cc->constant);
+  CHECK(cc->value == std::vector<double>{0.0});
+}
+
+TEST_CASE("scene JSON pulls a glTF file in and adds its own materials", "[scene]") {
+  SceneDesc s = loadScene((test::sourceDir() / "examples/scenes/gallery.json").string(), test::shippedLibrary());
+  CHECK(s.lightTypes() == std::vector<std::string>{"dir", "point"});
+  CHECK(s.materials.size() == 5);
+  CHECK(s.environments == std::vector<std::string>{"none", "ibl_lut"});
+}

@@ -1,0 +1,274 @@
+// Axes, validity, quality, folding and planning (docs/scenes.md), and `matbricks verify`.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "load/scene_desc.hpp"
+#include "permute/axes.hpp"
+#include "permute/scene_plan.hpp"
+#include "permute/specialize.hpp"
+#include "support/pipeline_support.hpp"
+
+using namespace mb;
+
+namespace {
+
+const ShadingModel& model(const std::string& name) { return *test::shippedLibrary().findModel(name); }
+
+MaterialDesc material(const std::string& name) {
+  return loadMaterialJson((test::sourceDir() / "materials" / (name + ".json")).string(), test::shippedLibrary());
+}
+
+MaterialUse use(std::map<std::string, std::vector<double>> values) {
+  MaterialUse u;
+  u.values = std::move(values);
+  return u;
+}
+
+SceneDesc exampleScene(const std::string& file) {
+  return loadScene((test::sourceDir() / "examples/scenes" / file).string(), test::shippedLibrary());
+}
+
+std::vector<std::string> keysOf(const ScenePlan& plan) {
+  std::vector<std::string> keys;
+  for (const auto& p : plan.required) keys.push_back(p.key());
+  return keys;
+}
+
+// Every subset of `all`, for the brute-force count.
+std::vector<std::vector<std::string>> subsets(const std::vector<std::string>& all) {
+  std::vector<std::vector<std::string>> out;
+  for (size_t mask = 0; mask < (size_t{1} << all.size()); ++mask) {
+    std::vector<std::string> s;
+    for (size_t i = 0; i < all.size(); ++i)
+      if (mask & (size_t{1} << i)) s.push_back(all[i]);
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("validity rules: one reason per invalid axis value", "[scene]") {
+  AxisPoint p;
+  p.lights = {"dir", "sphere"};
+  CHECK(!invalidReason(model("standard"), p));
+  auto r = invalidReason(model("cloth"), p);
+  REQUIRE(r);
+  CHECK(r->find("'sphere' lights") != std::string::npos);
+  p.lights = {"dir"};
+  p.environment = "ibl_analytic";
+  CHECK(invalidReason(model("cloth"), p));
+  p.environment = "none";
+  p.features = {"clearcoat"};
+  CHECK(invalidReason(model("cloth"), p));
+  CHECK(!invalidReason(model("standard"), p));
+  p.precision = "fp64";
+  CHECK(invalidReason(model("standard"), p));
+  p.precision = "fp16";
+  p.quality = "ultra";
+  CHECK(invalidReason(model("standard"), p));
+  p.quality = "low";
+  CHECK(!invalidReason(model("standard"), p));
+}
+
+TEST_CASE("valid combination counts equal a brute-force enumeration of the product", "[scene]") {
+  for (const auto& m : test::shippedLibrary().models()) {
+    size_t product = 1, brute = 0;
+    for (const auto& a : axisSizes(m)) product *= a.values;
+    std::vector<std::string> features;
+    for (const auto& f : m.features) features.push_back(f.name);
+    for (const auto& fs : subsets(features))
+      for (const auto& ls : subsets(allLightTypes()))
+        for (const auto& e : allEnvironmentModes())
+          for (const auto& pr : allPrecisions())
+            for (const auto& q : allQualityLevels())
+              brute += !invalidReason(m, AxisPoint{fs, ls, e, pr, q});
+    INFO(m.name);
+    CHECK(validCombinationCount(m) == brute);
+    CHECK(brute <= product);
+  }
+  // standard: 2^3 features x 2^5 light sets x 4 environments x 2 precisions x 3 qualities.
+  CHECK(validCombinationCount(model("standard")) == 6144);
+  // cloth: no features, 2^3 light sets (dir, point, spot), 3 environments, 2 x 3.
+  CHECK(validCombinationCount(model("cloth")) == 8 * 3 * 2 * 3);
+}
+
+TEST_CASE("quality: defaulted roles follow the table, chosen roles keep the material's brick", "[scene]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  CHECK(model("standard").quality.at("low").at("sh_irradiance") == "sh_l1_irradiance");
+  MaterialDesc m = material("filament_plastic");
+  MaterialDesc low = applyQuality(m, "low", lib);
+  CHECK(low.bricks.at("sh_irradiance") == "sh_l1_irradiance");
+  CHECK(low.bricks.at("energy_compensation") == "energy_compensation_none");
+  CHECK(applyQuality(m, "high", lib).bricks == m.bricks);
+  CHECK(applyQuality(m, "medium", lib).bricks.at("sphere_horizon_wrap") == "horizon_wrap_hermite");
+  // The material chose this role itself: quality leaves it alone.
+  MaterialDesc chose = m;
+  chose.bricks["sh_irradiance"] = "sh9_irradiance";
+  chose.brickLocations["sh_irradiance"] = SourceLocation("x.json", 3, 4);
+  CHECK(applyQuality(chose, "low", lib).bricks.at("sh_irradiance") == "sh9_irradiance");
+}
+
+TEST_CASE("the quality table is checked at load: unknown level, role, brick of another slot", "[scene]") {
+  namespace fs = std::filesystem;
+  fs::path root = fs::temp_directory_path() / ("mb_scene_quality_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::copy(test::sourceDir() / "shaderlib", root, fs::copy_options::recursive);
+  std::string p = (root / "models/cloth.json").string();
+  std::string text = test::readFile(p);
+  std::string from = R"("medium": {})";
+  REQUIRE(text.find(from) != std::string::npos);
+  text.replace(text.find(from), from.size(),
+               R"("medium": {"sh_irradianse": "sh9_irradiance", "mip_mapping": "d_ggx"}, "ultra": {})");
+  std::ofstream(p) << text;
+  std::vector<Diagnostic> ds;
+  try {
+    ShaderLibrary::load(root);
+  } catch (const DiagnosticError& e) {
+    ds = e.diagnostics();
+  }
+  fs::remove_all(root);
+  std::vector<std::string> codes;
+  for (const auto& d : ds) {
+    CHECK(d.where.line > 0);
+    codes.push_back(d.code);
+  }
+  CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-FIELD") == 1);  // "ultra"
+  CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-ROLE") == 1);
+  CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-BRICK") == 1);
+}
+
+TEST_CASE("folding: neutral in every use folds; a non-neutral, unstated or surface-written input keeps", "[scene]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  MaterialDesc cc = material("clearcoat_metal");
+  CHECK(!foldBlocker(cc, "clearcoat", {use({{"clearCoat", {0.0}}})}, lib));
+  auto half = foldBlocker(cc, "clearcoat", {use({{"clearCoat", {0.0}}}), use({{"clearCoat", {0.5}}})}, lib);
+  REQUIRE(half);
+  CHECK(half->find("0.5") != std::string::npos);
+  auto unstated = foldBlocker(cc, "clearcoat", {MaterialUse{}}, lib);  // clearCoat is a run-time input
+  REQUIRE(unstated);
+  CHECK(unstated->find("unstated") != std::string::npos);
+  auto surface = foldBlocker(material("worn_car_paint"), "clearcoat", {use({{"clearCoat", {0.0}}})}, lib);
+  REQUIRE(surface);
+  CHECK(surface->find("surface code") != std::string::npos);
+  CHECK(foldBlocker(cc, "sheen", {MaterialUse{}}, lib));  // not enabled
+
+  MaterialDesc folded = foldFeatures(cc, {"clearcoat"}, lib);
+  CHECK(folded.features.empty());
+  CHECK(!folded.param("clearCoat"));
+  CHECK(!folded.param("clearCoatRoughness"));
+  CHECK(!folded.bricks.count("clearcoat_d"));
+  CHECK(!folded.bricks.count("f0_clearcoat"));
+  CHECK(folded.bricks.count("specular_d"));
+
+  // The feature-complete form: every feature on, added inputs at the use's / neutral values.
+  MaterialDesc full = featureComplete(folded, use({{"clearCoat", {0.0}}}), lib);
+  CHECK(full.features == std::vector<std::string>{"clearcoat", "anisotropy", "sheen"});
+  REQUIRE(full.param("clearCoat"));
+  CHECK(full.param("clearCoat")->constant);
+  CHECK(full.param("clearCoat")->value == std::vector<double>{0.0});
+  CHECK(full.param("anisotropy")->value == std::vector<double>{0.0});
+  CHECK(full.param("sheenColor")->value == std::vector<double>{0.0, 0.0, 0.0});
+  CHECK(full.param("sheenRoughness")->value == model("standard").inputs.back().defaultValue);
+  CHECK(full.bricks.at("sheen_d") == "d_charlie");
+  CHECK(full.param("roughness")->constant == folded.param("roughness")->constant);
+  // A feature the (specialized) material kept keeps its run-time input, whatever the use says.
+  MaterialDesc kept = featureComplete(cc, use({{"clearCoat", {0.0}}}), lib);
+  CHECK(!kept.param("clearCoat")->constant);
+}
+
+TEST_CASE("example scenes: required counts, far below possible, sorted keys, deterministic", "[scene]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  struct Expect {
+    std::string file;
+    size_t required;
+  };
+  // showroom: 5 materials (one listed twice) x precision x2; mobile: 3 x quality x2;
+  // gallery: 4 used glTF materials + 1 x environment x2; gallery.gltf: its 4 used materials.
+  for (const auto& e : std::vector<Expect>{{"showroom.json", 10}, {"mobile.json", 6}, {"gallery.json", 10},
+                                           {"gallery.gltf", 4}}) {
+    INFO(e.file);
+    ScenePlan plan = planScene(exampleScene(e.file), lib);
+    CHECK(plan.required.size() == e.required);
+    CHECK(plan.possible >= 100 * plan.required.size());
+    auto keys = keysOf(plan);
+    CHECK(std::is_sorted(keys.begin(), keys.end()));
+    CHECK(std::adjacent_find(keys.begin(), keys.end()) == keys.end());
+    CHECK(keysOf(planScene(exampleScene(e.file), lib)) == keys);
+  }
+  ScenePlan showroom = planScene(exampleScene("showroom.json"), lib);
+  CHECK(showroom.possible == 5 * 6144);
+  CHECK(showroom.requiredAxes.size() == 1);
+  CHECK(showroom.requiredAxes[0].axis == "precision");
+  auto keys = keysOf(showroom);
+  CHECK(std::count(keys.begin(), keys.end(), "clearcoat_metal.standard.dir+point+sphere.ibl_lut.fp16.without-clearcoat") == 1);
+  CHECK(std::count(keys.begin(), keys.end(), "satin_sheen.standard.dir+point+sphere.ibl_lut.fp32.without-sheen") == 1);
+  CHECK(std::count(keys.begin(), keys.end(), "brushed_metal.standard.dir+point+sphere.ibl_lut.fp32") == 1);
+  CHECK(std::count(keys.begin(), keys.end(), "worn_car_paint.standard.dir+point+sphere.ibl_lut.fp32") == 1);
+  ScenePlan mobile = planScene(exampleScene("mobile.json"), lib);
+  auto mk = keysOf(mobile);
+  CHECK(std::count(mk.begin(), mk.end(), "velvet_green.cloth.dir+point.sh.fp16.low") == 1);
+  CHECK(std::count(mk.begin(), mk.end(), "velvet_green.cloth.dir+point.sh.fp16.medium") == 1);
+  for (const auto& p : mobile.required)
+    if (p.quality == "low") CHECK(p.material->bricks.at("sh_irradiance") == "sh_l1_irradiance");
+  ScenePlan gallery = planScene(exampleScene("gallery.gltf"), lib);
+  CHECK(std::count_if(gallery.required.begin(), gallery.required.end(), [](const Permutation& p) {
+          return p.key() == "Lacquered_Oak.standard.dir+point.none.fp32.without-clearcoat";
+        }) == 1);
+  std::string text = explainText(showroom, showroom.required.size(), 9);
+  CHECK(text.find("required       10   (5 materials x precision x2)") != std::string::npos);
+  CHECK(text.find("folded clearcoat") != std::string::npos);
+  CHECK(text.find("kept   clearcoat: the surface code uses m.clearCoat") != std::string::npos);
+}
+
+TEST_CASE("a model that cannot shade the scene's lights is E-PERMUTATION-INVALID at the material", "[scene]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  SceneDesc s = parseSceneJson(R"({"lights": [{"type": "dir"}, {"type": "sphere", "name": "bulb"}],
+ "materials": [{"file": "../../materials/velvet_green.json"}]})",
+                               (test::sourceDir() / "examples/scenes/t.json").string(), lib);
+  try {
+    planScene(s, lib);
+    FAIL("no error");
+  } catch (const DiagnosticError& e) {
+    REQUIRE(e.diagnostics().size() == 1);
+    const Diagnostic& d = e.diagnostics()[0];
+    CHECK(d.code == "E-PERMUTATION-INVALID");
+    CHECK(d.where.line == 2);
+    CHECK(d.message.find("'bulb'") != std::string::npos);
+    CHECK(d.suggestion.find("'standard'") != std::string::npos);
+  }
+}
+
+TEST_CASE("diffKeys lists missing and extra keys, empty when nothing is missing", "[scene]") {
+  CHECK(diffKeys({"a", "b"}, {"b", "a", "c"}).empty());
+  CHECK(diffKeys({"a", "b"}, {"b", "c"}) == "- a\n+ c\n");
+}
+
+TEST_CASE("verify: a package missing one required permutation fails with the key", "[scene][cli]") {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / ("mb_scene_verify_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::string scene = (test::sourceDir() / "examples/scenes/mobile.json").string();
+  ScenePlan plan = planScene(loadScene(scene, test::shippedLibrary()), test::shippedLibrary());
+  auto keys = keysOf(plan);
+  auto write = [&](size_t skip) {
+    std::string m = R"({"permutations": [)";
+    for (size_t i = 0, n = 0; i < keys.size(); ++i)
+      if (i != skip) m += std::string(n++ ? "," : "") + R"({"key": ")" + keys[i] + R"("})";
+    std::ofstream(dir / "manifest.json") << m << "]}";
+  };
+  write(keys.size());
+  auto ok = test::runCli("verify --scene " + scene + " " + dir.string());
+  INFO(ok.output);
+  CHECK(ok.exitCode == 0);
+  write(2);
+  auto missing = test::runCli("verify --scene " + scene + " " + dir.string());
+  INFO(missing.output);
+  CHECK(missing.exitCode == 1);
+  CHECK(missing.output.find("- " + keys[2] + "\n") != std::string::npos);
+  CHECK(missing.output.find("E-PACKAGE-MISSING-PERMUTATION") != std::string::npos);
+  fs::remove_all(dir);
+}

@@ -1,0 +1,193 @@
+// Targets (compile/targets.hpp): SPIRV-Cross outputs and their checks, and reflection.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+
+#include "compile/glsl_compiler.hpp"
+#include "compile/target_checks.hpp"
+#include "compile/targets.hpp"
+#include "support/build_support.hpp"
+
+using namespace mb;
+
+namespace {
+
+std::vector<BuiltPermutation> buildAllTargets(const std::vector<Permutation>& perms) {
+  BuildOptions o;
+  o.targets = allTargets();
+  return buildPermutations(test::shippedLibrary(), perms, o);
+}
+
+const nlohmann::json* findBlock(const nlohmann::json& list, const std::string& name) {
+  for (const auto& b : list)
+    if (b["name"] == name) return &b;
+  return nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("fp32 permutations cross-compile to every target and pass its check", "[targets]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  // Standard model with every feature the examples use, and the cloth model.
+  const auto& standard = test::loadedMaterials(lib, {"worn_car_paint", "clearcoat_metal", "brushed_metal"});
+  const auto& cloth = test::loadedMaterials(lib, {"velvet_green"});
+  auto perms = test::permutationsOf(standard, {"dir", "point", "spot", "sphere", "tube"}, "ibl_lut");
+  for (const auto& p : test::permutationsOf(cloth, {"dir", "point", "spot"}, "sh")) perms.push_back(p);
+  auto built = buildAllTargets(perms);
+  REQUIRE(built.size() == perms.size());
+  for (const auto& b : built) {
+    INFO(b.shader.key);
+    REQUIRE(b.artifacts.targets.size() == 4);
+    CHECK(b.artifacts.targets.at("glsl450").rfind("#version 450\n", 0) == 0);
+    CHECK(b.artifacts.targets.at("essl310").rfind("#version 310 es\n", 0) == 0);
+    CHECK(b.artifacts.targets.at("hlsl").find("[numthreads(64, 1, 1)]") != std::string::npos);
+    CHECK(b.artifacts.targets.at("msl").find("kernel void main0(") != std::string::npos);
+    // OpenGL has no push constants: the block became a uniform block at the first binding no
+    // uniform block uses.
+    unsigned binding = 0;
+    for (const auto& u : b.artifacts.reflection["uniform_buffers"]) binding = std::max(binding, u["binding"].get<unsigned>() + 1);
+    const std::string push = "layout(binding = " + std::to_string(binding) + ", std140) uniform MbPush";
+    CHECK(b.artifacts.targets.at("glsl450").find(push) != std::string::npos);
+    CHECK(b.artifacts.targets.at("essl310").find(push) != std::string::npos);
+  }
+}
+
+TEST_CASE("fp16: GLSL 450, HLSL (min16float) and MSL are built; ESSL 3.10 is refused with the reason", "[targets][fp16]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  auto perms = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir", "point"}, "ibl_lut", "fp16");
+  BuildOptions o;
+  o.targets = {"spirv", "glsl450", "hlsl", "msl"};
+  auto built = buildPermutations(lib, perms, o);
+  REQUIRE(built.size() == 1);
+  const auto& t = built[0].artifacts.targets;
+  CHECK(t.at("glsl450").find("GL_AMD_gpu_shader_half_float") != std::string::npos);
+  CHECK(t.at("hlsl").find("min16float") != std::string::npos);
+  CHECK(t.at("msl").find("half") != std::string::npos);
+  o.targets = {"spirv", "essl310"};
+  try {
+    buildPermutations(lib, perms, o);
+    FAIL("essl310 of an fp16 permutation was built");
+  } catch (const DiagnosticError& e) {
+    REQUIRE(e.diagnostics().size() == 1);
+    const Diagnostic& d = e.diagnostics()[0];
+    INFO(formatDiagnostic(d));
+    CHECK(d.code == "E-TARGET-FAILED");
+    CHECK(d.where.file == built[0].shader.fileName);
+    CHECK(d.message.find("essl310") != std::string::npos);
+    CHECK(d.message.find("no 16-bit float type") != std::string::npos);
+  }
+}
+
+TEST_CASE("each target's check rejects a broken output", "[targets]") {
+  const std::string ok = "#version 450\nlayout(local_size_x = 1) in;\nlayout(binding = 0, std430) buffer B { float x[]; } b;\n"
+                         "void main() { b.x[gl_GlobalInvocationID.x] = 1.0; }\n";
+  CHECK(checkGlsl(ok, false).empty());
+  CHECK(checkGlsl(ok, true).find("#version 310 es") != std::string::npos);  // not the ES target's
+  std::string es = ok;
+  es.replace(0, 12, "#version 310 es");
+  CHECK(checkGlsl(es, true).empty());
+  // A plain uniform needs a location in GL SPIR-V: the check sees what a driver would reject.
+  CHECK(!checkGlsl("#version 450\nlayout(local_size_x = 1) in;\nuniform float u;\nvoid main() {}\n", false).empty());
+  CHECK(!checkGlsl("#version 450\nvoid main() { undefined(); }\n", false).empty());
+
+  const std::string hlsl = "RWByteAddressBuffer o : register(u0);\n[numthreads(64, 1, 1)]\n"
+                           "void main(uint3 id : SV_DispatchThreadID) { o.Store(id.x * 4, asuint(1.0f)); }\n";
+  CHECK(checkHlsl(hlsl).empty());
+  CHECK(checkHlsl("[numthreads(64, 1, 1)]\nvoid notMain() {}\n").find("no entry point 'main'") != std::string::npos);
+  CHECK(!checkHlsl("[numthreads(64, 1, 1)]\nvoid main() { float3 x = undefined; }\n").empty());
+
+  // MSL: a real module's MSL passes; without its kernel or with a wrong buffer index it fails.
+  auto spirv = compileComputeGlsl(ok, "ok.comp").spirv;
+  std::string msl = crossCompile(spirv, "msl", "ok.comp");
+  SpvcModule m(spirv, SPVC_BACKEND_MSL);
+  REQUIRE(m.ok());
+  // The indices are assigned while compiling: compile this module too before checking.
+  const char* out = nullptr;
+  REQUIRE(spvc_compiler_compile(m.compiler(), &out) == SPVC_SUCCESS);
+  CHECK(checkMsl(msl, m).empty());
+  std::string noKernel = msl;
+  noKernel.replace(noKernel.find("kernel void main0("), 6, "static");
+  CHECK(checkMsl(noKernel, m).find("kernel") != std::string::npos);
+  std::string wrongIndex = msl;
+  wrongIndex.replace(wrongIndex.find("[[buffer(0)]]"), 13, "[[buffer(7)]]");
+  CHECK(checkMsl(wrongIndex, m).find("[[buffer(0)]]") != std::string::npos);
+}
+
+TEST_CASE("reflection gives exact std140 offsets of a uniform block, and the buffers of a permutation", "[targets][reflection]") {
+  const std::string glsl = R"(#version 450
+layout(local_size_x = 32, local_size_y = 2) in;
+layout(std140, set = 0, binding = 2) uniform Params { vec3 tint; float wear; vec2 uv; float rough[2]; mat3 m; } params;
+layout(std430, set = 0, binding = 0) readonly buffer In { float data[]; } inBuf;
+layout(std430, set = 0, binding = 1) writeonly buffer Out { float result[]; } outBuf;
+layout(push_constant) uniform Push { uint count; float scale; } pc;
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= pc.count) return;
+  outBuf.result[i] = inBuf.data[i] * pc.scale * params.tint.x * params.wear * params.uv.y * params.rough[1] * params.m[2].z;
+}
+)";
+  nlohmann::json r = reflectSpirv(compileComputeGlsl(glsl, "params.comp").spirv);
+  INFO(r.dump(2));
+  CHECK(r["entry_point"] == "main");
+  CHECK(r["workgroup_size"] == nlohmann::json({32, 2, 1}));
+  REQUIRE(r["uniform_buffers"].size() == 1);
+  const auto& u = r["uniform_buffers"][0];
+  CHECK(u["name"] == "Params");
+  CHECK(u["set"] == 0);
+  CHECK(u["binding"] == 2);
+  // std140: vec3 at 0 (16-aligned), the float packs into its 4th component at 12, vec2 at 16,
+  // float[2] with a 16-byte stride at 32, mat3 as three 16-byte columns at 64; 112 in all.
+  const nlohmann::json expected = nlohmann::json::parse(R"([
+    {"name":"tint","type":"vec3","offset":0,"size":12},
+    {"name":"wear","type":"float","offset":12,"size":4},
+    {"name":"uv","type":"vec2","offset":16,"size":8},
+    {"name":"rough","type":"float[2]","offset":32,"size":32},
+    {"name":"m","type":"mat3","offset":64,"size":48}])");
+  CHECK(u["members"] == expected);
+  CHECK(u["size"] == 112);
+  REQUIRE(r["storage_buffers"].size() == 2);
+  const auto* in = findBlock(r["storage_buffers"], "In");
+  const auto* out = findBlock(r["storage_buffers"], "Out");
+  REQUIRE(in);
+  REQUIRE(out);
+  CHECK((*in)["binding"] == 0);
+  CHECK((*in)["readonly"] == true);
+  CHECK((*in)["writeonly"] == false);
+  CHECK((*out)["binding"] == 1);
+  CHECK((*out)["writeonly"] == true);
+  CHECK((*in)["members"][0]["type"] == "float[]");
+  REQUIRE(r["push_constants"].size() == 1);
+  CHECK(r["push_constants"][0]["name"] == "Push");
+  CHECK(r["push_constants"][0]["size"] == 8);
+  CHECK(r["push_constants"][0]["members"][1] == nlohmann::json({{"name", "scale"}, {"type", "float"}, {"offset", 4}, {"size", 4}}));
+  CHECK(!r["push_constants"][0].contains("binding"));
+
+  // A permutation's kernel (docs/package.md "Kernel ABI"): records in, results out, a count.
+  auto perms = test::permutationsOf(test::loadedMaterials(test::shippedLibrary(), {"ue4_metal"}), {"dir"}, "none");
+  auto built = buildPermutations(test::shippedLibrary(), perms, {});
+  const auto& pr = built[0].artifacts.reflection;
+  INFO(pr.dump(2));
+  CHECK(pr["workgroup_size"][0] == 64);
+  const auto* mbIn = findBlock(pr["storage_buffers"], "MbIn");
+  const auto* mbOut = findBlock(pr["storage_buffers"], "MbOut");
+  REQUIRE(mbIn);
+  REQUIRE(mbOut);
+  CHECK((*mbIn)["readonly"] == true);
+  CHECK((*mbOut)["writeonly"] == true);
+  REQUIRE(pr["push_constants"].size() == 1);
+  CHECK(pr["push_constants"][0]["members"][0] == nlohmann::json({{"name", "count"}, {"type", "uint"}, {"offset", 0}, {"size", 4}}));
+}
+
+TEST_CASE("crossCompile names the permutation and the target when SPIRV-Cross cannot read the module", "[targets]") {
+  std::vector<uint32_t> garbage{0x07230203, 0x00010000, 0, 5, 0, 0xdeadbeef};
+  try {
+    crossCompile(garbage, "hlsl", "broken.glsl");
+    FAIL("garbage cross-compiled");
+  } catch (const DiagnosticError& e) {
+    CHECK(e.diagnostics()[0].code == "E-TARGET-FAILED");
+    CHECK(e.diagnostics()[0].where.file == "broken.glsl");
+    CHECK(e.diagnostics()[0].message.find("target hlsl: SPIRV-Cross") != std::string::npos);
+  }
+  CHECK(spirvCrossVersion().find("SPIRV-Cross") != std::string::npos);
+  for (const auto& t : allTargets()) CHECK(!targetOptions(t).empty());
+}
