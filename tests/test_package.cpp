@@ -244,6 +244,25 @@ TEST_CASE("compile --depfile lists the material, model and included shader libra
   fs::remove_all(dir);
 }
 
+TEST_CASE("compile --depfile lists the files a macro-form material #includes, nested ones too", "[package]") {
+  fs::path dir = tempDir("depfile_include");
+  fs::create_directories(dir / "shared");
+  std::ofstream(dir / "m.mat") << "#define MATERIAL included_plastic\n#define MODEL standard\n"
+                                  "#include \"shared/bricks.mat\"\n#define PARAM_roughness 0.5\n";
+  std::ofstream(dir / "shared" / "bricks.mat")
+      << "#define BRICK_roughness roughness_clamped\n#define BRICK_diffuse diffuse_lambert\n"
+         "#define BRICK_specular_d d_ggx\n#define BRICK_specular_v v_smith_ggx_correlated\n#include \"fresnel.mat\"\n";
+  std::ofstream(dir / "shared" / "fresnel.mat") << "#define BRICK_fresnel f_schlick\n";
+  auto r = test::runCli("compile -q --no-cache " + (dir / "m.mat").string() + " -o " + (dir / "pkg").string() +
+                        " --depfile " + (dir / "pkg.d").string());
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  const std::string dep = test::readFile(dir / "pkg.d");
+  for (const fs::path& f : {dir / "m.mat", dir / "shared" / "bricks.mat", dir / "shared" / "fresnel.mat"})
+    CHECK_THAT(dep, Catch::Contains(fs::absolute(f).lexically_normal().generic_string()));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("Engine mode moves the material parameters to a std140 block; Probe mode keeps them", "[package]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   MaterialDesc m = loadMaterialJson(material("worn_car_paint.json"), lib);

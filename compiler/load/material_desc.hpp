@@ -76,6 +76,9 @@ struct MaterialSource {
   std::vector<SourceParam> params;
   SurfaceCode surface;
   std::vector<Diagnostic> warnings;  // e.g. an unsupported glTF extension, reported by the CLI
+  // Files read besides `file` (the macro form's #includes), in reading order: a build system
+  // must rerun the compile when one changes (compile --depfile).
+  std::vector<std::string> includedFiles;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -93,6 +96,7 @@ struct MaterialDesc {
   std::vector<MaterialParam> params;
   SurfaceCode surface;
   std::string sourceFile;
+  std::vector<std::string> includedFiles;  // MaterialSource::includedFiles
   std::map<std::string, SourceLocation> brickLocations;  // role -> where it was chosen
   std::vector<Diagnostic> warnings;
 

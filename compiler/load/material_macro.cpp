@@ -367,6 +367,7 @@ class MacroReader {
     }
     auto text = readTextFile(*resolved, where, "macro-form include file", sink_);
     if (!text) return;
+    src_.includedFiles.push_back(*resolved);
     stack_.push_back({key, *resolved});
     readFile(*text, *resolved, false);
     stack_.pop_back();

@@ -69,6 +69,7 @@ class Resolver {
   MaterialDesc run() {
     desc_.form = src_.form;
     desc_.sourceFile = src_.file;
+    desc_.includedFiles = src_.includedFiles;
     desc_.description = src_.description;
     desc_.warnings = src_.warnings;
     resolveName();

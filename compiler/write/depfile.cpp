@@ -53,6 +53,7 @@ std::vector<std::string> compileInputs(const ShaderLibrary& lib, const std::vect
   for (const auto& p : perms) {
     const MaterialDesc& m = *p.material;
     if (!m.sourceFile.empty() && fs::exists(m.sourceFile)) files.insert(absolutePath(m.sourceFile));
+    for (const auto& inc : m.includedFiles) files.insert(absolutePath(inc));
     if (m.surface.present() && fs::exists(m.surface.where.file)) files.insert(absolutePath(m.surface.where.file));
     files.insert(absolutePath(lib.root() / "models" / (m.model + ".json")));
   }

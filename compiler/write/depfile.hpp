@@ -11,8 +11,8 @@
 
 namespace mb {
 
-// Absolute, sorted, each once: `extra` (the scene file), every permutation's material source
-// and surface file, the shader library's manifest.json, slot.json files and model JSONs, and
+// Absolute, sorted, each once: `extra` (the scene file), every permutation's material source,
+// its macro-form #includes and surface file, the shader library's manifest.json, slot.json files and model JSONs, and
 // every GLSL file the emitted permutations include (from their #line directives).
 std::vector<std::string> compileInputs(const ShaderLibrary& lib, const std::vector<Permutation>& perms,
                                        const std::vector<BuiltPermutation>& built,
