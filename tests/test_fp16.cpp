@@ -178,6 +178,44 @@ TEST_CASE("an fp16 permutation runs on lavapipe; its NaN/Inf are reported", "[fp
   requireNoLayerMessages(gpu);
 }
 
+TEST_CASE("the mediump (ESSL) form of fp16 permutations computes the fp32 function on lavapipe, but for its caps", "[fp16][harness]") {
+  // Lavapipe ignores RelaxedPrecision, so the mediump form runs at fp32 there. Against the
+  // fp16 permutation's own reference (its bricks, the fp16 roughness floor, the fp16 domain)
+  // each value must be within the fp32 tolerance, except where one of MB_FP16's half-range
+  // guards caps it (Filament's saturateMediump, min(x, 65504), in V_Kelemen, the coat and
+  // sheen lobes; the sheen's cut below n.l = 1e-3): those only ever lower a value, and only
+  // at degenerate geometry. This checks what the form changes besides the driver's choice of
+  // precision: the guards, the highp buffer loads, the record layout.
+  const ShaderLibrary& lib = test::shippedLibrary();
+  harness::VulkanHarness gpu(harness::testDeviceOptions());
+  for (const char* name : {"filament_plastic", "clearcoat_metal", "satin_sheen", "velvet_green"}) {
+    MaterialDesc m = loadMaterialJson((test::sourceDir() / "materials" / (std::string(name) + ".json")).string(), lib);
+    Permutation perm;
+    perm.material = &m;
+    perm.lights = {"dir", "point", "spot"};
+    perm.environment = "ibl_lut";
+    perm.precision = "fp32";
+    const Tolerance tol = buildPermutationProbe(lib, perm).tolerance;
+    perm.precision = "fp16";
+    ProbeProgram p = buildPermutationProbe(lib, perm);
+    p.shader = emitPermutation(lib, perm, false, EmitMode::Probe, true);
+    p.compiled = compileComputeGlsl(p.shader.glsl, p.shader.fileName);
+    p.precision = ShaderPrecision::Fp16Mediump;
+    ProbeRun run = runProbe(gpu, p, generateSamples(p.shader.layout, p.domain, 4096, 5));
+    size_t capped = 0, wrong = 0;
+    for (size_t i = 0; i < run.gpu.size(); ++i) {
+      const double g = run.gpu[i], r = run.reference[i];
+      REQUIRE(std::isfinite(g));
+      if (std::abs(g - r) <= tol.abs + tol.rel * std::abs(r) + run.conditioning[i]) continue;
+      (g < r ? capped : wrong) += 1;
+    }
+    INFO(name << ": " << capped << " capped and " << wrong << " wrong of " << run.gpu.size() << " values");
+    CHECK(wrong == 0);
+    CHECK(capped * 200 < run.gpu.size());  // under 0.5 %
+  }
+  requireNoLayerMessages(gpu);
+}
+
 TEST_CASE("validate --precision fp16 runs a brick and exits 0", "[fp16][cli]") {
   auto r = test::runCli("validate --brick d_ggx --precision fp16 --samples 512 --json");
   INFO(r.output);

@@ -3,6 +3,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
 
 #include "load/scene_desc.hpp"
 #include "permute/axes.hpp"
@@ -111,17 +114,20 @@ TEST_CASE("quality: defaulted roles follow the table, chosen roles keep the mate
   CHECK(applyQuality(chose, "low", lib).bricks.at("sh_irradiance") == "sh9_irradiance");
 }
 
-TEST_CASE("the quality table is checked at load: unknown level, role, brick of another slot", "[scene]") {
+namespace {
+
+// The codes of the diagnostics the library loader gives after replacing `from` by `to` in a
+// copy of the shipped shaderlib's models/<modelFile>; every one must have a position.
+std::vector<std::string> libraryCodesAfterEdit(const std::string& modelFile, const std::string& from,
+                                               const std::string& to) {
   namespace fs = std::filesystem;
-  fs::path root = fs::temp_directory_path() / ("mb_scene_quality_" + std::to_string(::getpid()));
+  fs::path root = fs::temp_directory_path() / ("mb_scene_library_" + std::to_string(::getpid()));
   fs::remove_all(root);
   fs::copy(test::sourceDir() / "shaderlib", root, fs::copy_options::recursive);
-  std::string p = (root / "models/cloth.json").string();
+  std::string p = (root / "models" / modelFile).string();
   std::string text = test::readFile(p);
-  std::string from = R"("medium": {})";
   REQUIRE(text.find(from) != std::string::npos);
-  text.replace(text.find(from), from.size(),
-               R"("medium": {"sh_irradianse": "sh9_irradiance", "mip_mapping": "d_ggx"}, "ultra": {})");
+  text.replace(text.find(from), from.size(), to);
   std::ofstream(p) << text;
   std::vector<Diagnostic> ds;
   try {
@@ -132,12 +138,105 @@ TEST_CASE("the quality table is checked at load: unknown level, role, brick of a
   fs::remove_all(root);
   std::vector<std::string> codes;
   for (const auto& d : ds) {
+    INFO(d.message);
     CHECK(d.where.line > 0);
     codes.push_back(d.code);
   }
+  return codes;
+}
+
+}  // namespace
+
+TEST_CASE("the quality table is checked at load: unknown level, role, brick of another slot", "[scene]") {
+  auto codes = libraryCodesAfterEdit("cloth.json", R"("medium": {})",
+                                     R"("medium": {"sh_irradianse": "sh9_irradiance", "mip_mapping": "d_ggx"}, "ultra": {})");
   CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-FIELD") == 1);  // "ultra"
   CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-ROLE") == 1);
   CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-BRICK") == 1);
+}
+
+TEST_CASE("brick rules are checked at load: unknown role, brick of another slot, no bricks, no reason", "[scene]") {
+  auto codes = libraryCodesAfterEdit(
+      "standard.json", R"("incompatible": [)",
+      R"("incompatible": [{"bricks": {"dfg_lutt": "dfg_lut_ue4", "env_brdf": "d_ggx"}, "reason": "x"},
+                          {"bricks": {}, "reason": "x"}, {"bricks": {"dfg_lut": "dfg_lut_ue4"}},)");
+  CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-ROLE") == 1);
+  CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-BRICK") == 1);
+  CHECK(std::count(codes.begin(), codes.end(), "E-FIELD-TYPE") == 1);     // no bricks
+  CHECK(std::count(codes.begin(), codes.end(), "E-MISSING-FIELD") == 1);  // no reason
+}
+
+TEST_CASE("brick rules: an incompatible pair is invalid only where both roles are active and bound to it", "[scene]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  const ShadingModel& standard = model("standard");
+  REQUIRE(standard.incompatible.size() == 2);
+  MaterialDesc m = material("ue4_metal");
+  m.bricks["env_brdf"] = "env_brdf_approx_nonmetal";
+  m.brickLocations["env_brdf"] = SourceLocation("metal.json", 9, 17);
+  Permutation p;
+  p.material = &m;
+  p.lights = {"dir"};
+  p.environment = "ibl_analytic";
+  auto broken = brokenBrickRule(standard, p);
+  REQUIRE(broken);
+  CHECK(broken->rule == &standard.incompatible[1]);
+  CHECK(broken->message.find("env_brdf = env_brdf_approx_nonmetal") != std::string::npos);
+  CHECK(invalidReason(standard, p) == broken->message);
+  CHECK(invalidLocation(standard, p).line == 9);
+  // env_brdf is not called with the LUT, nor energy compensation without an IBL mode.
+  for (const char* env : {"ibl_lut", "sh", "none"}) {
+    p.environment = env;
+    CHECK(!invalidReason(standard, p));
+  }
+  // Low quality binds energy_compensation_none: the pair is gone.
+  MaterialDesc low = applyQuality(m, "low", lib);
+  p.material = &low;
+  p.environment = "ibl_analytic";
+  p.quality = "low";
+  CHECK(!brokenBrickRule(standard, p));
+  // The UE4-layout LUT with the DESIGN.md-layout compensation, in ibl_lut only.
+  MaterialDesc ue4Lut = material("ue4_metal");
+  ue4Lut.bricks["dfg_lut"] = "dfg_lut_ue4";
+  p.material = &ue4Lut;
+  p.quality = "high";
+  p.environment = "ibl_lut";
+  CHECK(brokenBrickRule(standard, p));
+  CHECK(invalidLocation(standard, p).line == 0);  // not chosen in a file: the material file
+  p.environment = "ibl_analytic";
+  CHECK(!brokenBrickRule(standard, p));
+  ue4Lut.bricks["energy_compensation"] = "energy_compensation_none";
+  p.environment = "ibl_lut";
+  CHECK(!brokenBrickRule(standard, p));
+}
+
+TEST_CASE("a scene that needs a permutation breaking a brick rule is refused at the material's entry", "[scene]") {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / ("mb_scene_rule_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  auto j = nlohmann::json::parse(test::readFile(test::sourceDir() / "materials" / "ue4_metal.json"));
+  j["name"] = "mobile_metal";
+  j["bricks"]["env_brdf"] = "env_brdf_approx_nonmetal";
+  std::ofstream(dir / "metal.json") << j.dump(2);
+  auto write = [&](const std::string& quality) {
+    std::ofstream(dir / "scene.json") << R"({"lights": [{"type": "dir"}], "environment": ["sh", "ibl_analytic"],
+      "quality": )" << quality << R"(, "materials": [{"file": "metal.json"}]})";
+    return loadScene((dir / "scene.json").string(), test::shippedLibrary());
+  };
+  // Low quality drops the compensation: valid.
+  CHECK(planScene(write(R"("low")"), test::shippedLibrary()).required.size() == 2);
+  std::vector<Diagnostic> ds;
+  try {
+    planScene(write(R"(["low", "high"])"), test::shippedLibrary());
+  } catch (const DiagnosticError& e) {
+    ds = e.diagnostics();
+  }
+  fs::remove_all(dir);
+  REQUIRE(ds.size() == 1);
+  CHECK(ds[0].code == "E-PERMUTATION-INVALID");
+  CHECK(ds[0].where.line == 2);  // the material's entry in the scene
+  CHECK(ds[0].message.find("quality 'high'") != std::string::npos);
+  CHECK(ds[0].message.find("brick chosen at") != std::string::npos);
 }
 
 TEST_CASE("folding: neutral in every use folds; a non-neutral, unstated or surface-written input keeps", "[scene]") {

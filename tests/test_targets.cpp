@@ -6,6 +6,7 @@
 #include "compile/glsl_compiler.hpp"
 #include "compile/target_checks.hpp"
 #include "compile/targets.hpp"
+#include "emit/emitter.hpp"
 #include "support/build_support.hpp"
 
 using namespace mb;
@@ -52,30 +53,55 @@ TEST_CASE("fp32 permutations cross-compile to every target and pass its check", 
   }
 }
 
-TEST_CASE("fp16: GLSL 450, HLSL (min16float) and MSL are built; ESSL 3.10 is refused with the reason", "[targets][fp16]") {
+TEST_CASE("fp16: GLSL 450, HLSL (min16float) and MSL from the half module, ESSL 3.10 from the mediump form", "[targets][fp16]") {
   const ShaderLibrary& lib = test::shippedLibrary();
-  auto perms = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir", "point"}, "ibl_lut", "fp16");
+  auto perms = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic", "clearcoat_metal"}), {"dir", "point"},
+                                    "ibl_lut", "fp16");
   BuildOptions o;
-  o.targets = {"spirv", "glsl450", "hlsl", "msl"};
+  o.targets = allTargets();
   auto built = buildPermutations(lib, perms, o);
-  REQUIRE(built.size() == 1);
-  const auto& t = built[0].artifacts.targets;
-  CHECK(t.at("glsl450").find("GL_AMD_gpu_shader_half_float") != std::string::npos);
-  CHECK(t.at("hlsl").find("min16float") != std::string::npos);
-  CHECK(t.at("msl").find("half") != std::string::npos);
-  o.targets = {"spirv", "essl310"};
-  try {
-    buildPermutations(lib, perms, o);
-    FAIL("essl310 of an fp16 permutation was built");
-  } catch (const DiagnosticError& e) {
-    REQUIRE(e.diagnostics().size() == 1);
-    const Diagnostic& d = e.diagnostics()[0];
-    INFO(formatDiagnostic(d));
-    CHECK(d.code == "E-TARGET-FAILED");
-    CHECK(d.where.file == built[0].shader.fileName);
-    CHECK(d.message.find("essl310") != std::string::npos);
-    CHECK(d.message.find("no 16-bit float type") != std::string::npos);
+  REQUIRE(built.size() == 2);
+  for (const auto& b : built) {
+    INFO(b.shader.key);
+    const auto& t = b.artifacts.targets;
+    CHECK(t.at("glsl450").find("GL_AMD_gpu_shader_half_float") != std::string::npos);
+    CHECK(t.at("hlsl").find("min16float") != std::string::npos);
+    CHECK(t.at("msl").find("half") != std::string::npos);
+    // ESSL: no 16-bit type, the arithmetic mediump, the record buffers full precision.
+    const std::string& es = t.at("essl310");
+    CHECK(es.rfind("#version 310 es\n", 0) == 0);
+    CHECK(es.find("float16") == std::string::npos);
+    CHECK(es.find("GL_AMD") == std::string::npos);
+    CHECK(es.find("mediump vec3") != std::string::npos);
+    CHECK(es.find("    float mbIn[];") != std::string::npos);
+    CHECK(es.find("mediump float mbIn") == std::string::npos);
+    // The half module itself cannot go to ESSL: crossCompile says why.
+    try {
+      crossCompile(b.artifacts.spirv, "essl310", b.shader.fileName);
+      FAIL("essl310 of a Float16 module was built");
+    } catch (const DiagnosticError& e) {
+      REQUIRE(e.diagnostics().size() == 1);
+      CHECK(e.diagnostics()[0].code == "E-TARGET-FAILED");
+      CHECK(e.diagnostics()[0].message.find("no 16-bit float type") != std::string::npos);
+    }
   }
+  // The mediump form: MB_FP16's guards and the fp16 roughness floor, fp32 types, RelaxedPrecision.
+  EmittedShader mediump = emitPermutation(lib, perms[0], false, EmitMode::Engine, true);
+  CHECK(mediump.fileName == perms[0].key() + ".mediump.glsl");
+  CHECK(mediump.glsl.find("precision mediump float;") != std::string::npos);
+  CHECK(mediump.glsl.find("#define MB_FP16 1") != std::string::npos);
+  CHECK(mediump.glsl.find("float16_t") == std::string::npos);
+  CHECK(std::find(mediump.bricks.begin(), mediump.bricks.end(), "roughness_clamped_fp16") != mediump.bricks.end());
+  auto relaxedCount = [](const std::vector<uint32_t>& spirv) {
+    constexpr uint32_t kOpDecorate = 71, kRelaxedPrecision = 0;
+    size_t n = 0;
+    for (size_t i = 5; i < spirv.size() && (spirv[i] >> 16); i += spirv[i] >> 16)
+      n += (spirv[i] & 0xffff) == kOpDecorate && (spirv[i] >> 16) == 3 && spirv[i + 2] == kRelaxedPrecision;
+    return n;
+  };
+  CHECK(relaxedCount(compileComputeGlsl(mediump.glsl, mediump.fileName).spirv) > 100);
+  auto fp32 = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir", "point"}, "ibl_lut");
+  CHECK(relaxedCount(compileComputeGlsl(emitPermutation(lib, fp32[0], false, EmitMode::Engine, true).glsl, "fp32").spirv) == 0);
 }
 
 TEST_CASE("each target's check rejects a broken output", "[targets]") {

@@ -102,7 +102,14 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
     for (const auto& b : built)
       std::printf("compiled %-52s %7.2f ms  %5zu instructions  %s%s\n", b.shader.key.c_str(), b.compileMs,
                   spirvInstructionCount(b.artifacts.spirv), b.spirvHash.c_str(), b.fromCache ? "  (cached)" : "");
-  if (a.explain) std::fputs(explainText(plan, built.size(), stats.uniqueSpirv).c_str(), stdout);
+  if (a.explain) {
+    // Every required permutation is in `built`; say how many glslang built now and how many
+    // the cache or an identical emitted GLSL supplied.
+    const size_t sharedGlsl = stats.permutations - stats.compiled - stats.cacheHits;
+    std::string how = std::to_string(stats.compiled) + " built now, " + std::to_string(stats.cacheHits) + " from the cache" +
+                      (sharedGlsl ? ", " + std::to_string(sharedGlsl) + " sharing another's identical GLSL" : "");
+    std::fputs(explainText(plan, built.size(), stats.uniqueSpirv, how).c_str(), stdout);
+  }
 
   if (!a.out.empty()) {
     PackageWriter pkg;

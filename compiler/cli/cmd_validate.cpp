@@ -1,8 +1,10 @@
 // matbricks validate: run probes on the GPU against the double references.
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 
 #include "cli/cli_common.hpp"
+#include "permute/axes.hpp"
 #include "permute/permutation.hpp"
 #include "validate/validation.hpp"
 
@@ -23,7 +25,9 @@ struct ValidateArgs {
 };
 
 // The permutations validated for one material: the model's light types together, once per
-// environment mode, both narrowed by --lights / --environment.
+// environment mode, both narrowed by --lights / --environment. A mode in which the material's
+// bricks break one of the model's brick rules is skipped with a note when the user did not
+// ask for it (the material may be meant for other modes); asked for, it is an error.
 std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const ShaderLibrary& lib,
                                                 const ValidateArgs& a) {
   std::vector<Permutation> out;
@@ -33,6 +37,12 @@ std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const Sha
       continue;
     if (!a.lights.empty()) perm.lights = canonicalLights(a.lights);
     perm.precision = a.precision;
+    if (a.environments.empty())
+      if (auto broken = brokenBrickRule(*lib.findModel(m.model), perm)) {
+        std::fprintf(stderr, "%s: note: skipping environment '%s': %s\n", m.sourceFile.c_str(), perm.environment.c_str(),
+                     broken->message.c_str());
+        continue;
+      }
     out.push_back(perm);
   }
   return out;

@@ -28,6 +28,10 @@ using Clock = std::chrono::steady_clock;
 
 struct CompileUnit {
   std::string glsl;
+  // fp16 units with the essl310 target: the same permutation as mediump GLSL
+  // (emitPermutation's `mediump`), compiled separately for ESSL, which has no 16-bit types.
+  std::string mediumpGlsl;
+  std::string mediumpDisplayName;
   std::string displayName;  // of the first permutation that emitted it
   CompileOptions compile;
   std::string cacheKey;
@@ -49,11 +53,12 @@ std::vector<std::string> crossTargets(const std::vector<std::string>& requested)
 
 // Everything that affects a unit's output (shader_cache.hpp).
 std::string unitKey(const ShaderLibrary& lib, const EmittedShader& shader, const CompileOptions& co,
-                    const std::vector<std::string>& targets) {
+                    const std::vector<std::string>& targets, const std::string& mediumpGlsl = "") {
   std::vector<std::string> parts{ShaderCache::kFormatVersion, MB_VERSION, toolchainVersion(), spirvCrossVersion(),
                                  co.optimize ? "optimize" : "no-optimize", co.validate ? "validate" : "no-validate"};
   for (const auto& t : crossTargets(targets)) parts.push_back(t + ": " + targetOptions(t));
   parts.push_back(shader.glsl);
+  parts.push_back(mediumpGlsl);
   for (const auto& id : shader.bricks) {
     parts.push_back(id);
     if (const Brick* b = lib.findBrick(id)) {
@@ -71,7 +76,16 @@ void buildUnit(CompileUnit& u, const std::vector<std::string>& targets, const Sh
     auto t0 = Clock::now();
     CompiledArtifacts a;
     a.spirv = compileComputeGlsl(u.glsl, u.displayName, u.compile).spirv;
-    for (const auto& t : targets) a.targets[t] = crossCompile(a.spirv, t, u.displayName);
+    for (const auto& t : targets) {
+      if (t == "essl310" && !u.mediumpGlsl.empty()) {
+        // RelaxedPrecision survives spirv-opt's passes, and no 16-bit constant is involved.
+        CompileOptions relaxed;
+        a.targets[t] = crossCompile(compileComputeGlsl(u.mediumpGlsl, u.mediumpDisplayName, relaxed).spirv, t,
+                                    u.mediumpDisplayName);
+      } else {
+        a.targets[t] = crossCompile(a.spirv, t, u.displayName);
+      }
+    }
     a.reflection = reflectSpirv(a.spirv);
     u.compileMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     cache.store(u.cacheKey, a);
@@ -132,7 +146,16 @@ std::vector<BuiltPermutation> buildPermutations(const ShaderLibrary& lib, const 
       u.glsl = out[i].shader.glsl;
       u.displayName = out[i].shader.fileName;
       u.compile = co;
-      u.cacheKey = unitKey(lib, out[i].shader, co, targets);
+      if (perms[i].precision == "fp16" && std::find(targets.begin(), targets.end(), "essl310") != targets.end()) {
+        try {
+          EmittedShader relaxed = emitPermutation(lib, perms[i], false, options.mode, true);
+          u.mediumpGlsl = relaxed.glsl;
+          u.mediumpDisplayName = relaxed.fileName;
+        } catch (const DiagnosticError& e) {
+          errors.insert(errors.end(), e.diagnostics().begin(), e.diagnostics().end());
+        }
+      }
+      u.cacheKey = unitKey(lib, out[i].shader, co, targets, u.mediumpGlsl);
       units.push_back(std::move(u));
     }
     unitOf[i] = it->second;

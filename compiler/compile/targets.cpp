@@ -70,11 +70,12 @@ std::string crossCompile(const std::vector<uint32_t>& spirv, const std::string& 
   // ES 3.10 has no 16-bit float type at all: SPIRV-Cross needs GL_AMD_gpu_shader_half_float or
   // GL_NV_gpu_shader5 for one, both desktop-only, and would emit '#error No extension available
   // for FP16'. Refuse here with the reason rather than ship that.
+  // buildPermutations gives essl310 the permutation's mediump form instead (docs/targets.md).
   if (fp16 && target == "essl310")
     fail(displayName, target,
          "ESSL 3.10 has no 16-bit float type (SPIRV-Cross needs GL_AMD_gpu_shader_half_float or "
-         "GL_NV_gpu_shader5, which ES lacks); build essl310 from the fp32 permutation, which ES drivers "
-         "may run at mediump");
+         "GL_NV_gpu_shader5, which ES lacks): cross-compile the permutation's mediump form "
+         "(emitPermutation with mediump), whose floats ES drivers run at 16 bits");
   SpvcModule m(spirv, backendOf(target));
   if (!m.ok()) fail(displayName, target, "SPIRV-Cross: " + m.error());
   spvc_compiler c = m.compiler();
@@ -113,7 +114,7 @@ std::string crossCompile(const std::vector<uint32_t>& spirv, const std::string& 
 
 std::string targetOptions(const std::string& target) {
   if (target == "glsl450") return "glsl " + std::to_string(kGlslVersion) + " non-vulkan push-as-ubo";
-  if (target == "essl310") return "essl " + std::to_string(kEsslVersion) + " non-vulkan push-as-ubo no-fp16";
+  if (target == "essl310") return "essl " + std::to_string(kEsslVersion) + " non-vulkan push-as-ubo fp16-as-mediump";
   if (target == "hlsl") return "hlsl sm" + std::to_string(kHlslShaderModel) + " min16float";
   if (target == "msl") return "msl " + std::to_string(kMslVersion) + " macos";
   return target;

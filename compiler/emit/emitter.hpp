@@ -64,15 +64,15 @@ EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
 // instead of 1, so that stress can drive very large and very small light intensities.
 // Throws DiagnosticError (E-PERMUTATION-INVALID) for lights or an environment the model
 // does not shade.
+// With `mediump`, an fp16 permutation is written as ShaderPrecision::Fp16Mediump (precision.hpp)
+// for targets without 16-bit types; an fp32 one is unchanged.
 EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput = false,
-                             EmitMode mode = EmitMode::Probe);
+                             EmitMode mode = EmitMode::Probe, bool mediump = false);
 // Permutation::precision as an enum; throws DiagnosticError for an unknown name.
 ShaderPrecision precisionOf(const Permutation& perm);
 // The brick bound to `role` in this permutation (the material's choice, adjusted for the
 // precision by brickForPrecision).
 std::string boundBrick(const Permutation& perm, const std::string& role);
-// Whether a model role exists in this permutation (its feature, lights, environment).
-bool roleActive(const ModelRole& role, const Permutation& perm);
 // role -> brick id of every role the permutation's shader calls, in the model's order.
 std::vector<std::pair<std::string, std::string>> boundRoles(const ShaderLibrary& lib, const Permutation& perm);
 

@@ -2,7 +2,7 @@
 
 namespace mb {
 
-const char* precisionName(ShaderPrecision p) { return p == ShaderPrecision::Fp16 ? "fp16" : "fp32"; }
+const char* precisionName(ShaderPrecision p) { return isHalf(p) ? "fp16" : "fp32"; }
 
 std::optional<ShaderPrecision> parsePrecision(const std::string& name) {
   if (name == "fp32") return ShaderPrecision::Fp32;
@@ -11,7 +11,7 @@ std::optional<ShaderPrecision> parsePrecision(const std::string& name) {
 }
 
 double minPerceptualRoughness(ShaderPrecision p) {
-  return p == ShaderPrecision::Fp16 ? kMinPerceptualRoughnessFp16 : kMinPerceptualRoughnessFp32;
+  return isHalf(p) ? kMinPerceptualRoughnessFp16 : kMinPerceptualRoughnessFp32;
 }
 
 double minAlpha(ShaderPrecision p) {
@@ -20,7 +20,7 @@ double minAlpha(ShaderPrecision p) {
 }
 
 std::string brickForPrecision(const std::string& brickId, ShaderPrecision p) {
-  if (p == ShaderPrecision::Fp16 && brickId == "roughness_clamped") return "roughness_clamped_fp16";
+  if (isHalf(p) && brickId == "roughness_clamped") return "roughness_clamped_fp16";
   return brickId;
 }
 

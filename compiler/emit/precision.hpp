@@ -9,7 +9,14 @@
 
 namespace mb {
 
-enum class ShaderPrecision { Fp32, Fp16 };
+// Fp16Mediump is the fp16 axis value written for targets without 16-bit types (ESSL 3.10):
+// fp32 types under `precision mediump float;` (SPIR-V RelaxedPrecision), with MB_FP16's
+// guards and the fp16 roughness floor. Only the emitter produces it; a permutation's
+// precision is "fp32" or "fp16".
+enum class ShaderPrecision { Fp32, Fp16, Fp16Mediump };
+
+// Fp16 or Fp16Mediump: the half-precision guards, clamps and domains apply.
+inline bool isHalf(ShaderPrecision p) { return p != ShaderPrecision::Fp32; }
 
 const char* precisionName(ShaderPrecision p);  // "fp32", "fp16"
 std::optional<ShaderPrecision> parsePrecision(const std::string& name);

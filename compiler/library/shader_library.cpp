@@ -417,7 +417,7 @@ class LibraryLoader {
     if (!doc) return;
     JsonFields f(*doc, sink_);
     if (!f.object("", {"name", "description", "skeleton", "requires", "lights", "environments", "roles", "inputs"},
-                  {"features", "parts", "quality"}, "shading model '" + name + "'"))
+                  {"features", "parts", "quality", "incompatible"}, "shading model '" + name + "'"))
       return;
     ShadingModel m;
     m.name = name;
@@ -437,7 +437,33 @@ class LibraryLoader {
     m.roles = readRoles(f, m);
     m.inputs = readModelInputs(f, m);
     if (f.find("/quality")) m.quality = readQuality(f, m);
+    if (f.find("/incompatible")) m.incompatible = readIncompatible(f, m);
     data_.models.push_back(std::move(m));
+  }
+
+  // One "role": "brick" member of a model table (quality levels, incompatible pairs): the
+  // role must be the model's and the brick of that role's slot. `what` starts the message.
+  std::optional<std::string> roleBinding(JsonFields& f, const std::string& ptr, const std::string& roleName,
+                                         const ShadingModel& m, const std::string& what) {
+    auto id = f.string(ptr);
+    const ModelRole* role = m.findRole(roleName);
+    if (!role) {
+      std::vector<std::string> roleNames;
+      for (const auto& r : m.roles) roleNames.push_back(r.role);
+      f.error("E-UNKNOWN-ROLE", f.keyAt(ptr),
+              what + " names unknown role '" + roleName + "': model '" + m.name + "' has " + quotedList(roleNames),
+              didYouMean(roleName, roleNames));
+      return std::nullopt;
+    }
+    if (!id) return std::nullopt;
+    const Brick* b = findLoadedBrick(*id);
+    if (!b || b->slot != role->slot) {
+      f.error("E-UNKNOWN-BRICK", f.valueAt(ptr),
+              what + " binds '" + *id + "' to role '" + role->role + "', but it is not a brick of slot '" + role->slot + "'",
+              didYouMean(*id, loadedBricksOf(role->slot)));
+      return std::nullopt;
+    }
+    return id;
   }
 
   // "quality": {"low": {role: brick}, "medium": {...}}. "high" is the default bindings and is
@@ -447,34 +473,41 @@ class LibraryLoader {
     static const std::vector<std::string> levels{"low", "medium"};
     std::map<std::string, std::map<std::string, std::string>> out;
     if (!f.object("/quality", {}, levels, "quality table")) return out;
-    std::vector<std::string> roleNames;
-    for (const auto& r : m.roles) roleNames.push_back(r.role);
     for (const auto& level : levels) {
       std::string lptr = JsonFields::member("/quality", level);
       if (!f.find(lptr) || !f.isObject(lptr)) continue;
       auto& bindings = out[level];
-      for (const auto& item : f.find(lptr)->items()) {
-        std::string ptr = JsonFields::member(lptr, item.key());
-        auto id = f.string(ptr);
-        const ModelRole* role = m.findRole(item.key());
-        if (!role) {
-          f.error("E-UNKNOWN-ROLE", f.keyAt(ptr),
-                  "quality '" + level + "' binds unknown role '" + item.key() + "': model '" + m.name + "' has " +
-                      quotedList(roleNames),
-                  didYouMean(item.key(), roleNames));
-          continue;
-        }
-        if (!id) continue;
-        const Brick* b = findLoadedBrick(*id);
-        if (!b || b->slot != role->slot) {
-          f.error("E-UNKNOWN-BRICK", f.valueAt(ptr),
-                  "quality '" + level + "' binds '" + *id + "' to role '" + role->role + "', but it is not a brick of slot '" +
-                      role->slot + "'",
-                  didYouMean(*id, loadedBricksOf(role->slot)));
-          continue;
-        }
-        bindings[role->role] = *id;
+      for (const auto& item : f.find(lptr)->items())
+        if (auto id = roleBinding(f, JsonFields::member(lptr, item.key()), item.key(), m, "quality '" + level + "'"))
+          bindings[item.key()] = *id;
+    }
+    return out;
+  }
+
+  // "incompatible": [{"bricks": {role: brick, ...}, "reason": "..."}] (docs/scenes.md "Axes
+  // and validity"): brick combinations that make no sense in this model.
+  std::vector<BrickRule> readIncompatible(JsonFields& f, const ShadingModel& m) {
+    std::vector<BrickRule> out;
+    if (!f.isArray("/incompatible")) return out;
+    for (size_t i = 0; i < f.find("/incompatible")->size(); ++i) {
+      std::string ptr = JsonFields::element("/incompatible", i);
+      if (!f.object(ptr, {"bricks", "reason"}, {}, "incompatible-bricks rule")) continue;
+      BrickRule rule;
+      rule.reason = f.string(ptr + "/reason").value_or("");
+      bool complete = f.isObject(ptr + "/bricks");
+      if (complete && f.find(ptr + "/bricks")->empty()) {
+        f.error("E-FIELD-TYPE", f.valueAt(ptr + "/bricks"), "an incompatible-bricks rule names no bricks: expected role: brick pairs");
+        complete = false;
       }
+      if (complete)
+        for (const auto& item : f.find(ptr + "/bricks")->items()) {
+          auto id = roleBinding(f, JsonFields::member(ptr + "/bricks", item.key()), item.key(), m, "incompatible-bricks rule");
+          if (id)
+            rule.bricks.emplace_back(item.key(), *id);
+          else
+            complete = false;
+        }
+      if (complete && !rule.reason.empty()) out.push_back(std::move(rule));
     }
     return out;
   }

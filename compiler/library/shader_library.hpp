@@ -99,6 +99,14 @@ struct ModelFeature {
   std::vector<std::string> requiredUnits;
 };
 
+// A combination of bricks that makes no sense in a model (manifest "incompatible"): a
+// permutation in which every listed role is active and bound to the listed brick is invalid
+// (permute/axes.hpp invalidReason), for `reason`.
+struct BrickRule {
+  std::vector<std::pair<std::string, std::string>> bricks;  // role -> brick id, as listed
+  std::string reason;
+};
+
 struct ShadingModel {
   std::string name;
   std::string description;
@@ -114,6 +122,7 @@ struct ShadingModel {
   // default at that level (docs/scenes.md "Quality"). "high" is the default bindings; a level
   // absent here is not defined by the model (permute/axes.hpp invalidReason).
   std::map<std::string, std::map<std::string, std::string>> quality;
+  std::vector<BrickRule> incompatible;
 
   const ModelRole* findRole(const std::string& role) const;
   const ModelFeature* findFeature(const std::string& feature) const;

@@ -66,7 +66,44 @@ std::optional<std::string> invalidReason(const ShadingModel& model, const Permut
   p.environment = perm.environment;
   p.precision = perm.precision;
   p.quality = perm.quality;
-  return invalidReason(model, p);
+  if (auto reason = invalidReason(model, p)) return reason;
+  if (auto broken = brokenBrickRule(model, perm)) return broken->message;
+  return std::nullopt;
+}
+
+bool roleActive(const ModelRole& role, const Permutation& perm) {
+  if (!role.feature.empty() && !perm.material->has(role.feature)) return false;
+  if (!role.lights.empty() &&
+      std::none_of(role.lights.begin(), role.lights.end(), [&](const std::string& t) { return perm.hasLight(t); }))
+    return false;
+  if (!role.environments.empty() && !contains(role.environments, perm.environment)) return false;
+  return true;
+}
+
+std::optional<BrokenBrickRule> brokenBrickRule(const ShadingModel& model, const Permutation& perm) {
+  for (const auto& rule : model.incompatible) {
+    bool broken = true;
+    std::string pairs;
+    for (const auto& [roleName, brick] : rule.bricks) {
+      const ModelRole* role = model.findRole(roleName);
+      auto bound = perm.material->bricks.find(roleName);
+      broken = broken && role && roleActive(*role, perm) && bound != perm.material->bricks.end() && bound->second == brick;
+      pairs += (pairs.empty() ? "" : " with ") + roleName + " = " + brick;
+    }
+    if (broken)
+      return BrokenBrickRule{&rule, "model '" + model.name + "' does not combine " + pairs + " (environment '" +
+                                        perm.environment + "', quality '" + perm.quality + "'): " + rule.reason};
+  }
+  return std::nullopt;
+}
+
+SourceLocation invalidLocation(const ShadingModel& model, const Permutation& perm) {
+  if (auto broken = brokenBrickRule(model, perm))
+    for (const auto& [role, brick] : broken->rule->bricks) {
+      auto chosen = perm.material->brickLocations.find(role);
+      if (chosen != perm.material->brickLocations.end()) return chosen->second;
+    }
+  return SourceLocation(perm.material->sourceFile, 0, 0);
 }
 
 std::vector<AxisSize> axisSizes(const ShadingModel& model) {

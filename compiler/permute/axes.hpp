@@ -28,8 +28,25 @@ struct AxisPoint {
 // with its reason): a light type / environment mode / feature the model does not have, an
 // unknown precision or quality, a quality level the model's manifest does not define.
 std::optional<std::string> invalidReason(const ShadingModel& model, const AxisPoint& point);
-// The same for a bound permutation (its material's features, its lights, ...).
+// The same for a bound permutation (its material's features, its lights, ...), and then the
+// model's brick rules (brokenBrickRule).
 std::optional<std::string> invalidReason(const ShadingModel& model, const Permutation& perm);
+
+// Whether a model role exists in this permutation (its feature, lights, environment).
+bool roleActive(const ModelRole& role, const Permutation& perm);
+
+// The first of the model's "incompatible" brick rules that the permutation's bindings break
+// (every role of the rule active and bound to the rule's brick), with its message. The rules
+// depend on the material's bindings, not on the axes alone, so they are judged per bound
+// permutation (after the quality level's bricks) and do not enter validCombinationCount.
+struct BrokenBrickRule {
+  const BrickRule* rule = nullptr;
+  std::string message;
+};
+std::optional<BrokenBrickRule> brokenBrickRule(const ShadingModel& model, const Permutation& perm);
+// Where to report an invalid permutation: for a broken brick rule, where the material chose
+// the first of the rule's bricks it chose itself; else the material file.
+SourceLocation invalidLocation(const ShadingModel& model, const Permutation& perm);
 
 // The size of each axis of a model's full product, as a keyword system would enumerate it:
 // features 2^k, lights 2^n light subsets, environments, precisions, qualities.

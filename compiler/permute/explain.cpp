@@ -23,7 +23,7 @@ std::string row(const std::string& label, size_t n, const std::string& why) {
 
 }  // namespace
 
-std::string explainText(const ScenePlan& plan, size_t compiled, size_t uniqueSpirv) {
+std::string explainText(const ScenePlan& plan, size_t compiled, size_t uniqueSpirv, const std::string& compiledHow) {
   std::ostringstream out;
   const size_t materials = plan.notes.size();
   std::string m = std::to_string(materials) + (materials == 1 ? " material" : " materials");
@@ -35,7 +35,7 @@ std::string explainText(const ScenePlan& plan, size_t compiled, size_t uniqueSpi
   std::string req = m;
   for (const auto& a : plan.requiredAxes) req += " x " + a.axis + " x" + std::to_string(a.values);
   out << row("required", plan.required.size(), req);
-  out << row("compiled", compiled, compiled == plan.required.size() ? "" : "DIFFERS from required");
+  out << row("compiled", compiled, compiled == plan.required.size() ? compiledHow : "DIFFERS from required");
   out << row("unique", uniqueSpirv, "by SPIR-V hash");
   for (const auto& n : plan.notes) {
     out << "material " << n.material << ":";

@@ -64,6 +64,18 @@ void reportInvalid(const SceneDesc& scene, const SceneMaterial& sm, const Shadin
   if (!named) report(point, "the scene's combination", scene.file.empty() ? sm.where : SourceLocation(scene.file, 1, 1));
 }
 
+// A brick rule of the model the material's bindings break at one of the scene's points: at
+// the material's entry in the scene, naming where the material chose the brick.
+void reportBrokenRule(const SceneMaterial& sm, const ShadingModel& model, const Permutation& p,
+                      const std::string& message, std::set<std::string>& said, DiagnosticSink& sink) {
+  SourceLocation chosen = invalidLocation(model, p);
+  std::string text = "material '" + sm.material.name + "' cannot be compiled for this scene: " + message +
+                     (chosen.line > 0 ? " (brick chosen at " + where(chosen) + ")" : "");
+  if (said.insert(text).second)
+    sink.error("E-PERMUTATION-INVALID", sm.where, text,
+               "bind another brick to one of these roles in the material, or drop the environment or quality level from the scene");
+}
+
 void noteQuality(MaterialPlanNote& note, const MaterialDesc& base, const MaterialDesc& q, const std::string& level) {
   for (const auto& [role, brick] : q.bricks) {
     auto was = base.bricks.find(role);
@@ -142,6 +154,10 @@ ScenePlan planScene(const SceneDesc& scene, const ShaderLibrary& lib) {
           p.precision = precision;
           p.quality = quality;
           p.folded = note.folded;
+          if (auto broken = brokenBrickRule(model, p)) {
+            reportBrokenRule(sm, model, p, broken->message, said, sink);
+            continue;
+          }
           plan.required.push_back(p);
         }
     }

@@ -45,7 +45,9 @@ ScenePlan planMaterials(const std::vector<MaterialDesc>& materials, const AxisPo
 
 // `--explain`: the possible, required, compiled and unique (by SPIR-V hash) counts, the axis
 // that multiplied each, and per material what was folded (docs/scenes.md shows an example).
-std::string explainText(const ScenePlan& plan, size_t compiled, size_t uniqueSpirv);
+// `compiledHow` annotates the compiled count (how many came from the cache).
+std::string explainText(const ScenePlan& plan, size_t compiled, size_t uniqueSpirv,
+                        const std::string& compiledHow = "");
 
 // A package's permutation keys against the plan's: "" when every required key is present,
 // else a unified-diff-like listing ("- key" required but missing, "+ key" present but not
