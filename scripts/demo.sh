@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # README command (a): install what is missing, build, then run the main job on the shipped
 # example library: compile every material (JSON and macro forms) and the glTF examples into
-# packages, and validate every permutation on lavapipe against the double-precision
-# references.
+# packages, compile exactly what each example scene needs to every target (with the counts
+# of --explain) and verify the packages against the scenes, and validate every permutation on
+# lavapipe against the double-precision references.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
@@ -17,5 +18,13 @@ echo
 echo "== matbricks compile examples/gltf/showroom.gltf examples/gltf/textured_props.gltf -o out/gltf-package"
 ./build/bin/matbricks compile examples/gltf/showroom.gltf examples/gltf/textured_props.gltf -o out/gltf-package
 echo
+for scene in showroom mobile gallery; do
+  echo "== matbricks compile --scene examples/scenes/$scene.json --explain --targets spirv,glsl450,essl310,hlsl,msl -o out/scene-$scene"
+  ./build/bin/matbricks compile --scene "examples/scenes/$scene.json" --explain \
+    --targets spirv,glsl450,essl310,hlsl,msl -o "out/scene-$scene"
+  echo "== matbricks verify --scene examples/scenes/$scene.json out/scene-$scene"
+  ./build/bin/matbricks verify --scene "examples/scenes/$scene.json" "out/scene-$scene"
+  echo
+done
 echo "== matbricks validate materials/*   (every light type the model shades, each environment mode)"
 ./build/bin/matbricks validate materials/*
