@@ -201,7 +201,9 @@ TEST_CASE("brick rules: an incompatible pair is invalid only where both roles ar
   p.quality = "high";
   p.environment = "ibl_lut";
   CHECK(brokenBrickRule(standard, p));
-  CHECK(invalidLocation(standard, p).line == 0);  // not chosen in a file: the material file
+  // Not chosen in the file: at the model's name.
+  CHECK(invalidLocation(standard, p).line == ue4Lut.modelWhere.line);
+  CHECK(ue4Lut.modelWhere.line > 0);
   p.environment = "ibl_analytic";
   CHECK(!brokenBrickRule(standard, p));
   ue4Lut.bricks["energy_compensation"] = "energy_compensation_none";

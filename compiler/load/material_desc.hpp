@@ -97,6 +97,7 @@ struct MaterialDesc {
   SurfaceCode surface;
   std::string sourceFile;
   std::vector<std::string> includedFiles;  // MaterialSource::includedFiles
+  SourceLocation modelWhere;                // where the model was named (invalid-axis errors point here)
   std::map<std::string, SourceLocation> brickLocations;  // role -> where it was chosen
   std::vector<Diagnostic> warnings;
 

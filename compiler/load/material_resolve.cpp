@@ -115,6 +115,7 @@ class Resolver {
       return nullptr;
     }
     desc_.model = model->name;
+    desc_.modelWhere = src_.model.where;
     return model;
   }
 

@@ -103,6 +103,8 @@ SourceLocation invalidLocation(const ShadingModel& model, const Permutation& per
       auto chosen = perm.material->brickLocations.find(role);
       if (chosen != perm.material->brickLocations.end()) return chosen->second;
     }
+  // A light, environment, feature, precision or quality the model lacks: at the model's name.
+  if (perm.material->modelWhere.line > 0) return perm.material->modelWhere;
   return SourceLocation(perm.material->sourceFile, 0, 0);
 }
 

@@ -45,7 +45,8 @@ struct BrokenBrickRule {
 };
 std::optional<BrokenBrickRule> brokenBrickRule(const ShadingModel& model, const Permutation& perm);
 // Where to report an invalid permutation: for a broken brick rule, where the material chose
-// the first of the rule's bricks it chose itself; else the material file.
+// the first of the rule's bricks it chose itself; else where it named its model; else the
+// material file.
 SourceLocation invalidLocation(const ShadingModel& model, const Permutation& perm);
 
 // The size of each axis of a model's full product, as a keyword system would enumerate it:
