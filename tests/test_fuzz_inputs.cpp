@@ -1,5 +1,6 @@
 // Seeded mutations of every shipped material description (materials/*.json|.mat, the glTF
-// examples) fed to the loader in-process (issue 4: "no input makes the compiler crash, hang,
+// examples) and scene (examples/scenes: JSON and glTF, loaded and planned) fed to the loader
+// in-process (issue 4: "no input makes the compiler crash, hang,
 // or leave a partial package"). Each mutant must load or throw DiagnosticError with coded
 // diagnostics; anything else (another exception, a crash) fails, and a watchdog turns a hang
 // into a failure naming the mutant. The mutations are the classic ones of file fuzzers:
@@ -9,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <chrono>
+#include <functional>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +20,8 @@
 #include <thread>
 #include <unistd.h>
 
+#include "load/scene_desc.hpp"
+#include "permute/scene_plan.hpp"
 #include "support/bad_input_cases.hpp"
 
 using namespace mb;
@@ -122,12 +126,20 @@ std::vector<fs::path> seeds() {
 
 enum class Outcome { Loaded, Rejected };
 
+using Loader = std::function<void(const std::string& path)>;
+
+void loadMaterial(const std::string& path) { loadMaterialFile(path, test::shippedLibrary()); }
+
+// A scene is read and planned (its materials loaded, folding and validity decided); nothing
+// is compiled.
+void loadAndPlanScene(const std::string& path) { planScene(loadScene(path, test::shippedLibrary()), test::shippedLibrary()); }
+
 // Loads `path` on a worker thread; a load that takes longer than the bound is a hang: the
 // mutant is printed and the process ends, because a stuck thread cannot be stopped.
-Outcome loadWithin(const std::string& path, const std::string& what, std::chrono::seconds bound) {
-  std::packaged_task<Outcome()> task([path] {
+Outcome loadWithin(const std::string& path, const std::string& what, std::chrono::seconds bound, const Loader& load) {
+  std::packaged_task<Outcome()> task([path, load] {
     try {
-      loadMaterialFile(path, test::shippedLibrary());
+      load(path);
       return Outcome::Loaded;
     } catch (const DiagnosticError& e) {
       for (const auto& d : e.diagnostics()) {
@@ -150,30 +162,28 @@ Outcome loadWithin(const std::string& path, const std::string& what, std::chrono
   return result.get();  // rethrows anything but DiagnosticError
 }
 
-}  // namespace
-
-TEST_CASE("seeded mutations of every shipped material load or give coded diagnostics, never crash or hang", "[fuzz]") {
-  fs::path scratch = fs::temp_directory_path() / ("mb_fuzz_" + std::to_string(::getpid()));
-  fs::remove_all(scratch);
-  fs::create_directories(scratch);
+struct FuzzCount {
   size_t total = 0, rejected = 0;
-  (void)test::shippedLibrary();  // loaded once, before any input is timed
+};
+
+// Every mutant of every seed, written to `mutantDir` (a copy of the seed's own directory, so
+// that its relative paths resolve) and loaded with `load`.
+FuzzCount fuzzSeeds(const std::vector<fs::path>& seedFiles, const fs::path& mutantDir, const Loader& load) {
+  FuzzCount count;
   auto slowest = std::chrono::nanoseconds::zero();
-  for (const auto& seed : seeds()) {
-    fs::path dir = scratch / seed.parent_path().filename();
-    if (!fs::exists(dir)) fs::copy(seed.parent_path(), dir, fs::copy_options::recursive);
+  for (const auto& seed : seedFiles) {
     std::string bytes = test::readFile(seed);
     // Seeded by the file name (FNV-1a): a file's mutants do not change when others are added.
     uint32_t seedValue = 2166136261u;
     for (unsigned char ch : seed.filename().string()) seedValue = (seedValue ^ ch) * 16777619u;
-    fs::path mutantPath = dir / ("fuzz_mutant" + seed.extension().string());
+    fs::path mutantPath = mutantDir / ("fuzz_mutant" + seed.extension().string());
     for (const auto& m : mutate(bytes, seedValue)) {
       INFO(seed.filename().string() << ": " << m.description);
       { std::ofstream(mutantPath, std::ios::binary | std::ios::trunc) << m.bytes; }
       auto t0 = std::chrono::steady_clock::now();
       Outcome o = Outcome::Loaded;
       try {
-        o = loadWithin(mutantPath.string(), seed.filename().string() + ": " + m.description, std::chrono::seconds(20));
+        o = loadWithin(mutantPath.string(), seed.filename().string() + ": " + m.description, std::chrono::seconds(20), load);
       } catch (const std::exception& e) {
         FAIL_CHECK("threw " << e.what());
       }
@@ -182,12 +192,52 @@ TEST_CASE("seeded mutations of every shipped material load or give coded diagnos
       // 2 s per input: a hang detector with a wide margin (inputs take milliseconds), not a
       // performance assertion.
       CHECK(dt < std::chrono::seconds(2));
-      ++total;
-      rejected += o == Outcome::Rejected ? 1 : 0;
+      ++count.total;
+      count.rejected += o == Outcome::Rejected ? 1 : 0;
     }
   }
+  UNSCOPED_INFO(count.total << " mutants, " << count.rejected << " rejected, slowest " << slowest.count() / 1e6 << " ms");
+  return count;
+}
+
+fs::path scratchDir(const std::string& what) {
+  fs::path scratch = fs::temp_directory_path() / ("mb_fuzz_" + what + "_" + std::to_string(::getpid()));
   fs::remove_all(scratch);
-  INFO(total << " mutants, " << rejected << " rejected, slowest " << slowest.count() / 1e6 << " ms");
-  CHECK(total >= 300);
-  CHECK(rejected > total / 2);
+  fs::create_directories(scratch);
+  return scratch;
+}
+
+}  // namespace
+
+TEST_CASE("seeded mutations of every shipped material load or give coded diagnostics, never crash or hang", "[fuzz]") {
+  fs::path scratch = scratchDir("materials");
+  (void)test::shippedLibrary();  // loaded once, before any input is timed
+  FuzzCount count;
+  for (const auto& seed : seeds()) {
+    fs::path dir = scratch / seed.parent_path().filename();
+    if (!fs::exists(dir)) fs::copy(seed.parent_path(), dir, fs::copy_options::recursive);
+    FuzzCount c = fuzzSeeds({seed}, dir, loadMaterial);
+    count.total += c.total;
+    count.rejected += c.rejected;
+  }
+  fs::remove_all(scratch);
+  CHECK(count.total >= 300);
+  CHECK(count.rejected > count.total / 2);
+}
+
+TEST_CASE("seeded mutations of every shipped scene load and plan or give coded diagnostics, never crash or hang", "[fuzz][scene]") {
+  // The scenes name materials as ../../materials/<file>: mirror that layout.
+  fs::path scratch = scratchDir("scenes");
+  fs::copy(test::sourceDir() / "materials", scratch / "materials", fs::copy_options::recursive);
+  fs::create_directories(scratch / "examples");
+  fs::copy(test::sourceDir() / "examples" / "scenes", scratch / "examples" / "scenes", fs::copy_options::recursive);
+  std::vector<fs::path> scenes;
+  for (const auto& e : fs::directory_iterator(test::sourceDir() / "examples" / "scenes"))
+    if (e.path().extension() == ".json" || e.path().extension() == ".gltf") scenes.push_back(e.path());
+  std::sort(scenes.begin(), scenes.end());
+  REQUIRE(scenes.size() >= 4);
+  FuzzCount count = fuzzSeeds(scenes, scratch / "examples" / "scenes", loadAndPlanScene);
+  fs::remove_all(scratch);
+  CHECK(count.total >= 150);
+  CHECK(count.rejected > count.total / 2);
 }

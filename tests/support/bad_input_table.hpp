@@ -37,7 +37,7 @@ inline std::string badInputsMarkdown(const std::vector<BadInputCase>& cases, con
       "column at least 1 and the line inside the named file, that `--diagnostics-format json` prints\n"
       "the same diagnostics as a JSON array of `{code, severity, file, line, column, message,\n"
       "suggestion}`, and where the case names one, that a did-you-mean suggestion is given.\n"
-      "`tests/test_fuzz_inputs.cpp` (`[fuzz]`) adds seeded mutations of every shipped material.\n\n" +
+      "`tests/test_fuzz_inputs.cpp` (`[fuzz]`) adds seeded mutations of every shipped material and scene (scenes are loaded and planned).\n\n" +
       std::to_string(cases.size()) + " cases; " + std::to_string(known) +
       " are **known failures**: the CLI does not yet do what the case expects (the note says what\n"
       "is wrong; the test warns while the failure lasts and fails once it is fixed, so the mark is\n"
