@@ -189,7 +189,7 @@ TEST_CASE("the mediump (ESSL) form of fp16 permutations computes the fp32 functi
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   for (const char* name : {"filament_plastic", "clearcoat_metal", "satin_sheen", "velvet_green"}) {
-    MaterialDesc m = loadMaterialJson((test::sourceDir() / "materials" / (std::string(name) + ".json")).string(), lib);
+    MaterialDesc m = test::shippedMaterial(name);
     Permutation perm;
     perm.material = &m;
     perm.lights = {"dir", "point", "spot"};

@@ -169,16 +169,6 @@ size_t checkScene(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const S
   return pairs;
 }
 
-MaterialDesc exampleMaterial(const std::string& name) {
-  return loadMaterialJson((test::sourceDir() / "materials" / (name + ".json")).string(), test::shippedLibrary());
-}
-
-MaterialUse useWith(std::map<std::string, std::vector<double>> values) {
-  MaterialUse u;
-  u.values = std::move(values);
-  return u;
-}
-
 }  // namespace
 
 TEST_CASE("pruned permutations of a constructed scene equal their feature-complete forms", "[pruned]") {
@@ -190,9 +180,9 @@ TEST_CASE("pruned permutations of a constructed scene equal their feature-comple
   scene.name = "constructed";
   scene.file = "constructed.scene.json";
   scene.lights = {{"dir", "sun", {}}, {"point", "lamp", {}}};
-  scene.materials.push_back({exampleMaterial("clearcoat_metal"), {useWith({{"clearCoat", {0.0}}})}, {}});
-  scene.materials.push_back({exampleMaterial("satin_sheen"), {useWith({{"sheenColor", {0.0, 0.0, 0.0}}})}, {}});
-  scene.materials.push_back({exampleMaterial("filament_plastic"), {MaterialUse{}}, {}});
+  scene.materials.push_back({test::shippedMaterial("clearcoat_metal"), {test::useWith({{"clearCoat", {0.0}}})}, {}});
+  scene.materials.push_back({test::shippedMaterial("satin_sheen"), {test::useWith({{"sheenColor", {0.0, 0.0, 0.0}}})}, {}});
+  scene.materials.push_back({test::shippedMaterial("filament_plastic"), {MaterialUse{}}, {}});
   size_t pairs = checkScene(gpu, lib, scene);
   CHECK(pairs == 3);
 }
@@ -214,9 +204,9 @@ TEST_CASE("a fold that is not neutral in the full form is caught", "[pruned]") {
   // Negative control: clear coat folded from the pruned shader, but 0.5 in the full one.
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
-  MaterialDesc loaded = exampleMaterial("clearcoat_metal");
+  MaterialDesc loaded = test::shippedMaterial("clearcoat_metal");
   MaterialDesc pruned = foldFeatures(loaded, {"clearcoat"}, lib);
-  MaterialUse use = useWith({{"clearCoat", {0.5}}});
+  MaterialUse use = test::useWith({{"clearCoat", {0.5}}});
   MaterialDesc full = featureComplete(loaded, use, lib);
   Permutation p;
   p.material = &pruned;

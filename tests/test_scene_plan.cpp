@@ -19,15 +19,9 @@ namespace {
 
 const ShadingModel& model(const std::string& name) { return *test::shippedLibrary().findModel(name); }
 
-MaterialDesc material(const std::string& name) {
-  return loadMaterialJson((test::sourceDir() / "materials" / (name + ".json")).string(), test::shippedLibrary());
-}
+MaterialDesc material(const std::string& name) { return test::shippedMaterial(name); }
 
-MaterialUse use(std::map<std::string, std::vector<double>> values) {
-  MaterialUse u;
-  u.values = std::move(values);
-  return u;
-}
+MaterialUse use(std::map<std::string, std::vector<double>> values) { return test::useWith(std::move(values)); }
 
 SceneDesc exampleScene(const std::string& file) {
   return loadScene((test::sourceDir() / "examples/scenes" / file).string(), test::shippedLibrary());

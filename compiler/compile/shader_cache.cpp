@@ -8,18 +8,14 @@
 // Integers are little-endian as the host writes them: the cache is per machine.
 #include "compile/shader_cache.hpp"
 
-#include <unistd.h>
-
-#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <functional>
-#include <sstream>
-#include <thread>
 
 #include <xxhash.h>
+
+#include "write/package_writer.hpp"
 
 namespace mb {
 namespace fs = std::filesystem;
@@ -112,16 +108,6 @@ bool deserialize(const std::string& file, CompiledArtifacts& out) {
   return true;
 }
 
-// A temporary name no other writer uses: two processes differ by pid, two threads of one
-// process by thread id, two writes of one thread by the counter.
-fs::path uniqueTempPath(const fs::path& entry) {
-  static std::atomic<uint64_t> counter{0};
-  std::ostringstream name;
-  name << entry.filename().string() << ".tmp." << ::getpid() << "."
-       << std::hash<std::thread::id>{}(std::this_thread::get_id()) << "." << counter++;
-  return entry.parent_path() / name.str();
-}
-
 }  // namespace
 
 ShaderCache::ShaderCache(fs::path dir) : dir_(std::move(dir)) {}
@@ -173,25 +159,8 @@ bool ShaderCache::store(const std::string& key, const CompiledArtifacts& artifac
   std::error_code ec;
   fs::create_directories(path.parent_path(), ec);
   if (ec) return false;
-  const fs::path tmp = uniqueTempPath(path);
-  const std::string bytes = serialize(artifacts);
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      fs::remove(tmp, ec);
-      return false;
-    }
-  }
-  // rename(2) replaces the target atomically: a reader opens the old entry, the new one, or
-  // none, never a partial file. Two writers of one key write identical bytes.
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    return false;
-  }
-  return true;
+  // Two writers of one key write identical bytes; a reader never sees a partial entry.
+  return replaceFileAtomically(path, serialize(artifacts));
 }
 
 }  // namespace mb

@@ -12,12 +12,17 @@ Diagnostic::Diagnostic() = default;
 Diagnostic::Diagnostic(Severity s, std::string c, SourceLocation w, std::string m, std::string sg)
     : severity(s), code(std::move(c)), where(std::move(w)), message(std::move(m)), suggestion(std::move(sg)) {}
 
-std::string formatDiagnostic(const Diagnostic& d) {
-  std::string out = d.where.file.empty() ? std::string("<input>") : d.where.file;
-  if (d.where.line > 0) {
-    out += ":" + std::to_string(d.where.line);
-    if (d.where.column > 0) out += ":" + std::to_string(d.where.column);
+std::string formatLocation(const SourceLocation& where) {
+  std::string out = where.file.empty() ? std::string("<input>") : where.file;
+  if (where.line > 0) {
+    out += ":" + std::to_string(where.line);
+    if (where.column > 0) out += ":" + std::to_string(where.column);
   }
+  return out;
+}
+
+std::string formatDiagnostic(const Diagnostic& d) {
+  std::string out = formatLocation(d.where);
   out += d.severity == Severity::Error ? ": error[" : ": warning[";
   out += d.code + "]: " + d.message;
   if (!d.suggestion.empty()) out += " (" + d.suggestion + ")";

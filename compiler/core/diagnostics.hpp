@@ -32,6 +32,9 @@ struct Diagnostic {
 
 // "file:line:col: error[CODE]: message (did you mean ...)" on one line.
 std::string formatDiagnostic(const Diagnostic& d);
+// "file:line:column" as formatDiagnostic writes it: the line and column only where known, and
+// "<input>" for a location without a file.
+std::string formatLocation(const SourceLocation& where);
 std::string diagnosticsToJson(const std::vector<Diagnostic>& ds);
 
 // Thrown by a stage when it has collected at least one error.

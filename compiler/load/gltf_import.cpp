@@ -85,7 +85,9 @@ void describe(GltfMaterial& m) {
   m.source.description = d;
 }
 
-std::vector<GltfMaterial> mapDocument(const JsonDocument& doc) {
+}  // namespace
+
+std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc) {
   DiagnosticSink sink;
   JsonFields f(doc, sink);
   std::vector<GltfMaterial> materials;
@@ -139,12 +141,10 @@ std::vector<GltfMaterial> mapDocument(const JsonDocument& doc) {
   return materials;
 }
 
-}  // namespace
-
-std::vector<GltfMaterial> readGltf(const std::string& path) { return mapDocument(loadGltfJson(path)); }
+std::vector<GltfMaterial> readGltf(const std::string& path) { return mapGltfDocument(loadGltfJson(path)); }
 
 std::vector<GltfMaterial> parseGltf(const std::string& bytes, const std::string& file) {
-  return mapDocument(parseGltfJson(bytes, file));
+  return mapGltfDocument(parseGltfJson(bytes, file));
 }
 
 std::vector<MaterialSource> readGltfMaterials(const std::string& path) {

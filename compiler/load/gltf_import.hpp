@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/json_document.hpp"
 #include "load/material_desc.hpp"
 
 namespace mb {
@@ -40,6 +41,9 @@ struct GltfMaterial {
 // as a whole go to the first material.
 std::vector<GltfMaterial> readGltf(const std::string& path);
 std::vector<GltfMaterial> parseGltf(const std::string& bytes, const std::string& file);
+// The same on a document already read (loadGltfJson / parseGltfJson), for readers that also
+// look at other parts of the file (load/scene_gltf.cpp).
+std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc);
 
 // readGltf without the texture records.
 std::vector<MaterialSource> readGltfMaterials(const std::string& path);

@@ -1,10 +1,7 @@
 // loadMaterialFile: one entry point for every description form, picked by extension, so each
 // subcommand accepts them all (docs/cli.md).
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
-
 #include "load/material_desc.hpp"
+#include "load/project_files.hpp"
 
 #if __has_include("load/gltf_import.hpp")
 #include "load/gltf_import.hpp"
@@ -14,8 +11,7 @@
 namespace mb {
 
 std::vector<MaterialDesc> loadMaterialFile(const std::string& path, const ShaderLibrary& lib) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = lowerExtension(path);
   if (ext == ".json") return {loadMaterialJson(path, lib)};
   if (ext == ".mat") return {loadMaterialMacro(path, lib)};
   if (ext == ".gltf" || ext == ".glb") {

@@ -1,5 +1,7 @@
 #include "load/project_files.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <sstream>
 
@@ -34,6 +36,12 @@ std::optional<std::string> readTextFile(const std::string& path, const SourceLoc
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
 }
 
 std::string readMaterialFile(const std::string& path, const std::string& what) {

@@ -19,6 +19,9 @@ std::optional<std::string> readTextFile(const std::string& path, const SourceLoc
 // A top-level description file's text; throws DiagnosticError when readTextFile reports.
 std::string readMaterialFile(const std::string& path, const std::string& what);
 
+// The extension of `path` in lower case (".json", ".glb"): description forms are picked by it.
+std::string lowerExtension(const std::string& path);
+
 class ProjectFiles {
  public:
   // `topFile`: the material file named on the command line; its directory is the project.

@@ -3,7 +3,6 @@
 // loadMaterialFile (every description form), and the uses' values are checked against the
 // loaded materials (load/scene_uses.cpp).
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 
 #include "compile/targets.hpp"
@@ -24,12 +23,6 @@ using nlohmann::json;
 
 // A scene is a handful of levels deep; anything deeper is refused before the position scan.
 constexpr int kMaxSceneJsonDepth = 64;
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 bool isGltf(const std::string& path) {
   std::string ext = lowerExtension(path);
@@ -62,7 +55,7 @@ class SceneJsonReader {
     readAxis("/environment", allEnvironmentModes(), "environment mode", scene_.environments, scene_.environmentWhere);
     readAxis("/precision", allPrecisions(), "precision", scene_.precisions, scene_.precisionWhere);
     readAxis("/quality", allQualityLevels(), "quality level", scene_.qualities, scene_.qualityWhere);
-    readAxis("/targets", allTargets(), "target", scene_.targets, scene_.targetsWhere);
+    readAxis("/targets", allTargets(), "target", scene_.targets, scene_.targetsWhere, "E-SCENE-TARGET");
     if (f_.find("/gltf")) readGltfPart();
     if (f_.find("/materials") && f_.isArray("/materials"))
       for (size_t i = 0; i < f_.find("/materials")->size(); ++i) readMaterial(JsonFields::element("/materials", i));
@@ -83,17 +76,14 @@ class SceneJsonReader {
       auto type = f_.string(ptr + "/type");
       auto name = f_.string(ptr + "/name");
       if (!type) continue;
-      if (!isOneOf(*type, allLightTypes(), "light type", ptr + "/type")) continue;
+      if (!isOneOf(*type, allLightTypes(), "light type", ptr + "/type", "E-SCENE-LIGHT-TYPE")) continue;
       scene_.lights.push_back({*type, name.value_or(""), f_.valueAt(ptr + "/type")});
     }
   }
 
   bool isOneOf(const std::string& v, const std::vector<std::string>& allowed, const std::string& what,
-               const std::string& ptr) {
+               const std::string& ptr, const std::string& code) {
     if (std::find(allowed.begin(), allowed.end(), v) != allowed.end()) return true;
-    std::string code = what == "light type" ? "E-SCENE-LIGHT-TYPE"
-                       : what == "target"   ? "E-SCENE-TARGET"
-                                            : "E-SCENE-AXIS-VALUE";
     f_.error(code, f_.valueAt(ptr), "unknown " + what + " '" + clipped(v) + "': expected one of " + quotedList(allowed),
              suggest(v, allowed));
     return false;
@@ -101,7 +91,7 @@ class SceneJsonReader {
 
   // A string, or a non-empty array of distinct strings, each from `allowed`.
   void readAxis(const std::string& ptr, const std::vector<std::string>& allowed, const std::string& what,
-                std::vector<std::string>& out, SourceLocation& where) {
+                std::vector<std::string>& out, SourceLocation& where, const std::string& code = "E-SCENE-AXIS-VALUE") {
     const json* j = f_.find(ptr);
     where = f_.valueAt(ptr);
     if (!j) return;
@@ -121,7 +111,7 @@ class SceneJsonReader {
     }
     std::vector<std::string> read;
     for (const auto& [v, at] : values) {
-      if (!isOneOf(v, allowed, what, at)) continue;
+      if (!isOneOf(v, allowed, what, at, code)) continue;
       if (std::find(read.begin(), read.end(), v) != read.end()) {
         f_.error("E-SCENE-DUPLICATE", f_.valueAt(at), what + " '" + v + "' is listed twice");
         continue;

@@ -14,10 +14,6 @@ namespace mb {
 
 namespace {
 
-std::string where(const SourceLocation& l) {
-  return l.file + ":" + std::to_string(l.line) + ":" + std::to_string(l.column);
-}
-
 // The models that could shade this point (for the suggestion of E-PERMUTATION-INVALID).
 std::string modelsThatCan(const AxisPoint& p, const ShaderLibrary& lib) {
   std::vector<std::string> names;
@@ -36,7 +32,7 @@ void reportInvalid(const SceneDesc& scene, const SceneMaterial& sm, const Shadin
     auto reason = invalidReason(model, probe);
     if (!reason) return false;
     std::string message = "material '" + sm.material.name + "' cannot be shaded with " + what + " of scene '" +
-                          scene.name + "' (" + where(at) + "): " + *reason;
+                          scene.name + "' (" + formatLocation(at) + "): " + *reason;
     if (said.insert(message).second)
       sink.error("E-PERMUTATION-INVALID", sm.where, message, modelsThatCan(probe, lib));
     return true;
@@ -70,7 +66,7 @@ void reportBrokenRule(const SceneMaterial& sm, const ShadingModel& model, const 
                       const std::string& message, std::set<std::string>& said, DiagnosticSink& sink) {
   SourceLocation chosen = invalidLocation(model, p);
   std::string text = "material '" + sm.material.name + "' cannot be compiled for this scene: " + message +
-                     (chosen.line > 0 ? " (brick chosen at " + where(chosen) + ")" : "");
+                     (chosen.line > 0 ? " (brick chosen at " + formatLocation(chosen) + ")" : "");
   if (said.insert(text).second)
     sink.error("E-PERMUTATION-INVALID", sm.where, text,
                "bind another brick to one of these roles in the material, or drop the environment or quality level from the scene");
@@ -98,13 +94,6 @@ void addPossible(ScenePlan& plan, const ShadingModel& model, size_t& largest) {
     largest = n;
     plan.possibleAxes = axisSizes(model);
   }
-}
-
-const ShadingModel& modelOf(const MaterialDesc& m, const ShaderLibrary& lib) {
-  const ShadingModel* model = lib.findModel(m.model);
-  if (!model)
-    throw DiagnosticError({{Severity::Error, "E-UNKNOWN-MODEL", {m.sourceFile, 0, 0}, "unknown model '" + m.model + "'"}});
-  return *model;
 }
 
 }  // namespace

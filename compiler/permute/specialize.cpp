@@ -13,22 +13,11 @@ namespace mb {
 
 namespace {
 
-const ShadingModel& modelOf(const MaterialDesc& m, const ShaderLibrary& lib) {
-  const ShadingModel* model = lib.findModel(m.model);
-  if (!model)
-    throw DiagnosticError({{Severity::Error, "E-UNKNOWN-MODEL", {m.sourceFile, 0, 0},
-                            "material '" + m.name + "' names unknown model '" + m.model + "'"}});
-  return *model;
-}
-
 bool contains(const std::vector<std::string>& v, const std::string& x) {
   return std::find(v.begin(), v.end(), x) != v.end();
 }
 
-std::string at(const SourceLocation& l) {
-  if (l.file.empty()) return "";
-  return " (" + l.file + (l.line ? ":" + std::to_string(l.line) + ":" + std::to_string(l.column) : "") + ")";
-}
+std::string at(const SourceLocation& l) { return l.file.empty() ? "" : " (" + formatLocation(l) + ")"; }
 
 bool isIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
@@ -52,6 +41,14 @@ const ModelInput* neutralInputOf(const ShadingModel& model, const std::string& f
 }
 
 }  // namespace
+
+const ShadingModel& modelOf(const MaterialDesc& m, const ShaderLibrary& lib) {
+  const ShadingModel* model = lib.findModel(m.model);
+  if (!model)
+    throw DiagnosticError({{Severity::Error, "E-UNKNOWN-MODEL", {m.sourceFile, 0, 0},
+                            "material '" + m.name + "' names unknown model '" + m.model + "'"}});
+  return *model;
+}
 
 MaterialDesc applyQuality(const MaterialDesc& material, const std::string& quality, const ShaderLibrary& lib) {
   if (quality == "high") return material;

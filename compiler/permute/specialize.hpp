@@ -12,6 +12,10 @@
 
 namespace mb {
 
+// The material's shading model; throws DiagnosticError (E-UNKNOWN-MODEL) when the library has
+// none of that name.
+const ShadingModel& modelOf(const MaterialDesc& material, const ShaderLibrary& lib);
+
 // Roles the material left at the model default take the model's brick for `quality`
 // (model manifest "quality" table); roles the material chose keep its choice. "high" is the
 // default bindings. Throws DiagnosticError for a level the model does not define.

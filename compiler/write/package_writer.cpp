@@ -2,8 +2,12 @@
 
 #include <xxhash.h>
 
+#include <atomic>
 #include <cstdio>
 #include <fstream>
+#include <functional>
+#include <sstream>
+#include <thread>
 #include <unistd.h>
 
 #include "core/diagnostics.hpp"
@@ -66,24 +70,32 @@ void PackageWriter::commit(const fs::path& dir) const {
   if (hadPrevious) fs::remove_all(previous, ec);
 }
 
-void PackageWriter::writeFileAtomically(const fs::path& file, const std::string& bytes) {
-  fs::path tmp = file.string() + ".tmp." + std::to_string(::getpid());
+bool replaceFileAtomically(const fs::path& file, const std::string& bytes) {
+  static std::atomic<uint64_t> counter{0};
+  std::ostringstream name;
+  name << file.filename().string() << ".tmp." << ::getpid() << "." << std::hash<std::thread::id>{}(std::this_thread::get_id())
+       << "." << counter++;
+  const fs::path tmp = file.parent_path() / name.str();
+  std::error_code ec;
   {
     std::ofstream out(tmp, std::ios::binary);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     out.close();
     if (!out) {
-      std::error_code ec;
       fs::remove(tmp, ec);
-      ioError(file, "cannot write file");
+      return false;
     }
   }
-  std::error_code ec;
   fs::rename(tmp, file, ec);
   if (ec) {
     fs::remove(tmp, ec);
-    ioError(file, "cannot move file into place");
+    return false;
   }
+  return true;
+}
+
+void PackageWriter::writeFileAtomically(const fs::path& file, const std::string& bytes) {
+  if (!replaceFileAtomically(file, bytes)) ioError(file, "cannot write file");
 }
 
 std::string contentHash(const void* data, size_t size) {

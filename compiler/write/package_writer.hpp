@@ -15,12 +15,18 @@ class PackageWriter {
   // Writes all files to `dir`, replacing a previous package there. Throws DiagnosticError on
   // I/O failure, leaving `dir` as it was.
   void commit(const std::filesystem::path& dir) const;
-  // Writes one file via a temporary sibling and a rename.
+  // Writes one file via a temporary sibling and a rename (replaceFileAtomically); throws
+  // DiagnosticError (E-IO) when that fails.
   static void writeFileAtomically(const std::filesystem::path& file, const std::string& bytes);
 
  private:
   std::map<std::string, std::string> files_;
 };
+
+// Writes `bytes` to a temporary sibling of `file` whose name no other writer uses (process id,
+// thread id, a counter), then rename(2)s it over `file`: a reader sees the old file, the new
+// one or none, never a partial one. False (and no temporary left) on any I/O failure.
+bool replaceFileAtomically(const std::filesystem::path& file, const std::string& bytes);
 
 // 64-bit xxHash of bytes, as 16 hex digits.
 std::string contentHash(const void* data, size_t size);

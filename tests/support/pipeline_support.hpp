@@ -4,11 +4,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
+#include "load/scene_desc.hpp"
 
 namespace mb::test {
 
@@ -17,6 +19,18 @@ inline std::filesystem::path sourceDir() { return MB_SOURCE_DIR; }
 inline const ShaderLibrary& shippedLibrary() {
   static ShaderLibrary lib = ShaderLibrary::load(ShaderLibrary::defaultRoot());
   return lib;
+}
+
+// materials/<name>.json, loaded against the shipped library.
+inline MaterialDesc shippedMaterial(const std::string& name) {
+  return loadMaterialJson((sourceDir() / "materials" / (name + ".json")).string(), shippedLibrary());
+}
+
+// A scene use that states these input values.
+inline MaterialUse useWith(std::map<std::string, std::vector<double>> values) {
+  MaterialUse u;
+  u.values = std::move(values);
+  return u;
 }
 
 inline std::vector<std::string> exampleMaterialFiles() {
