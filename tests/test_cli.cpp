@@ -221,3 +221,29 @@ TEST_CASE("eval --material takes an optional illuminance column; a partial one i
   CHECK_THAT(partial.output, Catch::Contains("illuminance.y"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("compile's scene, target and cache options: usage errors exit 2; an unusable cache is no error", "[cli][scene]") {
+  fs::path dir = tempDir("compile_options");
+  const std::string scene = (test::sourceDir() / "examples/scenes/mobile.json").string();
+  const std::string out = " -o " + (dir / "pkg").string();
+  struct Usage {
+    std::string args, says;
+  };
+  for (const Usage& u : {Usage{"compile --scene " + scene + " " + material("ue4_metal.json") + out, "not both"},
+                         Usage{"compile --scene " + scene + " --lights dir" + out, "conflicts with --scene"},
+                         Usage{"compile " + material("ue4_metal.json") + " --targets dxil" + out, "dxil"},
+                         Usage{"compile " + material("ue4_metal.json"), "-o DIR"}}) {
+    auto r = test::runCli(u.args);
+    INFO(u.args << "\n" << r.output);
+    CHECK(r.exitCode == 2);
+    CHECK(r.output.find(u.says) != std::string::npos);
+    CHECK(!fs::exists(dir / "pkg"));
+  }
+  // A cache path that cannot be a directory (a regular file): the build goes on uncached.
+  std::ofstream(dir / "not_a_dir") << "x";
+  auto r = test::runCli("compile " + material("ue4_metal.json") + " --cache-dir " + (dir / "not_a_dir").string() + out);
+  INFO(r.output);
+  CHECK(r.exitCode == 0);
+  CHECK(fs::exists(dir / "pkg" / "manifest.json"));
+  fs::remove_all(dir);
+}

@@ -341,7 +341,7 @@ TEST_CASE("diffKeys lists missing and extra keys, empty when nothing is missing"
   CHECK(diffKeys({"a", "b"}, {"b", "c"}) == "- a\n+ c\n");
 }
 
-TEST_CASE("verify: a package missing one required permutation fails with the key", "[scene][cli]") {
+TEST_CASE("verify: a package missing one required permutation fails with the key; a bad manifest is bad input", "[scene][cli]") {
   namespace fs = std::filesystem;
   fs::path dir = fs::temp_directory_path() / ("mb_scene_verify_" + std::to_string(::getpid()));
   fs::remove_all(dir);
@@ -365,5 +365,25 @@ TEST_CASE("verify: a package missing one required permutation fails with the key
   CHECK(missing.exitCode == 1);
   CHECK(missing.output.find("- " + keys[2] + "\n") != std::string::npos);
   CHECK(missing.output.find("E-PACKAGE-MISSING-PERMUTATION") != std::string::npos);
+  // A manifest that is not a package's, or not JSON, or not there: bad input, exit 3, at a position.
+  struct Bad {
+    std::string manifest, code, at;
+  };
+  const std::string file = (dir / "manifest.json").string();
+  for (const Bad& b : {Bad{"{\"format\": 1}", "E-PACKAGE-MANIFEST", file + ":1:1"},
+                       Bad{"{\"permutations\": [\n  {\"name\": 1}]}", "E-PACKAGE-MANIFEST", file + ":2:3"},
+                       Bad{"{\"permutations\": [\n  {\"key\": 7}]}", "E-FIELD-TYPE", file + ":2:11"},
+                       Bad{"{\"permutations\": [,]}", "E-JSON-SYNTAX", file + ":1:19"}}) {
+    std::ofstream(dir / "manifest.json") << b.manifest;
+    auto r = test::runCli("verify --scene " + scene + " " + dir.string());
+    INFO(b.manifest << "\n" << r.output);
+    CHECK(r.exitCode == 3);
+    CHECK(r.output.find(b.at + ": error[" + b.code + "]") != std::string::npos);
+  }
+  fs::remove(dir / "manifest.json");
+  auto absent = test::runCli("verify --scene " + scene + " " + dir.string());
+  INFO(absent.output);
+  CHECK(absent.exitCode == 3);
+  CHECK(absent.output.find("E-FILE-NOT-FOUND") != std::string::npos);
   fs::remove_all(dir);
 }
