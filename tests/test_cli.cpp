@@ -84,7 +84,7 @@ TEST_CASE("compile writes a complete, deterministic package", "[cli][package]") 
     CHECK(p["spirv_instructions"].get<int>() > 0);
     hashes.insert(p["spirv_hash_xxh64"].get<std::string>());
   }
-  // docs/package.md: manifest, header, one include per permutation, one SPIR-V per hash.
+  // docs/package.md: marker, manifest, header, one include per permutation, one SPIR-V per hash.
   size_t files = 0;
   for (const auto& e : fs::recursive_directory_iterator(dir / "a")) {
     if (!e.is_regular_file()) continue;
@@ -94,7 +94,7 @@ TEST_CASE("compile writes a complete, deterministic package", "[cli][package]") 
     CHECK(test::readFile(e.path()) == test::readFile(dir / "b" / rel));
   }
   CHECK(fs::exists(dir / "a/matbricks_materials.hpp"));
-  CHECK(files == 2 + manifest["permutations"].size() + hashes.size());
+  CHECK(files == 3 + manifest["permutations"].size() + hashes.size());
   fs::remove_all(dir);
 }
 

@@ -1,5 +1,6 @@
 #include "bench/yardstick.hpp"
 
+#include <optional>
 #include <stdexcept>
 
 #include "common/reference.hpp"
@@ -21,12 +22,27 @@ Yardstick brickYardstick(const Brick& brick) {
   return y;
 }
 
+namespace {
+
+std::optional<Diagnostic> unmeasurable(const MaterialDesc& material) {
+  if (!material.surface.present()) return std::nullopt;
+  return Diagnostic(Severity::Error, "E-BENCH-SURFACE", material.surface.where,
+                    "bench cannot measure material '" + material.name +
+                        "': its user surface code has no C++ form to take ground truths of",
+                    "bench the material without its surface code");
+}
+
+}  // namespace
+
+void refuseUnmeasurable(const std::vector<MaterialDesc>& materials) {
+  std::vector<Diagnostic> errors;
+  for (const auto& material : materials)
+    if (auto d = unmeasurable(material)) errors.push_back(*d);
+  if (!errors.empty()) throw DiagnosticError(errors);
+}
+
 Yardstick materialYardstick(const MaterialDesc& material, const ProbeLayout& layout) {
-  if (material.surface.present())
-    throw DiagnosticError({{Severity::Error, "E-BENCH-SURFACE", {material.sourceFile, 0, 0},
-                            "bench cannot measure material '" + material.name +
-                                "': its user surface code has no C++ form to take ground truths of",
-                            "bench the material without its surface code"}});
+  if (auto d = unmeasurable(material)) throw DiagnosticError({*d});
   Yardstick y;
   for (const auto& [slot, id] : material.bricks)
     if (ref::Registry::groundTruths().find(id)) y.groundTruthBricks.push_back(id);

@@ -25,6 +25,9 @@ Yardstick brickYardstick(const Brick& brick);
 // The material's model reference with every bound brick that has a ground truth replaced
 // by it: the exact material the permutation approximates, as far as ground truths exist.
 // `layout` is the permutation probe's (n, v, l, then the non-constant parameters).
+// Throws E-BENCH-SURFACE, at the surface code, for every material with user surface code.
 Yardstick materialYardstick(const MaterialDesc& material, const ProbeLayout& layout);
+// The same check for all materials at once, before any measuring.
+void refuseUnmeasurable(const std::vector<MaterialDesc>& materials);
 
 }  // namespace mb::bench

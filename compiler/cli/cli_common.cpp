@@ -2,6 +2,10 @@
 
 #include <cstdlib>
 #include <iostream>
+#include <set>
+
+#include "load/gltf_external_files.hpp"
+#include "load/project_files.hpp"
 
 namespace mb::cli {
 
@@ -27,6 +31,37 @@ std::vector<MaterialDesc> loadMaterials(const std::vector<std::string>& paths, c
   for (const auto& m : out) warnings.insert(warnings.end(), m.warnings.begin(), m.warnings.end());
   if (!warnings.empty()) printDiagnostics(warnings, g);
   return out;
+}
+
+std::vector<ProtectedPath> libraryInputs(const ShaderLibrary& lib) { return {{lib.root(), "shader library"}}; }
+
+void addMaterialInputs(std::vector<ProtectedPath>& inputs, const std::vector<MaterialDesc>& materials) {
+  std::vector<const MaterialDesc*> all;
+  for (const auto& m : materials) all.push_back(&m);
+  addMaterialInputs(inputs, all);
+}
+
+void addMaterialInputs(std::vector<ProtectedPath>& inputs, const std::vector<const MaterialDesc*>& materials) {
+  std::set<std::string> gltfFiles;  // a glTF file holds many materials: read its URIs once
+  for (const MaterialDesc* pm : materials) {
+    const MaterialDesc& m = *pm;
+    inputs.push_back({m.sourceFile, "material"});
+    for (const auto& inc : m.includedFiles) inputs.push_back({inc, "#included file"});
+    if (m.surface.present()) inputs.push_back({m.surface.where.file, "surface file"});
+    const std::string ext = lowerExtension(m.sourceFile);
+    if ((ext == ".gltf" || ext == ".glb") && gltfFiles.insert(m.sourceFile).second)
+      for (const auto& f : gltfExternalFiles(m.sourceFile)) inputs.push_back({f, "glTF buffer or image"});
+  }
+}
+
+void checkDirectoryOutput(const std::string& dir, const std::vector<ProtectedPath>& inputs) {
+  checkOutputDirectory(dir);
+  refuseOverlap(dir, "output directory", inputs);
+}
+
+void checkFileOutput(const std::string& file, const std::string& what, const std::vector<ProtectedPath>& inputs) {
+  refuseOverlap(resolvedOutputFile(file), what, inputs);
+  checkOutputFile(file);
 }
 
 std::unique_ptr<harness::VulkanHarness> openDevice(const GlobalOptions& g) {

@@ -5,10 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "cli/input_forms.hpp"
 #include "core/diagnostics.hpp"
 #include "harness/vulkan_harness.hpp"
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
+#include "write/output_paths.hpp"
 
 namespace mb::cli {
 
@@ -34,6 +36,17 @@ ShaderLibrary loadLibrary(const GlobalOptions& g);
 // Warnings (an unsupported glTF extension, ...) are printed in the --diagnostics-format.
 std::vector<MaterialDesc> loadMaterials(const std::vector<std::string>& paths, const ShaderLibrary& lib,
                                         const GlobalOptions& g);
+// What a command reads, which its outputs must stay clear of (docs/cli.md "Outputs"): the
+// shader library, and each material's description, #includes, surface file and, for glTF,
+// the buffers and images it names.
+std::vector<ProtectedPath> libraryInputs(const ShaderLibrary& lib);
+void addMaterialInputs(std::vector<ProtectedPath>& inputs, const std::vector<const MaterialDesc*>& materials);
+void addMaterialInputs(std::vector<ProtectedPath>& inputs, const std::vector<MaterialDesc>& materials);
+// Before any work: a directory output must be new, empty or one matbricks wrote, and no
+// output may be, contain or lie inside an input. Throws DiagnosticError (exit 3).
+void checkDirectoryOutput(const std::string& dir, const std::vector<ProtectedPath>& inputs);
+void checkFileOutput(const std::string& file, const std::string& what, const std::vector<ProtectedPath>& inputs);
+
 std::unique_ptr<harness::VulkanHarness> openDevice(const GlobalOptions& g);
 // Prints validation-layer messages to stderr; returns true if there were any.
 bool reportLayerMessages(const harness::VulkanHarness& gpu);

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "bench/report.hpp"
+#include "bench/yardstick.hpp"
 #include "bench/svg_chart.hpp"
 #include "cli/cli_common.hpp"
 #include "write/package_writer.hpp"
@@ -68,6 +69,20 @@ std::string readFileIfAny(const std::string& path) {
   return s.str();
 }
 
+// Before measuring: every output checked (docs/cli.md "Outputs"); --markdown is read and its
+// generated part replaced, so it is the one output that may already hold the user's text.
+void refuseUnsafeOutputs(const BenchArgs& a, const ShaderLibrary& lib, const std::vector<MaterialDesc>& materials) {
+  std::vector<ProtectedPath> inputs = libraryInputs(lib);
+  addMaterialInputs(inputs, materials);
+  if (!a.outDir.empty()) {
+    checkDirectoryOutput(a.outDir, inputs);
+    inputs.push_back({a.outDir, "output directory"});
+  }
+  for (const auto& [file, what] : {std::pair{&a.json, "JSON results"}, std::pair{&a.csv, "CSV results"},
+                                   std::pair{&a.markdown, "Markdown tables"}})
+    if (!file->empty()) checkFileOutput(*file, what, inputs);
+}
+
 void printTable(const bench::BenchReport& r) {
   std::printf("device: %s\n%-18s %-44s %9s %9s %7s %10s %10s  %-12s %s\n", r.device.c_str(), "group", "id",
               "ns/eval", "loop ns", "instr", "max err", "mean err", "vs", "frontier");
@@ -88,6 +103,8 @@ int runBench(const BenchArgs& a, const GlobalOptions& g) {
   std::vector<std::string> materialPaths;
   bench::BenchOptions o = resolveScope(a, lib, materialPaths);
   std::vector<MaterialDesc> materials = loadMaterials(materialPaths, lib, g);
+  bench::refuseUnmeasurable(materials);
+  refuseUnsafeOutputs(a, lib, materials);
   auto gpu = openDevice(g);
   bench::BenchReport report = bench::runBench(lib, *gpu, materials, o, &std::cerr);
 
@@ -95,7 +112,7 @@ int runBench(const BenchArgs& a, const GlobalOptions& g) {
   std::string json = bench::toJson(report).dump(2) + "\n", csv = bench::toCsv(report);
   std::string md = bench::toMarkdown(report), subtitle = bench::describeRun(report);
   if (!a.outDir.empty()) {
-    PackageWriter w;
+    PackageWriter w("bench");
     w.addFile("bench.json", json);
     w.addFile("bench.csv", csv);
     w.addFile("bench.md", md);
@@ -115,7 +132,8 @@ int runBench(const BenchArgs& a, const GlobalOptions& g) {
 Command addBenchCommand(CLI::App& app, GlobalOptions& g) {
   auto a = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand("bench", "Run time against error: every brick per slot, material permutations, DFG LUTs");
-  cmd->add_option("materials", a->materials, "Material files (default with no --slot/--brick: materials/*.json)");
+  cmd->add_option("materials", a->materials,
+                  std::string(kMaterialFilesHelp) + " (default with no --slot/--brick: the source tree's materials/*.json)");
   cmd->add_option("--slot", a->slots, "Only the bricks of this slot (repeatable)");
   cmd->add_option("--brick", a->bricks, "Only this brick (repeatable)");
   cmd->add_flag("--ibl", a->ibl, "Also measure the DFG LUTs (implied when nothing is narrowed)");
@@ -132,7 +150,7 @@ Command addBenchCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--seed", a->options.seed, "Sampler seed");
   cmd->add_option("--json", a->json, "Write the full results as JSON");
   cmd->add_option("--csv", a->csv, "Write one CSV row per brick, permutation and LUT");
-  cmd->add_option("-o,--output-dir", a->outDir, "Write bench.json, bench.csv, bench.md and one SVG chart per group");
+  cmd->add_option("-o,--output-dir", a->outDir, "Write bench.json, bench.csv, bench.md and one SVG chart per group to this directory (new, empty or a matbricks output)");
   cmd->add_option("--markdown", a->markdown, "Write the Markdown tables (replacing the generated part of an existing file)");
   return {cmd, [a, &g] { return runBench(*a, g); }};
 }

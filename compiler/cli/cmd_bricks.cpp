@@ -50,6 +50,7 @@ int runBricks(const BricksArgs& a, const GlobalOptions& g) {
                             "unknown slot '" + a.slot + "'", didYouMean(a.slot, names)}});
   }
   if (a.markdown) {
+    if (!a.output.empty()) checkFileOutput(a.output, "catalogue", libraryInputs(lib));
     auto gpu = openDevice(g);
     std::string md = brickCatalogueMarkdown(lib, *gpu);
     if (a.output.empty()) {

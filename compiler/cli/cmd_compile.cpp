@@ -10,6 +10,8 @@
 #include "compile/build.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
+#include "load/gltf_external_files.hpp"
+#include "load/project_files.hpp"
 #include "load/scene_desc.hpp"
 #include "permute/scene_plan.hpp"
 #include "write/depfile.hpp"
@@ -54,6 +56,29 @@ void refuseDuplicateKeys(const std::vector<Permutation>& perms, const std::vecto
   if (!duplicates.empty()) throw DiagnosticError(duplicates);
 }
 
+// Before any compiling: -o must be new, empty or a package, and neither it nor the depfile may
+// be, contain or lie inside what the compile reads or the cache (docs/cli.md "Outputs").
+void refuseUnsafeOutputs(const CompileArgs& a, const ShaderLibrary& lib, const SceneDesc& scene,
+                         const std::vector<MaterialDesc>& materials, const std::filesystem::path& cacheDir) {
+  std::vector<ProtectedPath> inputs = libraryInputs(lib);
+  addMaterialInputs(inputs, materials);
+  if (!a.scene.empty()) {
+    inputs.push_back({a.scene, "scene"});
+    std::vector<const MaterialDesc*> used;
+    for (const auto& m : scene.materials) used.push_back(&m.material);
+    addMaterialInputs(inputs, used);
+    const std::string ext = lowerExtension(a.scene);
+    if (ext == ".gltf" || ext == ".glb")
+      for (const auto& f : gltfExternalFiles(a.scene)) inputs.push_back({f, "glTF buffer or image"});
+  }
+  if (!cacheDir.empty()) inputs.push_back({cacheDir, "cache directory"});
+  if (!a.out.empty()) checkDirectoryOutput(a.out, inputs);
+  if (!a.depfile.empty()) {
+    inputs.push_back({a.out, "output directory"});
+    checkFileOutput(a.depfile, "depfile", inputs);
+  }
+}
+
 int runCompile(const CompileArgs& a, const GlobalOptions& g) {
   // Usage errors exit 2 (CLI::ValidationError), as CLI11's own do.
   if (a.scene.empty() == a.materials.empty())
@@ -95,6 +120,7 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
   options.targets = targets;
   options.cacheDir = a.noCache ? std::filesystem::path() : (a.cacheDir.empty() ? ShaderCache::defaultDir()
                                                                                : std::filesystem::path(a.cacheDir));
+  refuseUnsafeOutputs(a, lib, scene, materials, options.cacheDir);
   BuildStats stats;
   std::vector<BuiltPermutation> built = buildPermutations(lib, plan.required, options, &stats);
 
@@ -145,9 +171,11 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
 Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<CompileArgs>();
   CLI::App* cmd = app.add_subcommand("compile", "Compile materials, or exactly what a scene needs, into a package");
-  cmd->add_option("materials", args->materials, "Material files: .json, .mat (macro form), .gltf/.glb");
-  cmd->add_option("--scene", args->scene, "Scene file (.json, .gltf, .glb): compile exactly the permutations it needs");
-  cmd->add_option("-o,--output", args->out, "Package directory (replaced atomically)");
+  cmd->add_option("materials", args->materials, kMaterialFilesHelp);
+  cmd->add_option("--scene", args->scene, std::string(kSceneFileHelp) + "; compile exactly the permutations it needs");
+  cmd->add_option("-o,--output", args->out,
+                  "Package directory: created, filled when empty, or replaced atomically when it is a matbricks package; "
+                  "anything else is refused");
   cmd->add_flag("--explain", args->explain,
                 "Print possible / required / compiled / unique counts and which axis multiplied them");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");

@@ -19,6 +19,7 @@ struct EnergyArgs {
 int runEnergy(const EnergyArgs& a, const GlobalOptions& g) {
   if (!a.output.empty() && !a.markdown && !a.json) throw CLI::ValidationError("-o needs --markdown or --json");
   ShaderLibrary lib = loadLibrary(g);
+  if (!a.output.empty()) checkFileOutput(a.output, "report", libraryInputs(lib));
   auto gpu = openDevice(g);
   energy::EnergyReport report;
   energy::runEnergyChecks(lib, *gpu, a.grid == "coarse" ? energy::EnergyGrid::coarse() : energy::EnergyGrid::fine(),

@@ -17,10 +17,23 @@ namespace {
 struct EvalArgs {
   std::string brick;
   std::string material;
+  std::string name;  // which material of the file; empty: the first
   std::string input;
   bool json = false;
   std::string precision = "fp32";
 };
+
+// --name picks one material of a file that holds several (glTF); without it, the first.
+MaterialDesc pickMaterial(const std::vector<MaterialDesc>& materials, const EvalArgs& a) {
+  if (a.name.empty()) return materials.front();
+  std::vector<std::string> names;
+  for (const auto& m : materials) {
+    if (m.name == a.name) return m;
+    names.push_back(m.name);
+  }
+  throw DiagnosticError({{Severity::Error, "E-UNKNOWN-MATERIAL", {a.material, 0, 0},
+                          "no material named '" + a.name + "' in this file", didYouMean(a.name, names)}});
+}
 
 int runEval(const EvalArgs& a, const GlobalOptions& g) {
   if (a.brick.empty() == a.material.empty())
@@ -37,7 +50,8 @@ int runEval(const EvalArgs& a, const GlobalOptions& g) {
     }
     program = buildBrickProbe(lib, *b, false, *parsePrecision(a.precision));
   } else {
-    materials = loadMaterials({a.material}, lib, g);
+    // `materials` outlives the probe build: the permutation points into it.
+    materials = {pickMaterial(loadMaterials({a.material}, lib, g), a)};
     Permutation perm = permutationsFor(materials).front();
     perm.precision = a.precision;
     // An illuminance column (illuminance.x, .y, .z) is optional; without it the light has
@@ -100,7 +114,8 @@ Command addEvalCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<EvalArgs>();
   CLI::App* cmd = app.add_subcommand("eval", "Evaluate a brick or a material at inputs from a CSV file, on the GPU and with the reference");
   cmd->add_option("--brick", args->brick, "Brick id (see `matbricks bricks`)");
-  cmd->add_option("--material", args->material, "Material JSON file");
+  cmd->add_option("--material", args->material, std::string(kMaterialFilesHelp) + "; one file");
+  cmd->add_option("--name", args->name, "With --material: the material of that name in the file (default: its first)");
   cmd->add_option("--input", args->input, "CSV file; header = the probe's input names (see `bricks --json`)")->required();
   cmd->add_flag("--json", args->json, "JSON output");
   cmd->add_option("--precision", args->precision, "fp32, or fp16 (true half arithmetic; only NaN/Inf fail)")

@@ -25,9 +25,6 @@ struct LutArgs {
   bool json = false;
 };
 
-[[noreturn]] void ioError(const std::string& path, const std::string& what) {
-  throw DiagnosticError({{Severity::Error, "E-IO", {path, 0, 0}, what, ""}});
-}
 
 // The output format, decided before any GPU work so that a bad command line costs nothing.
 lut::OutputFormat resolveFormat(const LutArgs& a) {
@@ -60,11 +57,8 @@ void printChannels(const char* title, const std::array<lut::ChannelError, lut::k
 int runLut(const LutArgs& a, const GlobalOptions& g) {
   const lut::OutputFormat format = resolveFormat(a);
   const lut::Precision precision = a.precision == "fp16" ? lut::Precision::Fp16 : lut::Precision::Fp32;
-  if (!a.output.empty()) {
-    std::filesystem::path parent = std::filesystem::absolute(a.output).parent_path();
-    if (!std::filesystem::is_directory(parent)) ioError(a.output, "cannot write file: directory '" + parent.string() + "' does not exist");
-  }
   ShaderLibrary lib = loadLibrary(g);
+  if (!a.output.empty()) checkFileOutput(a.output, "LUT file", libraryInputs(lib));
   auto gpu = openDevice(g);
   lut::GpuLut generated = lut::generateDfgLutOnGpu(*gpu, lib, a.size, a.samples);
   lut::LutCheck check = lut::checkLut(generated.table, a.checkGrid, true);

@@ -61,6 +61,11 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
                               "unknown brick '" + id + "'", didYouMean(id, lib.brickIds())}});
     bricks.push_back(b);
   }
+  if (!a.output.empty()) {
+    std::vector<ProtectedPath> inputs = libraryInputs(lib);
+    addMaterialInputs(inputs, materials);
+    checkFileOutput(a.output, "report", inputs);
+  }
   auto gpu = openDevice(g);
   StressOptions options;
   options.randomSamples = a.samples;
@@ -86,14 +91,17 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
       perm.precision = precisionName(p);
       ProbeProgram program;
       StressResult failed;
+      // One file can hold many materials (glTF): each is named by its own source file and
+      // name, never by its position in the argument list.
+      const MaterialDesc& material = materials[m];
       failed.key = perm.key();
       failed.kind = "permutation";
-      failed.id = a.materials[m];
-      if (tryBuild(p, [&] { return buildPermutationProbe(lib, perm, /*illuminanceInput=*/true); }, program, failed)) {
-        results.push_back(stressProbe(*gpu, program, "permutation", a.materials[m], options));
-      } else {
+      failed.id = material.sourceFile;
+      if (tryBuild(p, [&] { return buildPermutationProbe(lib, perm, /*illuminanceInput=*/true); }, program, failed))
+        results.push_back(stressProbe(*gpu, program, "permutation", material.sourceFile, options));
+      else
         results.push_back(failed);
-      }
+      results.back().materialName = material.name;
     }
   }
 
@@ -130,7 +138,7 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
 Command addStressCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<StressArgs>();
   CLI::App* cmd = app.add_subcommand("stress", "Run bricks and materials over adversarial inputs; fail on NaN/Inf in their domain");
-  cmd->add_option("materials", args->materials, "Material JSON files");
+  cmd->add_option("materials", args->materials, kMaterialFilesHelp);
   cmd->add_option("--brick", args->bricks, "Stress this brick (repeatable)");
   cmd->add_flag("--all-bricks", args->allBricks, "Stress every brick of the library");
   cmd->add_option("--precision", args->precision, "fp32, fp16 (true half arithmetic) or all")

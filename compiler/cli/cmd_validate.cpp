@@ -107,7 +107,7 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
 Command addValidateCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<ValidateArgs>();
   CLI::App* cmd = app.add_subcommand("validate", "Run permutations and bricks on the GPU and compare with the double-precision references");
-  cmd->add_option("materials", args->materials, "Material JSON files");
+  cmd->add_option("materials", args->materials, kMaterialFilesHelp);
   cmd->add_option("--brick", args->bricks, "Validate this brick (repeatable)");
   cmd->add_flag("--all-bricks", args->allBricks, "Validate every brick of the library");
   cmd->add_flag("--unstable-variants", args->unstable, "Also run each brick's naive form (if it has one) to show the problem its stable form fixes");

@@ -67,7 +67,7 @@ int runVerify(const VerifyArgs& a, const GlobalOptions& g) {
 Command addVerifyCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<VerifyArgs>();
   CLI::App* cmd = app.add_subcommand("verify", "Check that a package holds every permutation a scene requires");
-  cmd->add_option("--scene", args->scene, "Scene file (.json, .gltf, .glb)")->required();
+  cmd->add_option("--scene", args->scene, kSceneFileHelp)->required();
   cmd->add_option("package", args->package, "Package directory (with manifest.json)")->required();
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   return {cmd, [args, &g] { return runVerify(*args, g); }};

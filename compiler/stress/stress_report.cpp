@@ -43,7 +43,8 @@ std::string replayCommand(const StressResult& r, const std::string& cli, bool in
   const std::vector<float>& row = inDomain ? r.worstInDomainRow : r.worstOutOfDomainRow;
   if (row.empty()) return "";
   std::string file = r.key + (inDomain ? "" : ".out_of_domain") + ".worst.csv";
-  std::string what = r.kind == "brick" ? "--brick " + r.id : "--material " + r.id;
+  std::string what = r.kind == "brick" ? "--brick " + r.id
+                                       : "--material " + r.id + (r.materialName.empty() ? "" : " --name " + r.materialName);
   std::string precision = r.precision == ShaderPrecision::Fp16 ? " --precision fp16" : "";
   return "printf '" + shellEscapeNewlines(csvRow(r.columns, row)) + "' > " + file + " && " + cli +
          " eval " + what + precision + " --input " + file;
@@ -53,6 +54,7 @@ nlohmann::json toJson(const StressResult& r, const std::string& cli) {
   nlohmann::json j{{"key", r.key},
                    {"kind", r.kind},
                    {"id", r.id},
+                   {"material", r.kind == "brick" ? nlohmann::json(nullptr) : nlohmann::json(r.materialName)},
                    {"precision", precisionName(r.precision)},
                    {"passed", r.passed()}};
   if (!r.compileError.empty()) {

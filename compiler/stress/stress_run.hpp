@@ -36,6 +36,7 @@ struct StressResult {
   std::string key;        // "brick.d_ggx", "brick.d_ggx.fp16", or a permutation key
   std::string kind;       // "brick" or "permutation"
   std::string id;         // brick id, or the material file (for the replay command)
+  std::string materialName;  // the material within that file (a glTF file holds several)
   ShaderPrecision precision = ShaderPrecision::Fp32;
   std::string compileError;  // set when the probe did not build at this precision
   StressStats inDomain, outOfDomain;

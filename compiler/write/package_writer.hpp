@@ -4,22 +4,28 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mb {
 
 class PackageWriter {
  public:
+  // `kind` goes into the directory's marker (write/output_paths.hpp): "package", "bench".
+  explicit PackageWriter(std::string kind = "package") : kind_(std::move(kind)) {}
   void addFile(const std::string& relativePath, std::string bytes);
   void addFile(const std::string& relativePath, const std::vector<uint32_t>& words);
-  // Writes all files to `dir`, replacing a previous package there. Throws DiagnosticError on
-  // I/O failure, leaving `dir` as it was.
+  // Writes all files and the marker to `dir`: creates it, fills it when empty, or replaces it
+  // in one atomic step when it carries the marker (E-OUTPUT-NOT-PACKAGE otherwise). Temporaries
+  // a killed run left beside it are removed first. Throws DiagnosticError on I/O failure,
+  // leaving `dir` as it was.
   void commit(const std::filesystem::path& dir) const;
   // Writes one file via a temporary sibling and a rename (replaceFileAtomically); throws
   // DiagnosticError (E-IO) when that fails.
   static void writeFileAtomically(const std::filesystem::path& file, const std::string& bytes);
 
  private:
+  std::string kind_;
   std::map<std::string, std::string> files_;
 };
 

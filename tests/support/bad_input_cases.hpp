@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
@@ -32,6 +33,13 @@ struct BadInputCase {
   std::string outputStarts;   // for failures that are not input errors (no device): stderr's start
   std::string suggests;       // some diagnostic's suggestion (json mode) contains this
   std::string knownFailure;   // non-empty: the expectation describes a fix not made yet
+  // Output cases (docs/cli.md "Outputs"): `workdir` is a corpus directory copied to a scratch
+  // WORK directory, where the command runs (input and arguments relative to it); every file
+  // of the copy must keep its bytes and nothing may be added. `output` replaces compile's
+  // automatic "-o OUT/pkg" ("" keeps it; "none": no -o at all).
+  std::string workdir;
+  std::string output;
+  bool libraryCopy = false;   // WORK/lib: a copy of the shipped shader library
 };
 
 // One printed diagnostic line, "file:line:column: error[CODE]: message" (line and column 0
@@ -45,6 +53,7 @@ struct CaseRun {
   int exitCode = -1;          // 124: timed out; >= 128: killed by a signal
   std::string out, err;       // stdout, stderr, with scratch paths shown as OUT
   std::vector<std::string> leftovers;  // entries left in the output's parent directory
+  std::vector<std::string> workChanges;  // WORK entries added, removed or changed
 };
 
 inline std::filesystem::path corpusDir() { return sourceDir() / "tests/data/bad_inputs"; }
@@ -67,6 +76,9 @@ inline std::vector<BadInputCase> loadBadInputCases() {
     c.outputStarts = e.value("output_starts", "");
     c.suggests = e.value("suggests", "");
     c.knownFailure = e.value("known_failure", "");
+    c.workdir = e.value("workdir", "");
+    c.output = e.value("output", "");
+    c.libraryCopy = e.value("library_copy", false);
     cases.push_back(c);
   }
   return cases;
@@ -80,18 +92,39 @@ inline void replaceAll(std::string& s, const std::string& from, const std::strin
 // The command line as a user types it from the repository root; OUT is a scratch directory.
 inline std::string commandArgs(const BadInputCase& c, const std::string& out, bool json) {
   std::string args = json ? "--diagnostics-format json " : "";
-  args += c.command + " " + corpusRelative() + "/" + c.input;
+  // In a WORK case the input is relative to WORK; the WORK directory itself stands for a
+  // command that takes no input file (lut, bricks, energy).
+  const std::string input = c.workdir.empty()     ? corpusRelative() + "/" + c.input
+                            : c.input == c.workdir ? ""
+                                                   : c.input.substr(c.workdir.size() + 1);
+  args += c.command + (input.empty() ? "" : " " + input);
   if (!c.extra.empty()) {
     std::string extra = c.extra;
     replaceAll(extra, "{corpus}", corpusRelative());
     args += " " + extra;
   }
-  if (c.command == "compile") args += " -o " + out + "/pkg";
+  if (c.output == "none") return args;
+  if (!c.output.empty()) args += " -o " + c.output;
+  else if (c.command == "compile") args += " -o " + out + "/pkg";
   return args;
 }
 
 inline std::string displayCommand(const BadInputCase& c) {
-  return (c.env.empty() ? "" : c.env + " ") + "matbricks " + commandArgs(c, "OUT", false);
+  return (c.workdir.empty() ? "" : "cd WORK && ") + (c.env.empty() ? "" : c.env + " ") + "matbricks " +
+         commandArgs(c, "OUT", false);
+}
+
+// path -> bytes of every file under `dir` ("dir/" entries for directories).
+inline std::map<std::string, std::string> treeBytes(const std::filesystem::path& dir) {
+  std::map<std::string, std::string> files;
+  if (!std::filesystem::exists(dir)) return files;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+    const std::string rel = std::filesystem::relative(e.path(), dir).string();
+    if (e.is_symlink()) files[rel] = "-> " + std::filesystem::read_symlink(e.path()).string();
+    else if (e.is_directory()) files[rel + "/"] = "";
+    else files[rel] = readFile(e.path());
+  }
+  return files;
 }
 
 inline std::vector<std::string> lines(const std::string& text) {
@@ -112,12 +145,18 @@ inline CaseRun runCase(const BadInputCase& c, bool json = false) {
   namespace fs = std::filesystem;
   static int serial = 0;
   fs::path scratch = fs::temp_directory_path() / ("mb_bad_inputs_" + std::to_string(::getpid()) + "_" + std::to_string(serial++));
-  fs::path out = scratch / "out", capture = scratch / "capture";
+  fs::path out = scratch / "out", capture = scratch / "capture", work = scratch / "work";
   fs::remove_all(scratch);
   fs::create_directories(out);
   fs::create_directories(capture);
+  std::map<std::string, std::string> workBefore;
+  if (!c.workdir.empty()) {
+    fs::copy(corpusDir() / c.workdir, work, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
+    if (c.libraryCopy) fs::copy(sourceDir() / "shaderlib", work / "lib", fs::copy_options::recursive);
+    workBefore = treeBytes(work);
+  }
   const char* cli = std::getenv("MATBRICKS_CLI");
-  std::string cmd = "cd '" + sourceDir().string() + "' && env " + c.env + " timeout 60 " +
+  std::string cmd = "cd '" + (c.workdir.empty() ? sourceDir() : work).string() + "' && env " + c.env + " timeout 60 " +
                     std::string(cli ? cli : "matbricks") + " " + commandArgs(c, out.string(), json) +
                     " >'" + (capture / "stdout").string() + "' 2>'" + (capture / "stderr").string() + "'";
   int status = std::system(cmd.c_str());
@@ -126,11 +165,22 @@ inline CaseRun runCase(const BadInputCase& c, bool json = false) {
   r.out = readFile(capture / "stdout");
   r.err = readFile(capture / "stderr");
   for (std::string* s : {&r.out, &r.err}) {
+    replaceAll(*s, work.string(), "WORK");
     replaceAll(*s, out.string(), "OUT");
     replaceAll(*s, sourceDir().string() + "/", "<repo>/");
   }
   for (const auto& e : fs::recursive_directory_iterator(out))
     r.leftovers.push_back(fs::relative(e.path(), out).string());
+  if (!c.workdir.empty()) {
+    const auto workAfter = treeBytes(work);
+    for (const auto& [path, bytes] : workBefore) {
+      auto it = workAfter.find(path);
+      if (it == workAfter.end()) r.workChanges.push_back("removed WORK/" + path);
+      else if (it->second != bytes) r.workChanges.push_back("changed WORK/" + path);
+    }
+    for (const auto& [path, bytes] : workAfter)
+      if (!workBefore.count(path)) r.workChanges.push_back("added WORK/" + path);
+  }
   fs::remove_all(scratch);
   return r;
 }
@@ -206,6 +256,7 @@ inline Judgement judgeTextRun(const BadInputCase& c, const CaseRun& r) {
   auto problem = [&](std::string s) { j.problems.push_back(std::move(s)); };
   if (r.exitCode >= 124) j.hard.push_back("crashed or hung: exit status " + std::to_string(r.exitCode));
   if (!r.leftovers.empty()) j.hard.push_back("left files behind, e.g. OUT/" + r.leftovers.front());
+  for (const auto& change : r.workChanges) j.hard.push_back("touched the user's files: " + change);
   if (r.exitCode != c.exit) problem("exit " + std::to_string(r.exitCode) + ", expected " + std::to_string(c.exit));
   if (r.out.find("wrote ") != std::string::npos) problem("stdout says a package was written");
   if (!c.outputStarts.empty()) {

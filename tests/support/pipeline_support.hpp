@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 #include <vector>
+#include <sys/wait.h>
 
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
@@ -47,11 +48,11 @@ struct CliResult {
 };
 
 // Runs the matbricks CLI (path from $MATBRICKS_CLI, set by CTest) with `args`, prefixed by
-// optional environment assignments such as "VK_ICD_FILENAMES=/x".
-inline CliResult runCli(const std::string& args, const std::string& env = "") {
+// optional environment assignments such as "VK_ICD_FILENAMES=/x", from `cwd` if given.
+inline CliResult runCli(const std::string& args, const std::string& env = "", const std::string& cwd = "") {
   const char* cli = std::getenv("MATBRICKS_CLI");
-  std::string cmd = (env.empty() ? "" : "env " + env + " ") + std::string(cli ? cli : "matbricks") +
-                    " " + args + " 2>&1";
+  std::string cmd = (cwd.empty() ? "" : "cd '" + cwd + "' && ") + (env.empty() ? "" : "env " + env + " ") +
+                    std::string(cli ? cli : "matbricks") + " " + args + " 2>&1";
   CliResult r;
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) return r;
@@ -59,7 +60,8 @@ inline CliResult runCli(const std::string& args, const std::string& env = "") {
   size_t n;
   while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
   int status = pclose(p);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  // A signal shows as 128 + its number, as a shell reports it (exit 139 = SIGSEGV).
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : (WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1);
   return r;
 }
 
