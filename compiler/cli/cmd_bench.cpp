@@ -10,6 +10,7 @@
 
 #include "bench/report.hpp"
 #include "bench/yardstick.hpp"
+#include "core/data_dir.hpp"
 #include "bench/svg_chart.hpp"
 #include "cli/cli_common.hpp"
 #include "write/package_writer.hpp"
@@ -55,7 +56,7 @@ bench::BenchOptions resolveScope(const BenchArgs& a, const ShaderLibrary& lib, s
   if (everything || a.ibl) o.lutSizes = a.lutSizes;
   materials = a.materials;
   if (everything) {
-    for (const auto& e : fs::directory_iterator(fs::path(MB_SOURCE_DIR) / "materials"))
+    for (const auto& e : fs::directory_iterator(dataRoot() / "materials"))
       if (e.path().extension() == ".json") materials.push_back(e.path().string());
     std::sort(materials.begin(), materials.end());
   }
@@ -133,7 +134,7 @@ Command addBenchCommand(CLI::App& app, GlobalOptions& g) {
   auto a = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand("bench", "Run time against error: every brick per slot, material permutations, DFG LUTs");
   cmd->add_option("materials", a->materials,
-                  std::string(kMaterialFilesHelp) + " (default with no --slot/--brick: the source tree's materials/*.json)");
+                  std::string(kMaterialFilesHelp) + " (default with no --slot/--brick: the shipped materials/*.json)");
   cmd->add_option("--slot", a->slots, "Only the bricks of this slot (repeatable)");
   cmd->add_option("--brick", a->bricks, "Only this brick (repeatable)");
   cmd->add_flag("--ibl", a->ibl, "Also measure the DFG LUTs (implied when nothing is narrowed)");

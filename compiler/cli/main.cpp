@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("matbricks " MB_VERSION " (") + toolchainVersion() + "; " + spirvCrossVersion() + ")");
   GlobalOptions g;
-  app.add_option("--shaderlib", g.shaderlib, "Brick library root (default: $MATBRICKS_SHADERLIB or the source tree's shaderlib/)");
+  app.add_option("--shaderlib", g.shaderlib, "Brick library root (default: $MATBRICKS_SHADERLIB, else the installed share/matbricks/shaderlib beside the program, else the source tree's)");
   app.add_option("--device", g.device, "Vulkan device: case-insensitive substring of its name (default: lavapipe)");
   app.add_flag("--vk-validation", g.vulkanValidation, "Enable the Khronos validation layer; any message fails the run");
   app.add_option("--diagnostics-format", g.diagnosticsFormat, "How errors are printed")

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "core/data_dir.hpp"
 #include "core/json_fields.hpp"
 #include "library/value_json.hpp"
 
@@ -721,7 +722,7 @@ ShaderLibrary ShaderLibrary::load(const fs::path& root) {
 fs::path ShaderLibrary::defaultRoot() {
   const char* env = std::getenv("MATBRICKS_SHADERLIB");
   if (env && *env) return fs::path(env);
-  return fs::path(MB_SOURCE_DIR) / "shaderlib";
+  return dataRoot() / "shaderlib";
 }
 
 template <class T, class Key>

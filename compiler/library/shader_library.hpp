@@ -138,7 +138,8 @@ class ShaderLibrary {
  public:
   // Reads `<root>/manifest.json`; throws DiagnosticError with file:line:col on bad data.
   static ShaderLibrary load(const std::filesystem::path& root);
-  // The default root: $MATBRICKS_SHADERLIB, else the source tree's shaderlib/.
+  // The default root: $MATBRICKS_SHADERLIB, else dataRoot()/shaderlib (installed beside the
+  // program, or the source tree's; core/data_dir.hpp).
   static std::filesystem::path defaultRoot();
 
   const std::filesystem::path& root() const { return root_; }
