@@ -151,3 +151,43 @@ TEST_CASE("the manifest keeps what the engine needs of a glTF material", "[gltf]
   CHECK(shortBin.cli.output.find("warning[W-GLB-BIN-SHORT]") != std::string::npos);
   CHECK(shortBin.cli.output.find("declares 64 bytes, but its BIN chunk holds 16") != std::string::npos);
 }
+
+// Item 5 inside scene JSON: its own lights count, and its "environment" wins.
+TEST_CASE("scene JSON naming a glTF without lights: the same default, overridable", "[gltf][gltf-conformance]") {
+  std::filesystem::path dir = test::freshTempDir("gltf_conformance", "scene_json");
+  auto scene = [&](const std::string& name, const std::string& extra) {
+    std::filesystem::path p = dir / name;
+    std::ofstream(p) << R"({"gltf": ")" << (corpus() / "occlusion_only.gltf").string() << "\"" << extra << "}";
+    return p.string();
+  };
+  struct Case {
+    std::string extra;
+    std::set<std::string> environments;
+    bool warned;
+  };
+  for (const Case& c : {Case{"", {"ibl_lut"}, true}, Case{R"(, "environment": ["sh"])", {"sh"}, false},
+                        Case{R"(, "lights": [{"type": "dir"}])", {"none"}, false}}) {
+    std::filesystem::path out = dir / "pkg";
+    test::CliResult r = test::runCli("compile --scene '" + scene("s.json", c.extra) + "' -o '" + out.string() + "' --no-cache");
+    INFO(c.extra << ":\n" << r.output);
+    REQUIRE(r.exitCode == 0);
+    CHECK(environmentsOf(manifestOf(out)) == c.environments);
+    CHECK((r.output.find("W-SCENE-GLTF-NO-LIGHTS") != std::string::npos) == c.warned);
+  }
+}
+
+// The numeric checks run the probe in-process (test_gltf_conventions.cpp); this is the same
+// through `matbricks eval`, as a user would: the emission at strength 1500.
+TEST_CASE("eval evaluates a glTF material from the corpus", "[gltf][gltf-conformance]") {
+  std::filesystem::path csv = test::freshTempDir("gltf_conformance", "eval") / "below_horizon.csv";
+  std::ofstream(csv) << "n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z\n0,0,1,0,0,1,0,0.6,-0.8\n";
+  test::CliResult r = test::runCli("eval --material '" + (corpus() / "emissive_strength.gltf").string() + "' --input '" +
+                                   csv.string() + "' --json");
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  json out = json::parse(r.output.substr(r.output.find('{')));
+  const json& gpu = out.at("rows").at(0).at("gpu");
+  CHECK(gpu.at("out.x").get<double>() == 1500.0);
+  CHECK(gpu.at("out.y").get<double>() == 750.0);
+  CHECK(gpu.at("out.z").get<double>() == 375.0);
+}
