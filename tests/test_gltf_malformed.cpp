@@ -56,8 +56,8 @@ std::vector<BadCase> badJsonCases() {
        "E-FIELD-TYPE", "true", ""},
       {"extensionsUsed is not a list of strings", kAsset + R"("extensionsUsed": ["KHR_materials_sheen", 3]})",
        "E-FIELD-TYPE", "3", "extensionsUsed"},
-      {"required extension not supported", kAsset + R"("extensionsRequired": ["KHR_draco_mesh_compression"]})",
-       "E-GLTF-REQUIRED-EXTENSION", "\"KHR_draco", ""},
+      {"required extension not supported", kAsset + R"("extensionsRequired": ["KHR_materials_transmission"]})",
+       "E-GLTF-REQUIRED-EXTENSION", "\"KHR_materials_transmission", ""},
   };
 }
 

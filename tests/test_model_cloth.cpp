@@ -100,7 +100,9 @@ TEST_CASE("cloth's wrap factor: Lambert's saturate(n.l) at wrap 0 and white subs
   // No sheen: the response to a unit directional light is baseColor * fd * w(n.l).
   const Vec3 base{0.7, 0.5, 0.3};
   ref::ModelEvalInput in = clothInput(viewAt(0.6), 0.5, base, {0, 0, 0});
-  const double fd = (1.0 - 0.5 * 0.5) / ref::kPi;  // fabric Lambert lerp(1, 0.5, r) / pi
+  // Fabric Lambert lerp(1, 0.5, alpha) / pi, alpha = 0.5^2 (roughness_squared; seed 000 and
+  // Unity pass alpha, not the perceptual roughness).
+  const double fd = (1.0 - 0.5 * (0.5 * 0.5)) / ref::kPi;
   for (double cosL : {-0.6, -0.1, 0.0, 0.2, 0.5, 0.9, 1.0}) {
     const Vec3 l{std::sqrt(1.0 - cosL * cosL), 0.0, cosL};
     const double c = std::max(cosL, 0.0);

@@ -30,7 +30,8 @@ std::map<std::string, std::string> standardBricks() {
           {"clearcoat_v", "v_kelemen"},               {"clearcoat_fresnel", "f_schlick"},
           {"f0_clearcoat", "f0_clearcoat_fit"},       {"specular_d_aniso", "d_ggx_aniso"},
           {"specular_v_aniso", "v_smith_ggx_correlated_aniso"}, {"sheen_d", "d_charlie"},
-          {"sheen_v", "v_ashikhmin"}};
+          {"sheen_v", "v_ashikhmin"},                {"clearcoat_base_roughness", "coat_base_roughness_max"},
+          {"anisotropy_alpha", "aniso_alpha_kulla"}};
 }
 
 ref::ModelEvalInput baseInput() {

@@ -38,6 +38,9 @@ int main(int argc, char** argv) {
       if (c.app->parsed()) return c.run();
   } catch (const DiagnosticError& e) {
     printDiagnostics(e.diagnostics(), g);
+    // E-INTERNAL is matbricks' own inconsistency, not the input's (exit 5, docs/cli.md).
+    for (const auto& d : e.diagnostics())
+      if (d.code == "E-INTERNAL") return kExitInternalError;
     return kExitInputError;
   } catch (const CLI::Error& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -53,7 +53,7 @@ const std::map<std::string, Theory>& theories() {
         "sheen by design: Ashikhmin's smooth denominator 1/(4(n.l + n.v - n.l n.v)) has no masking "
         "(Neubelt & Pettineo 2013)"}},
       {"diffuse_lambert", {Expectation::Conserving, "Int (n.l)/pi d(omega) = 1 exactly"}},
-      {"diffuse_fabric_lambert", {Expectation::Conserving, "lerp(1, 0.5, r)/pi: albedo lerp(1, 0.5, r) <= 1"}},
+      {"diffuse_fabric_lambert", {Expectation::Conserving, "lerp(1, 0.5, alpha)/pi: albedo lerp(1, 0.5, alpha) <= 1"}},
       {"diffuse_disney_burley",
        {Expectation::NotConserving,
         "the retro-reflection factor F_D90 = 0.5 + 2 r (l.h)^2 is not normalized (Burley 2012 sec. 5.3); the "

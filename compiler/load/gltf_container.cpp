@@ -84,7 +84,8 @@ void appendU32(std::string& out, uint32_t v) {
 
 bool isGlb(ByteSource& bytes) { return bytes.size() >= 4 && bytes.u32(0) == kGlbMagic; }
 
-std::string jsonChunkOf(ByteSource& bytes, const std::string& file) {
+std::string jsonChunkOf(ByteSource& bytes, const std::string& file, GltfContainerInfo& info) {
+  info.glb = true;
   const uint64_t size = bytes.size();
   if (size < kHeaderSize)
     glbError("E-GLB-TRUNCATED", file, size,
@@ -130,6 +131,8 @@ std::string jsonChunkOf(ByteSource& bytes, const std::string& file) {
       glbError("E-GLB-CHUNK", file, at + 4, "a second JSON chunk (only the first may be JSON)");
     } else if (type == kChunkBin && chunkIndex != 1) {
       glbError("E-GLB-CHUNK", file, at + 4, "a BIN chunk must directly follow the JSON chunk");
+    } else if (type == kChunkBin) {
+      info.binChunkLength = static_cast<int64_t>(chunkLength);
     }
     at = data + chunkLength;
   }
@@ -139,13 +142,18 @@ std::string jsonChunkOf(ByteSource& bytes, const std::string& file) {
 
 }  // namespace
 
-JsonDocument parseGltfJson(const std::string& bytes, const std::string& file) {
+JsonDocument parseGltfJson(const std::string& bytes, const std::string& file, GltfContainerInfo& info) {
   MemorySource source(bytes);
   // Positions of a .glb's JSON errors are line:column in the JSON chunk's text.
-  return JsonDocument::parse(isGlb(source) ? jsonChunkOf(source, file) : bytes, file);
+  return JsonDocument::parse(isGlb(source) ? jsonChunkOf(source, file, info) : bytes, file);
 }
 
-JsonDocument loadGltfJson(const std::string& path) {
+JsonDocument parseGltfJson(const std::string& bytes, const std::string& file) {
+  GltfContainerInfo info;
+  return parseGltfJson(bytes, file, info);
+}
+
+JsonDocument loadGltfJson(const std::string& path, GltfContainerInfo& info) {
   std::error_code ec;
   // Not a regular file (a directory, /dev/zero) must not hang or crash the import.
   bool regular = std::filesystem::is_regular_file(path, ec);
@@ -156,13 +164,18 @@ JsonDocument loadGltfJson(const std::string& path) {
                             "cannot open file: expected a readable .gltf or .glb file", ""}});
   }
   FileSource source(in, size);
-  if (isGlb(source)) return JsonDocument::parse(jsonChunkOf(source, path), path);
+  if (isGlb(source)) return JsonDocument::parse(jsonChunkOf(source, path, info), path);
   if (size > kMaxGltfJsonBytes) {
     throw DiagnosticError({{Severity::Error, "E-FILE-TOO-LARGE", {path, 0, 0},
                             "a .gltf of " + std::to_string(size) + " bytes is over the limit of " +
                                 std::to_string(kMaxGltfJsonBytes) + " bytes of JSON", ""}});
   }
   return JsonDocument::parse(source.read(0, size), path);
+}
+
+JsonDocument loadGltfJson(const std::string& path) {
+  GltfContainerInfo info;
+  return loadGltfJson(path, info);
 }
 
 std::string packGlb(const std::string& json, const std::string& bin) {

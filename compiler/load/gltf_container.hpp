@@ -19,6 +19,15 @@ JsonDocument loadGltfJson(const std::string& path);
 // The same, on bytes already read (`file` is used in diagnostics).
 JsonDocument parseGltfJson(const std::string& bytes, const std::string& file);
 
+// What the container says besides the JSON: whether it is a .glb and, if so, the length of
+// its BIN chunk (-1: none), which the import compares with the buffer the JSON declares.
+struct GltfContainerInfo {
+  bool glb = false;
+  int64_t binChunkLength = -1;
+};
+JsonDocument loadGltfJson(const std::string& path, GltfContainerInfo& info);
+JsonDocument parseGltfJson(const std::string& bytes, const std::string& file, GltfContainerInfo& info);
+
 // Builds a .glb: header, JSON chunk (padded with spaces) and, if `bin` is not empty, a BIN
 // chunk (padded with zeros), as the spec lays them out. Used to generate the shipped .glb
 // examples and the malformed-binary tests.

@@ -2,6 +2,7 @@
 // texture records in each description, and resolving every material against the library.
 #include "load/gltf_import.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 
@@ -73,8 +74,42 @@ std::string describeTexture(const GltfTextureInput& t) {
   return s;
 }
 
+nlohmann::json textureJson(const GltfTextureInput& t) {
+  nlohmann::json j{{"parameter", t.param.empty() ? "normalTexture" : t.param},
+                   {"channels", t.channels},
+                   {"srgb", t.srgb},
+                   {"texture", t.texture},
+                   {"image", t.image},
+                   {"uri", t.uri},
+                   {"texCoord", t.texCoord},
+                   {"scale", t.scale}};
+  if (t.transform)
+    j["KHR_texture_transform"] = {{"offset", {t.offset[0], t.offset[1]}},
+                                  {"rotation", t.rotation},
+                                  {"scale", {t.uvScale[0], t.uvScale[1]}},
+                                  {"texCoord", t.transformTexCoord >= 0 ? t.transformTexCoord : t.texCoord}};
+  return j;
+}
+
+// What the engine applies and the shader does not: the manifest's "engine" object (issue 18,
+// docs/gltf.md "Engine data"). Keys come out sorted (nlohmann::json objects are maps).
+std::string engineData(const GltfMaterial& m) {
+  nlohmann::json textures = nlohmann::json::array();
+  for (const auto& t : m.textures) textures.push_back(textureJson(t));
+  nlohmann::json j{{"gltfMaterial", m.index},
+                   {"alphaMode", m.alphaMode},
+                   {"alphaCutoff", m.alphaCutoff},
+                   {"doubleSided", m.doubleSided},
+                   {"textures", textures}};
+  if (m.source.features.end() != std::find_if(m.source.features.begin(), m.source.features.end(),
+                                              [](const SourceName& f) { return f.value == "anisotropy"; }))
+    j["anisotropyRotation"] = m.anisotropyRotation;
+  return j.dump();
+}
+
 // The description carries what an engine needs to bind each texture input (docs/gltf.md).
 void describe(GltfMaterial& m) {
+  m.source.engineData = engineData(m);
   std::string d = "glTF material " + std::to_string(m.index);
   if (!m.gltfName.empty()) d += " '" + m.gltfName + "'";
   d += " of " + m.source.file;
@@ -87,7 +122,23 @@ void describe(GltfMaterial& m) {
 
 }  // namespace
 
-std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc) {
+// A .glb's first buffer without a uri is its BIN chunk (glTF 2.0 spec, "GLB-stored Buffer"):
+// the chunk may be up to 3 bytes longer (padding), never shorter. Materials never read it, so
+// a short one is a warning for the engine, not an error (issue 18).
+void checkBinChunk(JsonFields& f, const GltfContainerInfo& info, std::vector<Diagnostic>& warnings) {
+  if (!info.glb || !f.isObject("/buffers/0") || f.find("/buffers/0/uri")) return;
+  auto declared = f.number("/buffers/0/byteLength");
+  if (!declared || *declared <= static_cast<double>(std::max<int64_t>(info.binChunkLength, 0))) return;
+  std::string have = info.binChunkLength < 0 ? "the file has no BIN chunk"
+                                             : "its BIN chunk holds " + std::to_string(info.binChunkLength);
+  warnings.push_back({Severity::Warning, "W-GLB-BIN-SHORT", f.valueAt("/buffers/0/byteLength"),
+                      "buffer 0 (the .glb's BIN chunk) declares " + std::to_string(static_cast<uint64_t>(*declared)) +
+                          " bytes, but " +
+                          have + " byte(s): the file is truncated or damaged, and an engine reading its meshes "
+                                 "or images will fail; materials do not read it"});
+}
+
+std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc, const GltfContainerInfo* container) {
   DiagnosticSink sink;
   JsonFields f(doc, sink);
   std::vector<GltfMaterial> materials;
@@ -104,10 +155,7 @@ std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc) {
     if (!gltf::isExtensionUnderstood(required[i]))
       f.error("E-GLTF-REQUIRED-EXTENSION", f.valueAt(JsonFields::element("/extensionsRequired", i)),
               "extension '" + required[i] + "' is required by the file but not supported by matbricks "
-              "(supported: " + quotedList({"KHR_materials_clearcoat", "KHR_materials_sheen",
-                                           "KHR_materials_anisotropy", "KHR_materials_specular",
-                                           "KHR_materials_ior", "KHR_materials_emissive_strength",
-                                           "KHR_texture_transform", "KHR_lights_punctual"}) + ")");
+              "(supported: " + quotedList(gltf::understoodExtensions()) + ")");
   }
   ctx.textureCount = arraySize(f, "/textures");
   ctx.imageCount = arraySize(f, "/images");
@@ -121,6 +169,7 @@ std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc) {
   // Listed but used by no material (geometry or texture extensions, for instance): one
   // warning for the file, carried by the first material.
   std::vector<Diagnostic> fileWarnings;
+  if (container) checkBinChunk(f, *container, fileWarnings);
   for (size_t i = 0; i < used.size(); ++i) {
     const std::string& name = used[i];
     if (gltf::isExtensionUnderstood(name) || usedByMaterials.count(name) || ctx.required.count(name)) continue;
@@ -141,10 +190,16 @@ std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc) {
   return materials;
 }
 
-std::vector<GltfMaterial> readGltf(const std::string& path) { return mapGltfDocument(loadGltfJson(path)); }
+std::vector<GltfMaterial> readGltf(const std::string& path) {
+  GltfContainerInfo info;
+  JsonDocument doc = loadGltfJson(path, info);
+  return mapGltfDocument(doc, &info);
+}
 
 std::vector<GltfMaterial> parseGltf(const std::string& bytes, const std::string& file) {
-  return mapGltfDocument(parseGltfJson(bytes, file));
+  GltfContainerInfo info;
+  JsonDocument doc = parseGltfJson(bytes, file, info);
+  return mapGltfDocument(doc, &info);
 }
 
 std::vector<MaterialSource> readGltfMaterials(const std::string& path) {

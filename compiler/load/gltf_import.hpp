@@ -24,6 +24,12 @@ struct GltfTextureInput {
   std::string uri;      // the image's uri, or "bufferView N" for an embedded image
   int texCoord = 0;     // which TEXCOORD_n set
   bool transform = false;  // KHR_texture_transform present: the engine applies it to the UVs
+  // KHR_texture_transform's values (its defaults when absent): uv' = T(offset) R(rotation)
+  // S(scale) uv, with texCoord overriding the textureInfo's when >= 0.
+  double offset[2] = {0.0, 0.0};
+  double rotation = 0.0;
+  double uvScale[2] = {1.0, 1.0};
+  int transformTexCoord = -1;
   double scale = 1.0;   // normalTexture scale / occlusionTexture strength, else 1
 };
 
@@ -32,6 +38,12 @@ struct GltfMaterial {
   int index = 0;                        // position in glTF `materials`
   std::string gltfName;                 // as written (may be empty)
   std::vector<GltfTextureInput> textures;
+  // Drawing state the engine applies (glTF 2.0 spec, "Alpha Coverage", "Double Sided") and
+  // the anisotropy direction's rotation (KHR_materials_anisotropy), glTF defaults if absent.
+  std::string alphaMode = "OPAQUE";
+  double alphaCutoff = 0.5;
+  bool doubleSided = false;
+  double anisotropyRotation = 0.0;
 };
 
 // Reads a .gltf / .glb (the container is detected by content) and maps every material.
@@ -43,7 +55,9 @@ std::vector<GltfMaterial> readGltf(const std::string& path);
 std::vector<GltfMaterial> parseGltf(const std::string& bytes, const std::string& file);
 // The same on a document already read (loadGltfJson / parseGltfJson), for readers that also
 // look at other parts of the file (load/scene_gltf.cpp).
-std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc);
+// `container` (optional) lets it check a .glb's BIN chunk against the buffer it declares.
+struct GltfContainerInfo;
+std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc, const GltfContainerInfo* container = nullptr);
 
 // readGltf without the texture records.
 std::vector<MaterialSource> readGltfMaterials(const std::string& path);

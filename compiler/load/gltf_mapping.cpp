@@ -214,11 +214,26 @@ class MaterialMapper {
     for (const auto& [name, value] : f_.find(e)->items()) {
       if (name == kTextureTransform) {
         t.transform = true;
+        readTextureTransform(at(e, name), t);
       } else if (!ctx_.required.count(name)) {
         warn("W-GLTF-UNSUPPORTED-EXTENSION", f_.keyAt(at(e, name)),
              label() + " uses texture extension '" + name + "', which matbricks does not support: it is ignored");
       }
     }
+  }
+
+  // KHR_texture_transform: offset [2], rotation (radians), scale [2], texCoord; the engine
+  // applies them to the UVs, so they are kept for the manifest (issue 18).
+  void readTextureTransform(const std::string& ptr, GltfTextureInput& t) {
+    if (!f_.isObject(ptr)) return;
+    std::vector<double> offset = numbers(at(ptr, "offset"), 2, {0.0, 0.0});
+    std::vector<double> scale = numbers(at(ptr, "scale"), 2, {1.0, 1.0});
+    t.offset[0] = offset[0];
+    t.offset[1] = offset[1];
+    t.uvScale[0] = scale[0];
+    t.uvScale[1] = scale[1];
+    t.rotation = number(at(ptr, "rotation"), 0.0);
+    t.transformTexCoord = index(at(ptr, "texCoord")).value_or(-1);
   }
 
   void readImage(GltfTextureInput& t) {
@@ -305,6 +320,9 @@ class MaterialMapper {
   void readAlpha() {
     std::string modePtr = at(ptr_, "alphaMode");
     std::string mode = f_.string(modePtr).value_or("OPAQUE");
+    out_.alphaMode = mode;
+    out_.alphaCutoff = number(at(ptr_, "alphaCutoff"), 0.5);
+    out_.doubleSided = f_.boolean(at(ptr_, "doubleSided")).value_or(false);
     if (mode != "OPAQUE" && mode != "MASK" && mode != "BLEND") {
       f_.error("E-FIELD-TYPE", f_.valueAt(modePtr),
                "'" + JsonFields::describe(modePtr) + "' must be 'OPAQUE', 'MASK' or 'BLEND', found '" + mode + "'",
@@ -318,6 +336,12 @@ class MaterialMapper {
 
   void enable(const char* extension, const std::string& feature) {
     out_.source.features.push_back({feature, f_.keyAt(ext(extension))});
+  }
+
+  // Binds the glTF spec's convention where the model's default is the seed's (issue 18).
+  void bind(const char* extension, const std::string& role, const std::string& brick) {
+    SourceLocation at = f_.keyAt(ext(extension));
+    out_.source.bricks.push_back({{role, at}, {brick, at}});
   }
 
   // One row of docs/gltf.md's table: model input = glTF factor (constant, glTF default when
@@ -344,6 +368,13 @@ class MaterialMapper {
 
   void readClearcoat() {
     enable(kClearcoat, "clearcoat");
+    // KHR_materials_clearcoat: clearcoat_brdf is the core specular_brdf (GGX D, height-
+    // correlated Smith V, Appendix B), fresnel_coat weighs it by Schlick at n_c.v, and the base
+    // material stays as it is (no F0ClearCoatToSurface, no roughness raise: seed 000's).
+    bind(kClearcoat, "clearcoat_v", "v_smith_ggx_correlated");
+    bind(kClearcoat, "clearcoat_fresnel", "f_schlick_nov");
+    bind(kClearcoat, "f0_clearcoat", "f0_clearcoat_none");
+    bind(kClearcoat, "clearcoat_base_roughness", "coat_base_roughness_keep");
     std::string e = ext(kClearcoat);
     apply(e, {"clearCoat", "clearcoatFactor", {0.0}, "clearcoatTexture", "r", false, ""});
     apply(e, {"clearCoatRoughness", "clearcoatRoughnessFactor", {0.0}, "clearcoatRoughnessTexture", "g", false, ""});
@@ -363,11 +394,15 @@ class MaterialMapper {
 
   void readAnisotropy() {
     enable(kAnisotropy, "anisotropy");
+    // KHR_materials_anisotropy: alpha_t = mix(alpha, 1, s^2), alpha_b = alpha (not Filament's
+    // alpha (1 +- s), the model's default).
+    bind(kAnisotropy, "anisotropy_alpha", "aniso_alpha_gltf");
     std::string e = ext(kAnisotropy);
     // Direction in R, G (for the engine's tangent), strength in B (KHR_materials_anisotropy).
     apply(e, {"anisotropy", "anisotropyStrength", {0.0}, "anisotropyTexture", "rgb", false, ".b"});
     std::string rotPtr = at(e, "anisotropyRotation");
     double rotation = number(rotPtr, 0.0);
+    out_.anisotropyRotation = rotation;
     if (rotation != 0.0)
       warn("W-GLTF-NOT-SHADED", f_.valueAt(rotPtr),
            label() + " has anisotropyRotation " + glslFloat(rotation) +
@@ -443,9 +478,41 @@ bool isMaterialExtensionSupported(const std::string& name) {
   return kSupported.count(name) != 0;
 }
 
+namespace {
+
+// Extensions that change how a file's meshes or images are stored, never what
+// a material computes: the engine decodes them (issue 18: a file requiring Draco or BasisU
+// was rejected although materials never read meshes or images).
+const std::vector<std::string>& engineExtensions() {
+  static const std::vector<std::string> kEngine = {
+      "KHR_draco_mesh_compression", "KHR_mesh_quantization", "EXT_meshopt_compression",
+      "KHR_texture_basisu",         "EXT_texture_webp",      "EXT_texture_avif"};
+  return kEngine;
+}
+
+// Understood beyond the material ones: KHR_texture_transform (recorded for the engine) and the
+// two the scene import reads (KHR_lights_punctual lights, EXT_lights_image_based: the scene's
+// environment is image based).
+const std::vector<std::string>& recordedExtensions() {
+  static const std::vector<std::string> kRecorded = {kTextureTransform, "KHR_lights_punctual",
+                                                     "EXT_lights_image_based"};
+  return kRecorded;
+}
+
+}  // namespace
+
 bool isExtensionUnderstood(const std::string& name) {
-  return isMaterialExtensionSupported(name) || name == kTextureTransform ||
-         name == "KHR_lights_punctual";
+  auto in = [&](const std::vector<std::string>& list) {
+    return std::find(list.begin(), list.end(), name) != list.end();
+  };
+  return isMaterialExtensionSupported(name) || in(recordedExtensions()) || in(engineExtensions());
+}
+
+std::vector<std::string> understoodExtensions() {
+  std::vector<std::string> all = {kClearcoat, kSheen, kAnisotropy, kSpecular, kIor, kEmissiveStrength};
+  all.insert(all.end(), recordedExtensions().begin(), recordedExtensions().end());
+  all.insert(all.end(), engineExtensions().begin(), engineExtensions().end());
+  return all;
 }
 
 GltfMaterial mapMaterial(JsonFields& f, const FileContext& ctx, size_t index,

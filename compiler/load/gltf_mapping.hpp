@@ -3,6 +3,7 @@
 #pragma once
 #include <set>
 #include <string>
+#include <vector>
 
 #include "core/json_fields.hpp"
 #include "load/gltf_import.hpp"
@@ -20,10 +21,13 @@ struct FileContext {
 
 // Extensions a material may use that the import maps (docs/gltf.md).
 bool isMaterialExtensionSupported(const std::string& name);
-// Extensions the import understands anywhere in a file: the material ones, plus those it
-// records for the engine (KHR_texture_transform) or leaves to the scene import
-// (KHR_lights_punctual).
+// Extensions the import understands anywhere in a file: the material ones, those it records
+// for the engine (KHR_texture_transform) or leaves to the scene import (KHR_lights_punctual,
+// EXT_lights_image_based), and the mesh/image ones only the engine decodes (Draco, BasisU,
+// ...), which no material reads. None of them is an error in extensionsRequired.
 bool isExtensionUnderstood(const std::string& name);
+// All of them, for messages.
+std::vector<std::string> understoodExtensions();
 
 // Maps materials[index]. Errors go to the sink (the caller throws once); warnings go to the
 // material. `usedExtensions` collects the unsupported extensions the material uses.

@@ -107,7 +107,8 @@ std::string lightType(const std::string& t) {
 }  // namespace
 
 GltfSceneContents readGltfScene(const std::string& path, const ShaderLibrary& lib) {
-  JsonDocument doc = loadGltfJson(path);
+  GltfContainerInfo container;
+  JsonDocument doc = loadGltfJson(path, container);
   DiagnosticSink sink;
   GltfSceneWalker walker(doc, sink);
   walker.walk();
@@ -136,7 +137,7 @@ GltfSceneContents readGltfScene(const std::string& path, const ShaderLibrary& li
   out.imageBased = std::find(used.begin(), used.end(), "EXT_lights_image_based") != used.end();
   sink.throwIfErrors();
 
-  std::vector<GltfMaterial> all = mapGltfDocument(doc);
+  std::vector<GltfMaterial> all = mapGltfDocument(doc, &container);
   for (auto& m : all) {
     if (!walker.materials.count(static_cast<size_t>(m.index))) continue;
     SceneMaterial sm;

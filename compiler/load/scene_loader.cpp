@@ -19,6 +19,21 @@ namespace mb {
 
 namespace {
 
+// A glTF scene with neither KHR_lights_punctual lights nor EXT_lights_image_based says nothing
+// about its lighting. Planned with `none` it would get emission-only permutations (every
+// texture that does not feed emission compiled away), which is not what a viewer shows: glTF
+// viewers such as Khronos's glTF Sample Viewer light such a file by default with an
+// environment map. So it gets `ibl_lut` -- the image-based light and its SH irradiance --
+// and a warning that says how to choose otherwise (issue 18; docs/scenes.md).
+Diagnostic noLightsWarning(const SourceLocation& where) {
+  return {Severity::Warning, "W-SCENE-GLTF-NO-LIGHTS", where,
+          "the glTF scene has no KHR_lights_punctual light and no EXT_lights_image_based: it is planned "
+          "with environment ibl_lut (image-based light), as glTF viewers show such files",
+          "to choose the lights and environment, name the file in a scene JSON's \"gltf\" with "
+          "\"lights\" and \"environment\""};
+}
+
+
 using nlohmann::json;
 
 // A scene is a handful of levels deep; anything deeper is refused before the position scan.
@@ -138,7 +153,10 @@ class SceneJsonReader {
       scene_.lights.insert(scene_.lights.end(), g.lights.begin(), g.lights.end());
       scene_.warnings.insert(scene_.warnings.end(), g.warnings.begin(), g.warnings.end());
       for (auto& m : g.materials) addMaterial(std::move(m));
-      if (g.imageBased && !f_.find("/environment")) scene_.environments = {"ibl_lut"};
+      if (!f_.find("/environment") && (g.imageBased || scene_.lights.empty())) {
+        scene_.environments = {"ibl_lut"};
+        if (!g.imageBased) scene_.warnings.push_back(noLightsWarning(at));
+      }
     } catch (const DiagnosticError& e) {
       for (const auto& d : e.diagnostics()) sink_.error(d.code, d.where, d.message, d.suggestion);
     }
@@ -217,7 +235,8 @@ SceneDesc loadGltfSceneFile(const std::string& path, const ShaderLibrary& lib) {
   scene.warnings = std::move(g.warnings);
   // A glTF file says nothing about precision, quality or targets: fp32, high, spirv; image
   // based light only when the file uses EXT_lights_image_based (docs/scenes.md).
-  scene.environments = {g.imageBased ? "ibl_lut" : "none"};
+  scene.environments = {g.imageBased || scene.lights.empty() ? "ibl_lut" : "none"};
+  if (!g.imageBased && scene.lights.empty()) scene.warnings.push_back(noLightsWarning({path, 1, 1}));
   scene.lightsWhere = scene.environmentWhere = scene.precisionWhere = scene.qualityWhere = scene.targetsWhere =
       SourceLocation(path, 1, 1);
   if (scene.materials.empty())

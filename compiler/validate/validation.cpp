@@ -45,6 +45,7 @@ nlohmann::json toJson(const ValidationRecord& r) {
           {"nan_count", r.stats.nanCount},
           {"inf_count", r.stats.infCount},
           {"negative_count", r.stats.negativeCount},
+          {"negative_fails", r.judgesNegatives()},
           {"reference_invalid_count", r.stats.referenceInvalid},
           {"failures", r.stats.failures},
           {"max_conditioning_allowance", num(r.stats.maxConditioning)},

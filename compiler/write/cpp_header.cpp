@@ -143,9 +143,10 @@ std::string packageHeader(const PackageInputs& in, const std::vector<PackagedPer
   for (size_t i = 0; i < perms.size(); ++i) {
     const PackagedPermutation& p = perms[i];
     const nlohmann::json* reflected = materialParamsBlock(p.built->artifacts.reflection);
-    bool hasParams = false;
-    for (const auto& prm : p.perm->material->params) hasParams |= !prm.constant;
-    if (hasParams && !reflected) layoutMismatch(p, "no uniform block at set 0, binding 2 in the reflection");
+    // No block although the material has run-time parameters: none of them reaches this
+    // permutation's output (an occlusion texture without an environment to occlude, every
+    // texture of an emission-only permutation), so the optimizer removed the block. The module
+    // binds nothing at set 0, binding 2: paramsStruct "" and paramsSize 0 (docs/package.md).
     if (!reflected) {
       structOf.emplace_back();
       continue;

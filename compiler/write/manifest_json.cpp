@@ -51,6 +51,7 @@ nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutatio
                                                                        : b.artifacts.reflection}};
   for (const auto& [role, id] : boundRoles(*in.lib, perm)) entry["bricks"][role] = id;
   for (const auto& prm : m.params) entry["parameters"].push_back(paramJson(prm));
+  if (!m.engineData.empty()) entry["engine"] = nlohmann::json::parse(m.engineData);
   return entry;
 }
 

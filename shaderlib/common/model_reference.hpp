@@ -99,6 +99,12 @@ struct ModelEvalInput {
 
 };
 
+// max(x, 0) per component: the models clamp the SH irradiance, which a truncated expansion
+// can ring below 0, as Filament's Irradiance_SphericalHarmonics does.
+inline Vec3 nonNegative(const Vec3& x) {
+  return {x.x > 0.0 ? x.x : 0.0, x.y > 0.0 ? x.y : 0.0, x.z > 0.0 ? x.z : 0.0};
+}
+
 using ModelReferenceFn = Vec3 (*)(const ModelEvalInput&);
 
 class ModelRegistry {

@@ -1,11 +1,12 @@
-// Reference for diffuse_fabric_lambert: Unity HDRP's FabricLambert, (1 - r/2) / pi, i.e. a
-// Lambertian lobe whose albedo falls linearly from 1 to 0.5 with perceptual roughness r.
+// Reference for diffuse_fabric_lambert: Unity's FabricLambert, (1 - alpha/2) / pi, i.e. a
+// Lambertian lobe whose albedo falls linearly from 1 to 0.5 with alpha (seed 000 passes its
+// "roughness", which it defines as alpha = perceptual roughness squared).
 #include "common/reference.hpp"
 
 namespace mb::ref {
 
-static double diffuseFabricLambert(Geometry, double perceptualRoughness, double) {
-  return (1.0 - 0.5 * perceptualRoughness) / kPi;
+static double diffuseFabricLambert(Geometry, double, double alpha) {
+  return (1.0 - 0.5 * alpha) / kPi;
 }
 
 MB_REFERENCE("diffuse_fabric_lambert", diffuseFabricLambert);

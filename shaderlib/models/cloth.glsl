@@ -78,20 +78,25 @@ vec3 mb_shade_spot(ShadingPixel px, ShadingFrame f, SpotLight light) {
 
 #ifndef MB_ENV_NONE
 // SH9 diffuse, weighted by 1 - E in ibl_lut, plus the prefiltered sheen:
-//   L = diffuseColor * E_irr(n) / pi * ao * (1 - E) + L_pref(r, lod) * E * occlusion,
+//   L = diffuseColor * max(E_irr(n), 0) / pi * ao * max(1 - E, 0) + L_pref(r, lod) * E * occlusion,
 //   E = sheenColor * dfg.z, dfg.z = Int D_Charlie V_Ashikhmin (n.l) dw (Filament's cloth
 // specularDFG). The wrap and subsurface colour are not applied to the irradiance (docs).
 vec3 mb_shade_environment(ShadingPixel px, ShadingFrame f, Environment env) {
     float ao = env.ao * px.ambientOcclusion;
-    vec3 irradiance = MB_SLOT_sh_irradiance(f.n, env.sh[0], env.sh[1], env.sh[2], env.sh[3], env.sh[4],
-                                            env.sh[5], env.sh[6], env.sh[7], env.sh[8]);
+    // Clamped at 0, as Filament's Irradiance_SphericalHarmonics: a truncated SH expansion rings
+    // below 0 away from a bright direction, and irradiance (hence radiance) is never negative
+    // (issue 18: validate fails a permutation on any negative output).
+    vec3 irradiance = max(MB_SLOT_sh_irradiance(f.n, env.sh[0], env.sh[1], env.sh[2], env.sh[3], env.sh[4],
+                                                env.sh[5], env.sh[6], env.sh[7], env.sh[8]),
+                          0.0);
     vec3 diffuse = px.diffuseColor * irradiance * (ao * (1.0 / MB_PI));
 #ifdef MB_ENV_IBL_LUT
     vec3 E = px.sheenColor * px.dfg.z;
     vec3 r = reflect(-f.v, f.n);
     float lod = MB_SLOT_mip_mapping(px.perceptualRoughness, clamp(dot(f.n, r), MB_MIN_N_DOT_V, 1.0), env.maxMip);
     float occlusion = MB_SLOT_specular_occlusion(makeGeometry(f.n, f.v, r), f.ng, ao, px.perceptualRoughness);
-    return diffuse * (vec3(1.0) - E) + mb_fetch_prefiltered(r, lod) * E * occlusion;
+    // 1 - E clamped at 0: the cloth channel exceeds 1 at grazing views (docs/energy.md).
+    return diffuse * max(vec3(1.0) - E, 0.0) + mb_fetch_prefiltered(r, lod) * E * occlusion;
 #else
     return diffuse;
 #endif

@@ -60,7 +60,7 @@ Vec3 environment(const ModelEvalInput& in, const Pixel& px, const Environment& e
   Args sh = Args() << n;
   for (const Vec3& c : env.sh) sh << c;
   const double ao = env.ao * px.ambientOcclusion;
-  const Vec3 diffuse = px.diffuseColor * in.vec3("sh_irradiance", sh) * (ao / kPi);
+  const Vec3 diffuse = px.diffuseColor * nonNegative(in.vec3("sh_irradiance", sh)) * (ao / kPi);
   if (env.mode != "ibl_lut") return diffuse;
   // Directional albedo of the sheen: sheenColor times the LUT's cloth channel (Filament's
   // cloth specularDFG); the diffuse keeps the rest.
@@ -70,7 +70,8 @@ Vec3 environment(const ModelEvalInput& in, const Pixel& px, const Environment& e
   const double lod = in.scalar("mip_mapping", Args() << px.perceptualRoughness << NoR << env.maxMip);
   const double occlusion =
       in.scalar("specular_occlusion", Args().geometry(n, v, r) << in.frame.ng << ao << px.perceptualRoughness);
-  return diffuse * (splat(1.0) - E) + env.prefilteredAt(r, lod) * E * occlusion;
+  // 1 - E clamped at 0, as the GLSL (the cloth channel exceeds 1 at grazing views).
+  return diffuse * nonNegative(splat(1.0) - E) + env.prefilteredAt(r, lod) * E * occlusion;
 }
 
 Vec3 evaluateCloth(const ModelEvalInput& in) {

@@ -19,14 +19,16 @@ struct AnisotropyPixel {
 #define MB_ANISOTROPY_MIN_ALPHA 0.002025
 #endif
 
-// Filament's mapping (Kulla & Conty 2017, "Revisiting Physically Based Shading at
-// Imageworks", p. 20): at = alpha (1 + anisotropy), ab = alpha (1 - anisotropy), each at
-// least MB_ANISOTROPY_MIN_ALPHA. anisotropy = 0 gives at = ab = max(alpha, MIN).
+// The anisotropy_alpha role maps alpha and the anisotropy to the alphas along t and b:
+// Filament's at = alpha (1 + a), ab = alpha (1 - a) by default (Kulla & Conty 2017), glTF's
+// at = mix(alpha, 1, a^2), ab = alpha for imported glTF. Each is at least
+// MB_ANISOTROPY_MIN_ALPHA; anisotropy = 0 gives at = ab = max(alpha, MIN) with both.
 AnisotropyPixel mb_anisotropy_prepare(MaterialInputs m, ShadingFrame f, float alpha) {
     AnisotropyPixel a;
     a.anisotropy = m.anisotropy;
-    a.at = max(alpha * (1.0 + m.anisotropy), MB_ANISOTROPY_MIN_ALPHA);
-    a.ab = max(alpha * (1.0 - m.anisotropy), MB_ANISOTROPY_MIN_ALPHA);
+    vec3 alphas = MB_SLOT_anisotropy_alpha(alpha, m.anisotropy);
+    a.at = max(alphas.x, MB_ANISOTROPY_MIN_ALPHA);
+    a.ab = max(alphas.y, MB_ANISOTROPY_MIN_ALPHA);
     return a;
 }
 

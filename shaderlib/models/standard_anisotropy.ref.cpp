@@ -1,7 +1,8 @@
 // Reference of the standard model's anisotropy (seed 000 "More PBR / Anisotropic Specular
 // Material"; Filament "Physically Based Rendering in Filament" sec. 4.10), in double:
-//   at = max(alpha (1 + a), alpha_min),  ab = max(alpha (1 - a), alpha_min)
-// (Kulla & Conty 2017, as Filament; alpha_min = 0.045^2, Filament's fp32 MIN_ROUGHNESS),
+//   (at, ab) = max(anisotropy_alpha(alpha, a), alpha_min)
+// (by default Kulla & Conty 2017's alpha (1 +- a), as Filament; glTF's mix(alpha, 1, a^2) and
+// alpha; alpha_min = 0.045^2, Filament's fp32 MIN_ROUGHNESS),
 // D and V from the anisotropic roles with the frame's tangent, and the bent normal of the
 // image-based specular from the bent_normal_aniso role (McAuley 2015, Far Cry 4).
 #include <algorithm>
@@ -17,8 +18,9 @@ constexpr double kMinAlpha = 0.045 * 0.045;
 AnisotropyPixel anisotropyPrepare(const ModelEvalInput& in, double alpha) {
   AnisotropyPixel a;
   a.anisotropy = in.floatInput("anisotropy");
-  a.at = std::max(alpha * (1.0 + a.anisotropy), kMinAlpha);
-  a.ab = std::max(alpha * (1.0 - a.anisotropy), kMinAlpha);
+  const Vec3 alphas = in.vec3("anisotropy_alpha", Args() << alpha << a.anisotropy);
+  a.at = std::max(alphas.x, kMinAlpha);
+  a.ab = std::max(alphas.y, kMinAlpha);
   return a;
 }
 

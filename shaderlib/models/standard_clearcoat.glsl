@@ -22,12 +22,13 @@ ClearCoatPixel mb_clearcoat_prepare(MaterialInputs m, ShadingFrame f, inout vec3
     cc.alpha = MB_SLOT_roughness(cc.perceptualRoughness);
     cc.ambientOcclusion = m.ambientOcclusion;
     // Under the coat the base's outer medium is IOR 1.5, not air: F0ClearCoatToSurface (seed
-    // 000), blended by the coat's strength as Filament does, so that clearCoat = 0 leaves f0
-    // exactly unchanged (mix(a, b, 0) = a).
+    // 000; the f0_clearcoat role), blended by the coat's strength as Filament does, so that
+    // clearCoat = 0 leaves f0 exactly unchanged (mix(a, b, 0) = a). glTF binds
+    // f0_clearcoat_none: KHR_materials_clearcoat leaves the base as it is.
     f0 = mix(f0, MB_SLOT_f0_clearcoat(f0), cc.strength);
-    // Seed 000: linearRoughness = lerp(linearRoughness, max(linearRoughness,
-    // linearClearCoatRoughness), clearCoat); its "linear" roughness is the perceptual one.
-    perceptualRoughness = mix(perceptualRoughness, max(perceptualRoughness, cc.perceptualRoughness), cc.strength);
+    // The clearcoat_base_roughness role: seed 000 raises the base to the coat's roughness by
+    // clearCoat (coat_base_roughness_max); glTF keeps it (coat_base_roughness_keep).
+    perceptualRoughness = MB_SLOT_clearcoat_base_roughness(perceptualRoughness, cc.perceptualRoughness, cc.strength);
     return cc;
 }
 

@@ -2,7 +2,7 @@
 // Material"; Filament "Physically Based Rendering in Filament" sec. 4.9), in double, written
 // from the equations (see docs/models/features.md):
 //   f0'   = lerp(f0, F0ClearCoatToSurface(f0), c)                  (f0_clearcoat role)
-//   r'    = lerp(r, max(r, r_c), c)                                 (seed 000, perceptual)
+//   r'    = clearcoat_base_roughness(r, r_c, c)   (seed 000: lerp(r, max(r, r_c), c), perceptual)
 //   coat  = c Fc(l.h) D_c(h) V_c(l, v) (ng.l)  about the geometric normal ng, F0 = 0.04
 //   base *= 1 - c Fc(l.h)
 // Image-based: coat = c Fc(ng.v) SO L_pre(reflect(-v, ng), mip(r_c)), base *= 1 - c Fc(ng.v).
@@ -29,8 +29,8 @@ ClearCoatPixel clearCoatPrepare(const ModelEvalInput& in, Vec3& f0, double& perc
   cc.perceptualRoughness = in.floatInput("clearCoatRoughness");
   cc.alpha = in.scalar("roughness", Args() << cc.perceptualRoughness);
   f0 = mix(f0, in.vec3("f0_clearcoat", Args() << f0), cc.strength);
-  double clamped = std::max(perceptualRoughness, cc.perceptualRoughness);
-  perceptualRoughness += (clamped - perceptualRoughness) * cc.strength;
+  perceptualRoughness =
+      in.scalar("clearcoat_base_roughness", Args() << perceptualRoughness << cc.perceptualRoughness << cc.strength);
   return cc;
 }
 

@@ -33,8 +33,12 @@ void mb_environment_prepare(inout ShadingPixel px, ShadingFrame f) {
 #ifndef MB_ENV_NONE
 vec3 mb_shade_environment(ShadingPixel px, ShadingFrame f, Environment env) {
     float ao = env.ao * px.ambientOcclusion;
-    vec3 irradiance = MB_SLOT_sh_irradiance(f.n, env.sh[0], env.sh[1], env.sh[2], env.sh[3], env.sh[4],
-                                            env.sh[5], env.sh[6], env.sh[7], env.sh[8]);
+    // Clamped at 0, as Filament's Irradiance_SphericalHarmonics: a truncated SH expansion rings
+    // below 0 away from a bright direction, and irradiance (hence radiance) is never negative
+    // (issue 18: validate fails a permutation on any negative output).
+    vec3 irradiance = max(MB_SLOT_sh_irradiance(f.n, env.sh[0], env.sh[1], env.sh[2], env.sh[3], env.sh[4],
+                                                env.sh[5], env.sh[6], env.sh[7], env.sh[8]),
+                          0.0);
     vec3 diffuse = px.diffuseColor * irradiance * (ao * (1.0 / MB_PI));
 #ifdef MB_ENV_IBL
     // Mirror direction about the shading normal, or about the Far Cry 4 bent normal of an
@@ -56,7 +60,10 @@ vec3 mb_shade_environment(ShadingPixel px, ShadingFrame f, Environment env) {
     // Horizon occlusion against the geometric normal (seed 000 "Specular Miscs").
     float occlusion = MB_SLOT_specular_occlusion(makeGeometry(f.n, f.v, r), f.ng, ao, px.perceptualRoughness);
     vec3 specular = mb_fetch_prefiltered(r, lod) * E * px.energyCompensation * occlusion;
-    vec3 color = diffuse * (vec3(1.0) - E) + specular;
+    // The diffuse keeps what the specular does not reflect, never less than nothing: E is a
+    // directional albedo (<= 1), but a LUT or fit can exceed 1 (a UE4 scale/bias texel with
+    // f0 * scale + bias > 1), and 1 - E < 0 would make the radiance negative (issue 18).
+    vec3 color = diffuse * max(vec3(1.0) - E, 0.0) + specular;
     // Layers in the order of direct light (standard.glsl): sheen over the base, coat over both.
 #ifdef MB_FEATURE_SHEEN
     color = color * px.sheen.scaling + mb_sheen_environment(px.sheen, f, env);

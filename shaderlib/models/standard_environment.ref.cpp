@@ -40,8 +40,9 @@ Vec3 shadeEnvironment(const ModelEvalInput& in, const Pixel& px, const Environme
   Args sh = Args() << n;
   for (const Vec3& c : env.sh) sh << c;
   const double ao = env.ao * px.ambientOcclusion;
-  // Irradiance E(n) of the SH9 radiance; a Lambertian surface reflects E / pi.
-  const Vec3 diffuse = px.diffuseColor * in.vec3("sh_irradiance", sh) * (ao / kPi);
+  // Irradiance E(n) of the SH9 radiance, clamped at 0 (a truncated expansion rings below it;
+  // Filament clamps too); a Lambertian surface reflects E / pi.
+  const Vec3 diffuse = px.diffuseColor * nonNegative(in.vec3("sh_irradiance", sh)) * (ao / kPi);
   if (!env.ibl()) return diffuse;
 
   const Vec3 m = in.has("anisotropy") ? anisotropyIblNormal(in, px.anisotropy, px.perceptualRoughness) : n;
@@ -52,7 +53,8 @@ Vec3 shadeEnvironment(const ModelEvalInput& in, const Pixel& px, const Environme
   const double occlusion =
       in.scalar("specular_occlusion", Args().geometry(n, v, r) << in.frame.ng << ao << px.perceptualRoughness);
   const Vec3 specular = env.prefilteredAt(r, lod) * E * px.energyCompensation * occlusion;
-  Vec3 color = diffuse * (splat(1.0) - E) + specular;
+  // The diffuse share 1 - E is clamped at 0 (E, an albedo, can exceed 1 in a LUT or fit).
+  Vec3 color = diffuse * nonNegative(splat(1.0) - E) + specular;
   if (in.has("sheen")) color = color * px.sheen.scaling + sheenEnvironment(in, px.sheen, env);
   if (in.has("clearcoat")) {
     double attenuation = 1;
