@@ -14,7 +14,11 @@
 // negligible. pow(0, y) = 0 becomes exp(log(0)) = exp(-inf) = 0. No fp16 floor (Filament's
 // max(sin2h, 2^-7) is a fp16 guard; it changes D near n.h = 1).
 float mb_d_charlie(Geometry g, float alpha) {
-    float c2 = g.NoH * g.NoH;
+    // dot(n, h), not g.NoH: makeGeometry clamps NoH at 0, and a half vector below the
+    // tangent plane (area-light representative directions) has sin^2 = 1 - (n.h)^2 < 1, as
+    // the |n x h| of the reference gives.
+    float NoH = dot(g.n, g.h);
+    float c2 = NoH * NoH;
     float lnSin2;
     if (c2 < 0.5) {
         float w = c2 / (2.0 - c2), w2 = w * w;
