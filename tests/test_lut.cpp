@@ -10,6 +10,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "compile/glsl_compiler.hpp"
 #include "lut/half_float.hpp"
 #include "lut/ktx2.hpp"
 #include "lut/lut_check.hpp"
@@ -27,7 +28,15 @@ namespace {
 
 constexpr uint32_t kTestSize = 16, kTestSamples = 64;
 
-// One small LUT generated on the test device, shared by the cases below.
+// A table made by the default estimator (deterministic quadrature) on the test device.
+GpuLut quadratureLut(uint32_t size) {
+  harness::VulkanHarness gpu(harness::testDeviceOptions());
+  GpuLut l = generateDfgLutOnGpu(gpu, test::shippedLibrary(), size, 0);
+  REQUIRE(gpu.validationMessages().empty());
+  return l;
+}
+
+// One small Hammersley LUT generated on the test device, shared by the cases below.
 const GpuLut& smallLut() {
   static const GpuLut lut = [] {
     harness::VulkanHarness gpu(harness::testDeviceOptions());
@@ -69,6 +78,59 @@ TEST_CASE("GPU DFG LUT equals the CPU evaluation of the identical sum within the
   LutTable broken = lut.table;
   broken.values[(5 * kTestSize + 9) * kChannels + kChannelGv] *= 1.0f + 1e-4f;
   CHECK(checkLut(broken, 0, false).failures == 1);
+}
+
+TEST_CASE("the quadrature DFG LUT is within 1e-4 (channels 0, 1) and 1e-3 relative (cloth) of the exact integrals at every texel", "[lut]") {
+  // Every texel of 16^2 and 64^2 tables, the grazing column and the smoothest rows included;
+  // larger tables are measured by bench/bench_lut.cpp (docs/lut.md).
+  for (uint32_t size : {16u, 64u}) {
+    const GpuLut lut = quadratureLut(size);
+    const LutCheck check = checkLut(lut.table, 0, true);
+    INFO(size << "^2: max error / bound " << check.maxBoundRatio << " at texel " << check.worstTexel << "; max abs "
+              << check.quadrature[0].maxAbs << ", " << check.quadrature[1].maxAbs << ", cloth max rel "
+              << check.quadrature[2].maxRel);
+    CHECK(check.texels == size * size);
+    CHECK(check.nonFinite == 0);
+    CHECK(check.failures == 0);
+    CHECK(check.quadrature[kChannelGvFc].maxAbs <= kExactAbsBound);
+    CHECK(check.quadrature[kChannelGv].maxAbs <= kExactAbsBound);
+    CHECK(check.quadrature[kChannelCloth].maxRel <= kClothRelBound);
+    if (size != 16) continue;
+    // The check judges: one value moved by the bound fails it, in each channel.
+    for (uint32_t c = 0; c < kChannels; ++c) {
+      LutTable broken = lut.table;
+      float& value = broken.values[(3 * size + 0) * kChannels + c];
+      value += c == kChannelCloth ? 2.0f * float(kClothRelBound) * value + 1e-6f : 2.0f * float(kExactAbsBound);
+      CHECK(checkLut(broken, 0, true).failures == 1);
+    }
+  }
+}
+
+TEST_CASE("the quadrature kernel meets the bounds at the extreme texels of 1024^2 and 4096^2 tables", "[lut]") {
+  // The grazing column and the smoothest rows of the largest tables (alpha down to
+  // (0.5/4096)^2 = 1.5e-8), run as single records without generating the whole table.
+  harness::VulkanHarness gpu(harness::testDeviceOptions());
+  EmittedShader shader = emitDfgQuadratureKernel(test::shippedLibrary());
+  auto kernel = gpu.createKernel(compileComputeGlsl(shader.glsl, shader.fileName).spirv);
+  std::vector<float> records;
+  for (uint32_t size : {1024u, 4096u})
+    for (auto [i, j] : {std::pair{0u, 0u}, {0u, 1u}, {1u, 0u}, {0u, size / 2}, {size / 2, 0u}, {0u, size - 1}, {size - 1, 0u}}) {
+      records.push_back(static_cast<float>(texelCentre(i, size)));
+      records.push_back(static_cast<float>(texelCentre(j, size)));
+    }
+  const uint32_t count = static_cast<uint32_t>(records.size() / 2);
+  harness::RunResult run = gpu.run(*kernel, records, 2, 3, count);
+  REQUIRE(gpu.validationMessages().empty());
+  for (uint32_t k = 0; k < count; ++k) {
+    const auto exact = quadrature(records[2 * k], records[2 * k + 1]);
+    for (uint32_t c = 0; c < kChannels; ++c) {
+      const double g = run.outputs[3 * k + c], bound = c == kChannelCloth ? kClothRelBound * std::abs(exact[c]) + kClothAbsFloor
+                                                                           : kExactAbsBound;
+      INFO("n.v " << records[2 * k] << " roughness " << records[2 * k + 1] << " channel " << c << ": GPU " << g
+                  << " exact " << exact[c]);
+      CHECK(std::abs(g - exact[c]) <= bound);
+    }
+  }
 }
 
 TEST_CASE("DFG LUT rows run from smooth to rough and channels are Gv*Fc, Gv, cloth", "[lut]") {
@@ -219,7 +281,7 @@ TEST_CASE("C header LUT has its size constants and every value", "[lut]") {
   const std::string h = encodeLut(t, OutputFormat::Header, Precision::Fp32);
   CHECK(h.find("#define MB_DFG_LUT_SIZE 16\n") != std::string::npos);
   CHECK(h.find("#define MB_DFG_LUT_CHANNELS 3\n") != std::string::npos);
-  CHECK(h.find("#define MB_DFG_LUT_SAMPLES 64\n") != std::string::npos);
+  CHECK(h.find("#define MB_DFG_LUT_SAMPLES 64 ") != std::string::npos);
   size_t at = h.find("static const float mb_dfg_lut[MB_DFG_LUT_SIZE * MB_DFG_LUT_SIZE * MB_DFG_LUT_CHANNELS] = {\n");
   REQUIRE(at != std::string::npos);
   const char* p = h.c_str() + h.find('\n', at) + 1;
@@ -247,7 +309,9 @@ TEST_CASE("matbricks lut writes the file its extension names and reports in JSON
   CHECK(j["passed"] == true);
   CHECK(j["output_format"] == "ktx2");
   CHECK(j["checked_texels"] == 16);
-  CHECK(j["vs_same_sum"]["failures"] == 0);
+  CHECK(j["estimator"] == "hammersley");
+  CHECK(j["judged_against"] == "same_sum");
+  CHECK(j["check"]["failures"] == 0);
   CHECK(j["gpu_ms"].get<double>() > 0.0);
   // 32 samples: a Monte-Carlo error of ~0.16 at the smoothest grazing texels; a wrong
   // normalization would be O(1).
@@ -256,6 +320,15 @@ TEST_CASE("matbricks lut writes the file its extension names and reports in JSON
   std::string f = test::readFile(out);
   REQUIRE(f.size() > 80);
   CHECK(le32(f, 12) == 97u);  // fp16 -> R16G16B16A16_SFLOAT
+  // The default estimator is the quadrature, judged against the exact integrals.
+  r = test::runCli("lut --size 8 --check-grid 0 --json");
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  j = nlohmann::json::parse(r.output);
+  CHECK(j["estimator"] == "quadrature");
+  CHECK(j["judged_against"] == "exact");
+  CHECK(j["check"]["failures"] == 0);
+  CHECK(j["vs_quadrature"]["channels"]["dfg_gv"]["max_abs"].get<double>() <= 1e-4);
   fs::remove_all(out.parent_path());
 }
 

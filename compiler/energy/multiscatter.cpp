@@ -6,10 +6,6 @@
 #include "common/ibl_reference.hpp"
 
 namespace mb::energy {
-namespace {
-constexpr int kDfgPanels = 128;
-}  // namespace
-
 double CompensationResult::maxDeviation() const {
   double m = 0.0;
   for (const auto& c : cells) m = std::max(m, std::abs(1.0 - c.compensated));
@@ -36,11 +32,10 @@ CompensationResult multiscatterCompensation(harness::VulkanHarness& gpu, ProbeCa
   const std::vector<GridCell> cells = gridCells(grid);
   std::vector<double> dfg(cells.size()), dfgConv(cells.size());
   for (size_t c = 0; c < cells.size(); ++c) {
-    // 128 panels, not the default 32: at low roughness and normal incidence the 32-panel DFG
-    // is off by up to ~7e-5 (e.g. n.v = 1, alpha = 0.04: 32 panels 0.998364, 128 0.998322,
-    // 512 0.998298, a 2000^2-point midpoint rule in (theta_h) 0.998297).
-    dfg[c] = ref::dfgIntegrals(cells[c].NoV, cells[c].inputs.alpha, kDfgPanels).gv;
-    dfgConv[c] = std::abs(dfg[c] - ref::dfgIntegrals(cells[c].NoV, cells[c].inputs.alpha, 4 * kDfgPanels).gv);
+    // The adaptive DFG at its default tolerance (1e-10), and its distance to a 1000x tighter
+    // run as the estimate of its own error.
+    dfg[c] = ref::dfgIntegrals(cells[c].NoV, cells[c].inputs.alpha).gv;
+    dfgConv[c] = std::abs(dfg[c] - ref::dfgIntegrals(cells[c].NoV, cells[c].inputs.alpha, 1e-13).gv);
   }
   BrickValues comp = sweepBrick(gpu, probes.get(*brick), cells.size(), [&](size_t c) {
     ProbeInputs in;

@@ -10,7 +10,7 @@
 //   |E_gpu comp - 1| <= (bound + 2 conv) comp + E (tol_comp + rnd) + 2 dfgConv / E_dfg
 // where bound and conv come from the furnace cell, tol_comp from the brick's tolerance, rnd
 // = |1/fp32(E_dfg) - 1/E_dfg| is the rounding of the GPU's input, and
-// dfgConv = |dfg(128 panels) - dfg(512 panels)| estimates the DFG quadrature's own error.
+// dfgConv = |dfg(tolerance 1e-10) - dfg(1e-13)| estimates the DFG quadrature's own error.
 #pragma once
 #include <vector>
 

@@ -46,7 +46,8 @@ std::string encodeKtx2Lut(const LutTable& t, Precision p) {
 
 std::string encodeCsv(const LutTable& t, Precision p) {
   std::string out = "# matbricks " MB_VERSION " DFG LUT, " + std::to_string(t.size) + "x" +
-                    std::to_string(t.size) + ", " + std::to_string(t.samples) + " samples, " +
+                    std::to_string(t.size) + ", " +
+                    (t.samples ? std::to_string(t.samples) + " Hammersley samples, " : std::string("quadrature, ")) +
                     (p == Precision::Fp16 ? "fp16" : "fp32") + " values; rows in storage order (docs/lut.md)\n";
   out += "nov,perceptual_roughness";
   for (const char* name : kChannelNames) out += std::string(",") + name;
@@ -77,7 +78,7 @@ std::string encodeHeader(const LutTable& t, Precision p) {
   if (half) out += "#include <stdint.h>\n";
   out += "#define MB_DFG_LUT_SIZE " + std::to_string(t.size) + "\n";
   out += "#define MB_DFG_LUT_CHANNELS " + std::to_string(kChannels) + "\n";
-  out += "#define MB_DFG_LUT_SAMPLES " + std::to_string(t.samples) + "\n";
+  out += "#define MB_DFG_LUT_SAMPLES " + std::to_string(t.samples) + "  /* 0: deterministic quadrature */\n";
   out += std::string("static const ") + (half ? "uint16_t" : "float") +
          " mb_dfg_lut[MB_DFG_LUT_SIZE * MB_DFG_LUT_SIZE * MB_DFG_LUT_CHANNELS] = {\n";
   char buf[32];

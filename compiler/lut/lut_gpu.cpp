@@ -10,7 +10,7 @@ GpuLut generateDfgLutOnGpu(harness::VulkanHarness& gpu, const ShaderLibrary& lib
                            uint32_t samples, const LutBricks& bricks) {
   GpuLut out;
   auto t0 = std::chrono::steady_clock::now();
-  EmittedShader shader = emitDfgLutKernel(lib, samples, bricks);
+  EmittedShader shader = samples == 0 ? emitDfgQuadratureKernel(lib, bricks) : emitDfgLutKernel(lib, samples, bricks);
   CompileResult compiled = compileComputeGlsl(shader.glsl, shader.fileName);
   out.compileMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   out.spirvInstructions = spirvInstructionCount(compiled.spirv);

@@ -1,103 +1,79 @@
-// The cloth channel of the DFG LUT in double, by deterministic quadrature: the directional
-// albedo of the Charlie sheen lobe with Ashikhmin's visibility (Filament's cloth DFG,
-// CubemapIBL DFV_Charlie_Uniform; DESIGN.md "DFG LUT convention"):
+// The cloth channel of the DFG LUT in double, by adaptive quadrature: the directional albedo
+// of the Charlie sheen lobe with Ashikhmin's visibility (Filament's cloth DFG, CubemapIBL
+// DFV_Charlie_Uniform; DESIGN.md "DFG LUT convention"):
 //   E(n.v, alpha) = Int_{n.l > 0} D_Charlie(h) V_Ashikhmin(n.v, n.l) (n.l) dw_l,
 //   D_Charlie = (2 + 1/alpha) sin^(1/alpha)(theta_h) / (2 pi)   (Estevez & Kulla 2017, eq. 2)
 //   V_Ashikhmin = 1 / (4 (n.l + n.v - n.l n.v))               (Neubelt & Pettineo 2013)
 // No Fresnel and no 1/pi: the same quantity Filament's estimator converges to.
-// Written over half vectors, dw_l = 4 (v.h) dw_h and dw_h = sin(theta) dtheta dphi. For each
-// theta the directions with n.l = 2 (v.h)(n.h) - n.v > 0 are |phi| < phiMax(theta) (as in
-// ibl_reference.hpp), an interval on which the integrand is smooth: 32-point Gauss-Legendre.
-// In theta the integrand is 0 beyond thetaNone (phiMax = 0), has square-root kinks where
-// phiMax leaves pi (thetaFull) and reaches 0, and for small alpha a peak of width ~sqrt(alpha)
-// against thetaNone (D grows as sin^(1/alpha)). So [0, thetaFull] and [thetaFull, thetaNone]
-// are cut into panels graded geometrically towards thetaNone (a panel is as wide as its
-// distance to it, which resolves a peak of any width), each integrated by adaptive
-// Gauss-Legendre (8 points against its two halves, absolute tolerance 1e-12).
+// Written over half vectors, dw_l = 4 (v.h) dw_h, and with c = cos(theta_h), dw_h = dc dphi:
+//   E = Int D(c) [2 Int_0^phiMax(c) 4 V (n.l)(v.h) dphi] dc.
+// - Outer variable z = ln c: D = (2 + 1/alpha) (1 - c^2)^(1/(2 alpha)) / (2 pi) is a peak of
+//   width ~sqrt(alpha) at c = 0 (theta_h = 90 degrees), so D(c) c dz is a bump of width ~1
+//   around z = ln sqrt(alpha) for every alpha. sin^(1/alpha) is formed as
+//   exp(log1p(-c^2) / (2 alpha)), exact to rounding for any exponent.
+// - The azimuth range with n.l > 0 has the closed-form ends of ibl_reference.hpp: every
+//   azimuth for theta_h <= (pi/2 - theta_v)/2, none from (pi/2 + theta_v)/2 on; the partial
+//   range between is integrated after the cosine substitution that removes acos's square
+//   roots at its ends.
+// - Inner: (1/pi) Int_0^phiMax 4 V (n.l)(v.h) dphi by the adaptive rule (at grazing n.v it
+//   has structure of width ~n.v in n.l next to phiMax, where V_Ashikhmin ~ 1 / (4 n.l)).
+// The tolerance is relative (the albedo reaches ~10^2 at the smallest roughness and n.v, and
+// falls to ~1e-15 elsewhere in the smoothest rows): first passes set the scale. Convergence is tested
+// (tests/test_integral_references.cpp).
 #pragma once
 #include <cmath>
-#include <functional>
 
 #include "common/ibl_reference.hpp"
 
 namespace mb::ref {
 
-namespace detail_cloth {
-
-inline double gaussLegendre8(const std::function<double(double)>& f, double lo, double hi) {
-  static const detail_ibl::GaussLegendre<8> gl;
-  double s = 0.0;
-  for (int i = 0; i < 8; ++i) s += gl.w[i] * f(0.5 * (lo + hi) + 0.5 * (hi - lo) * gl.x[i]);
-  return 0.5 * (hi - lo) * s;
-}
-
-// Int_a^b f, given whole = the 8-point rule on [a, b]: accepted when the two halves agree with
-// it to 1e-12, else each half is refined.
-inline double adaptiveGaussLegendre(const std::function<double(double)>& f, double a, double b,
-                                    double whole, int depth) {
-  double m = 0.5 * (a + b), left = gaussLegendre8(f, a, m), right = gaussLegendre8(f, m, b);
-  if (depth == 0 || std::fabs(left + right - whole) <= 1e-12) return left + right;
-  return adaptiveGaussLegendre(f, a, m, left, depth - 1) + adaptiveGaussLegendre(f, m, b, right, depth - 1);
-}
-
-// Int_a^b f on panels [b - (b - a) 2^-k, b - (b - a) 2^-(k+1)], k = 0..29, each adaptive.
-// 30 panels: the one against the end is 2^-30 of the range, far below the narrowest peak
-// (sqrt(alpha) >= 1.2e-4 at the smallest texel-centre roughness of a 4096 table).
-inline double gradedTowardsEnd(const std::function<double(double)>& f, double a, double b) {
-  constexpr int kPanels = 30;
-  double total = 0.0, lo = a;
-  for (int k = 1; k <= kPanels && lo < b; ++k) {
-    double hi = k == kPanels ? b : b - (b - a) * std::ldexp(1.0, -k);
-    total += adaptiveGaussLegendre(f, lo, hi, gaussLegendre8(f, lo, hi), 40);
-    lo = hi;
-  }
-  return total;
-}
-
-}  // namespace detail_cloth
-
-inline double clothDfgIntegral(double NoV, double alpha) {
-  static const detail_ibl::GaussLegendre<32> glPhi;
+inline double clothDfgIntegralAbs(double NoV, double alpha, double tolerance) {
   NoV = std::min(1.0, std::max(NoV, 1e-7));
   const double sinV = std::sqrt(std::max(0.0, 1.0 - NoV * NoV));
-  // cos(phi) > kappa(theta) <=> n.l > 0; phiMax falls from pi (h near n) to 0.
-  auto phiMax = [&](double theta) {
-    double NoH = std::cos(theta), sinH = std::sin(theta);
-    double target = NoV / (2.0 * NoH) - NoV * NoH, denom = sinV * sinH;
-    if (denom <= 0.0) return target < 0.0 ? kPi : 0.0;
-    double kappa = target / denom;
-    return kappa >= 1.0 ? 0.0 : (kappa <= -1.0 ? kPi : std::acos(kappa));
+  const double coefficient = (2.0 + 1.0 / alpha) / (2.0 * kPi);
+  auto g = [&](double z) -> std::array<double, 1> {
+    const double c = std::exp(z), c2 = c * c;
+    if (!(c2 < 1.0)) return {0.0};
+    // Weight D(c) c 2 pi of the inner mean (1/pi) Int.
+    const double w = coefficient * std::exp(std::log1p(-c2) / (2.0 * alpha)) * c * 2.0 * kPi;
+    const double t = (1.0 - c2) / c2;  // tan^2(theta_h)
+    const double pm = detail_ibl::azimuthLimit(t, NoV, sinV);
+    if (!(w > 0.0) || pm <= 0.0) return {0.0};
+    const double sinH = std::sqrt(1.0 - c2);
+    auto f = [&](double phi) -> std::array<double, 1> {
+      const double VoH = sinV * sinH * std::cos(phi) + NoV * c;
+      const double NoL = 2.0 * VoH * c - NoV;
+      if (NoL <= 0.0 || VoH <= 0.0) return {0.0};
+      return {NoL * VoH / (NoL + NoV - NoL * NoV)};  // 4 V (n.l)(v.h)
+    };
+    AdaptiveGaussLegendre<1> inner;
+    // As in dfgIntegrals: the weighted inner error stays at 1e-4 of the outer tolerance.
+    const double innerTolerance = std::min(1.0, 1e-4 * tolerance / w) * kPi;
+    return {w * inner.integrate(f, 0.0, pm, innerTolerance)[0] / kPi};
   };
-  // D(theta) sin(theta) x 2 Int_0^phiMax 4 V (n.l)(v.h) dphi.
-  auto integrand = [&](double theta) {
-    double pm = phiMax(theta);
-    if (pm <= 0.0) return 0.0;
-    double NoH = std::cos(theta), sinH = std::sin(theta), inner = 0.0;
-    for (int j = 0; j < 32; ++j) {
-      double phi = 0.5 * pm * (1.0 + glPhi.x[j]);
-      double VoH = sinV * sinH * std::cos(phi) + NoV * NoH;
-      double NoL = 2.0 * VoH * NoH - NoV;
-      if (NoL <= 0.0 || VoH <= 0.0) continue;
-      double V = 1.0 / (4.0 * (NoL + NoV - NoL * NoV));
-      inner += glPhi.w[j] * 4.0 * V * NoL * VoH;
-    }
-    inner *= 0.5 * pm;
-    double D = (2.0 + 1.0 / alpha) * std::pow(sinH, 1.0 / alpha) / (2.0 * kPi);
-    return D * sinH * 2.0 * inner;
-  };
-  // thetaFull: end of the full-azimuth range; thetaNone: start of the empty one (bisection).
-  auto bisect = [&](bool wantFull) {
-    double lo = 0.0, hi = 0.5 * kPi;
-    for (int it = 0; it < 80; ++it) {
-      double mid = 0.5 * (lo + hi), pm = phiMax(mid);
-      bool inside = wantFull ? pm >= kPi : pm > 0.0;
-      (inside ? lo : hi) = mid;
-    }
-    return lo;
-  };
-  double thetaFull = bisect(true), thetaNone = bisect(false);
-  return detail_cloth::gradedTowardsEnd(integrand, 0.0, thetaFull) +
-         detail_cloth::gradedTowardsEnd(integrand, thetaFull, thetaNone);
+  // theta_h = thetaNone, thetaFull and 0 as z = ln cos(theta_h) = -ln sqrt(1 + tan^2).
+  const detail_ibl::AzimuthBreaks br = detail_ibl::azimuthBreaks(NoV);
+  auto zOf = [](double x) { return -0.5 * std::log1p(std::exp(2.0 * x)); };
+  const double zNone = zOf(br.xNone), zFull = zOf(br.xFull);
+  AdaptiveGaussLegendre<1> outer;
+  // Full azimuth on [zFull, 0], partial on [zNone, zFull]: integrateOuter takes the
+  // substituted part last, so the variable is mirrored (y = -z).
+  auto mirrored = [&](double y) { return g(-y); };
+  return detail_ibl::integrateOuter(outer, mirrored, 0.0, -zFull, -zNone, 2.0, tolerance)[0];
+}
+
+// Relative tolerance. The albedo spans ~1e-15 (smoothest rows away from grazing: the peak
+// lies beyond the visible half vectors) to ~1e3, so passes from 1e-3 absolute tighten the
+// tolerance to relativeTolerance x the value found (at most 6 decades per pass; values below
+// 1e-30 are returned to 1e-30 absolute).
+inline double clothDfgIntegral(double NoV, double alpha, double relativeTolerance = 1e-10) {
+  double tol = 1e-3;
+  for (;;) {
+    const double value = clothDfgIntegralAbs(NoV, alpha, tol);
+    const double wanted = std::max(relativeTolerance * std::fabs(value), 1e-30);
+    if (wanted >= tol) return value;
+    tol = std::max(wanted, tol * 1e-6);
+  }
 }
 
 }  // namespace mb::ref

@@ -1,10 +1,12 @@
 // Image-based-lighting quantities in double, shared by references and ground truths of the
 // env_brdf and mip_mapping bricks.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cmath>
 
 #include "common/microfacet_reference.hpp"
+#include "common/quadrature_reference.hpp"
 
 namespace mb::ref {
 
@@ -12,124 +14,114 @@ namespace mb::ref {
 // exact height-correlated Smith visibility, at n.v = NoV and linear roughness alpha:
 //   x = Int Gv Fc,  y = Int Gv,  Gv = 4 V (n.l)(v.h)/(n.h),  Fc = (1 - v.h)^5,
 // where the integral is the expectation over half vectors h distributed as D(h)(n.h).
-// Quadrature (deterministic, no sampling noise): h is parameterized by the GGX CDF
-// u -> cos^2(theta_h) = (1 - u)/(1 + (alpha^2 - 1) u) and the azimuth phi; for each u the set
-// of phi with n.l > 0 is the interval [0, phiMax] (n.l = 2 (v.h)(n.h) - n.v > 0 is
-// cos(phi) > kappa), so the phi integral is a smooth Gauss-Legendre integral on that
-// interval. In u the range splits where phiMax leaves pi and where it reaches 0 (found by
-// bisection); both parts use composite Gauss-Legendre (32 panels x 8 nodes), the second
-// after a cosine substitution that removes the square-root behaviour of phiMax at its ends.
-// Self-convergence (32 vs 128 panels): < 1e-6 absolute for n.v >= 0.1 at moderate roughness,
-// < 5e-6 at n.v = 0.01, ~2e-4 at n.v = 1e-3. At low roughness it is worse: at n.v = 1,
-// alpha = 0.04 the 32-panel default gives 0.998364 for Int Gv, 128 panels 0.998322, 512
-// panels 0.998298, and the independent half-vector quadrature of compiler/energy 0.998297,
-// i.e. the default is off by ~7e-5 there (found by the energy checks; docs/energy.md).
+//
+// Adaptive quadrature (no sampling noise; quadrature_reference.hpp), accurate to the
+// requested absolute tolerance everywhere, grazing n.v and the smoothest LUT rows included:
+// - Outer variable x = ln tan(theta_h). With t = tan^2 = e^(2x), D(h)(n.h) dw_h becomes
+//   (alpha^2 t / (pi (alpha^2 + t)^2)) dx dphi: a smooth bump of width ~1 around x = ln alpha
+//   whatever alpha is (in u or theta it is a peak of width alpha^2 or alpha). Below
+//   x = ln alpha - 16 the bump holds e^-32 of the mass and is dropped.
+// - n.l = 2 (v.h)(n.h) - n.v = cos(2 theta) n.v + sin(2 theta) sin(theta_v) cos(phi), so
+//   n.l > 0 <=> cos(phi) > kappa = -cos(2 theta) n.v / (sin(2 theta) sin(theta_v)): every
+//   azimuth for theta <= thetaFull = (pi/2 - theta_v)/2, none from thetaNone =
+//   (pi/2 + theta_v)/2 on, and |phi| < acos(kappa) between (closed forms, no search).
+//   [x(thetaFull), x(thetaNone)] is integrated after x = a + (b - a)(1 - cos(pi s))/2, which
+//   removes the square-root behaviour of acos(kappa) at both ends.
+// - Inner: (1/pi) Int_0^phiMax Gv dphi by the same adaptive rule (the integrand has structure
+//   of width ~alpha in n.l where it falls to 0 at phiMax, which a fixed rule misses).
+// Convergence is tested (tests/test_integral_references.cpp): tolerance 1e-10 against 1e-13,
+// and against independent quadratures.
 struct DfgIntegrals {
   double gvFc = 0;  // channel 0
   double gv = 0;    // channel 1
 };
 
 namespace detail_ibl {
-// Gauss-Legendre nodes/weights on [-1, 1] (computed once by Newton on P_n).
 template <int N>
-struct GaussLegendre {
-  std::array<double, N> x{}, w{};
-  GaussLegendre() {
-    for (int i = 0; i < N; ++i) {
-      double z = std::cos(kPi * (i + 0.75) / (N + 0.5));
-      for (int it = 0; it < 100; ++it) {
-        double p0 = 1, p1 = 0;
-        for (int k = 1; k <= N; ++k) {
-          double p2 = p1;
-          p1 = p0;
-          p0 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p2) / k;
-        }
-        double dp = N * (z * p0 - p1) / (z * z - 1.0);
-        double dz = p0 / dp;
-        z -= dz;
-        if (std::fabs(dz) < 1e-16) {
-          x[i] = z;
-          w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
-          break;
-        }
-      }
-    }
-  }
+using GaussLegendre = detail_quad::GaussLegendre<N>;
+
+// The azimuth range with n.l > 0 at tan^2(theta_h) = t for a view at NoV (sin sinV):
+// cos(phi) > kappa. Returns phiMax in [0, pi].
+inline double azimuthLimit(double t, double NoV, double sinV) {
+  if (sinV <= 0.0) return t < 1.0 ? kPi : 0.0;
+  const double kappa = -(1.0 - t) * NoV / (2.0 * std::sqrt(t) * sinV);
+  return kappa >= 1.0 ? 0.0 : (kappa <= -1.0 ? kPi : std::acos(kappa));
+}
+
+// The ends of the partial-azimuth range, as x = ln tan(theta_h).
+struct AzimuthBreaks {
+  double xFull, xNone;
 };
+inline AzimuthBreaks azimuthBreaks(double NoV) {
+  const double thetaV = std::acos(NoV);
+  return {std::log(std::tan(0.25 * kPi - 0.5 * thetaV)), std::log(std::tan(0.25 * kPi + 0.5 * thetaV))};
+}
+
+// Integrates g over [a, b] in panels no wider than `width`, and over [b, c] after the
+// cosine substitution b + (c - b)(1 - cos(pi s))/2; g returns K values.
+template <size_t K, class G>
+std::array<double, K> integrateOuter(AdaptiveGaussLegendre<K>& rule, const G& g, double a, double b, double c,
+                                     double width, double tol) {
+  std::array<double, K> total{};
+  auto add = [&](const std::array<double, K>& v) {
+    for (size_t k = 0; k < K; ++k) total[k] += v[k];
+  };
+  const int panels = b > a ? std::max(1, static_cast<int>(std::ceil((b - a) / width))) : 0;
+  const int sPanels = c > b ? std::max(1, static_cast<int>(std::ceil((c - b) / width))) : 0;
+  const double share = tol / std::max(1, panels + sPanels);
+  for (int p = 0; p < panels; ++p)
+    add(rule.integrate(g, a + (b - a) * p / panels, a + (b - a) * (p + 1) / panels, share));
+  if (c > b) {
+    const double span = c - b;
+    auto substituted = [&](double s) {
+      std::array<double, K> v = g(b + span * 0.5 * (1.0 - std::cos(kPi * s)));
+      const double jac = span * 0.5 * kPi * std::sin(kPi * s);
+      for (auto& e : v) e *= jac;
+      return v;
+    };
+    for (int p = 0; p < sPanels; ++p)
+      add(rule.integrate(substituted, double(p) / sPanels, double(p + 1) / sPanels, share));
+  }
+  return total;
+}
 }  // namespace detail_ibl
 
-inline DfgIntegrals dfgIntegrals(double NoV, double alpha, int panels = 32) {
-  static const detail_ibl::GaussLegendre<8> glU;
-  static const detail_ibl::GaussLegendre<32> glPhi;
+inline DfgIntegrals dfgIntegrals(double NoV, double alpha, double tolerance = 1e-10) {
   NoV = std::min(1.0, std::max(NoV, 1e-7));
+  // alpha = 0: the mirror limit, h = n, G2 = 1, so Gv = 1 and Fc = (1 - n.v)^5.
+  if (!(alpha > 0.0)) return {std::pow(1.0 - NoV, 5.0), 1.0};
   const double sinV = std::sqrt(std::max(0.0, 1.0 - NoV * NoV));
   const double a2 = alpha * alpha;
-  auto cos2H = [&](double u) { return (1.0 - u) / ((1.0 - u) + a2 * u); };
-  // Azimuth range [0, phiMax(u)] with n.l > 0; phiMax falls from pi (h near n) to 0.
-  auto phiMax = [&](double u) {
-    double c2 = cos2H(u), NoH = std::sqrt(c2), sinH = std::sqrt(std::max(0.0, 1.0 - c2));
-    double target = NoV / (2.0 * NoH) - NoV * NoH, denom = sinV * sinH;
-    if (denom <= 0.0) return target < 0.0 ? kPi : 0.0;
-    double kappa = target / denom;
-    return kappa >= 1.0 ? 0.0 : (kappa <= -1.0 ? kPi : std::acos(kappa));
+  AdaptiveGaussLegendre<2> outer;
+  // (1/pi) Int_0^phiMax (Gv Fc, Gv) dphi at tan^2(theta_h) = t.
+  auto azimuthal = [&](double t, double innerTolerance) -> std::array<double, 2> {
+    const double pm = detail_ibl::azimuthLimit(t, NoV, sinV);
+    if (pm <= 0.0) return {0.0, 0.0};
+    const double NoH = 1.0 / std::sqrt(1.0 + t), sinH = std::sqrt(t) * NoH;
+    auto f = [&](double phi) -> std::array<double, 2> {
+      const double VoH = sinV * sinH * std::cos(phi) + NoV * NoH;
+      const double NoL = 2.0 * VoH * NoH - NoV;
+      if (NoL <= 0.0 || VoH <= 0.0) return {0.0, 0.0};
+      const double Gv = 4.0 * smithGgxCorrelatedV(NoV, NoL, alpha) * NoL * VoH / NoH;
+      return {Gv * std::pow(1.0 - VoH, 5.0), Gv};
+    };
+    AdaptiveGaussLegendre<2> inner;
+    std::array<double, 2> r = inner.integrate(f, 0.0, pm, innerTolerance * kPi);
+    return {r[0] / kPi, r[1] / kPi};
   };
-  // F(u) = (1/pi) Int_0^phiMax Gv (Fc) dphi  (phi in [0, pi] by symmetry)
-  auto azimuthal = [&](double u, double& fx, double& fy) {
-    fx = fy = 0.0;
-    double pm = phiMax(u);
-    if (pm <= 0.0) return;
-    double c2 = cos2H(u), NoH = std::sqrt(c2), sinH = std::sqrt(std::max(0.0, 1.0 - c2));
-    for (int j = 0; j < 32; ++j) {
-      double phi = 0.5 * pm * (1.0 + glPhi.x[j]);
-      double VoH = sinV * sinH * std::cos(phi) + NoV * NoH;
-      double NoL = 2.0 * VoH * NoH - NoV;
-      if (NoL <= 0.0 || VoH <= 0.0) continue;
-      double Gv = 4.0 * smithGgxCorrelatedV(NoV, NoL, alpha) * NoL * VoH / NoH;
-      fx += glPhi.w[j] * Gv * std::pow(1.0 - VoH, 5.0);
-      fy += glPhi.w[j] * Gv;
-    }
-    fx *= 0.5 * pm / kPi;
-    fy *= 0.5 * pm / kPi;
+  // Outer weight: 2 alpha^2 t / (alpha^2 + t)^2 dx (integrates to 1 over the real line).
+  auto g = [&](double x) -> std::array<double, 2> {
+    const double t = std::exp(2.0 * x), w = 2.0 * a2 * t / ((a2 + t) * (a2 + t));
+    if (!(w > 0.0)) return {0.0, 0.0};
+    // The weighted inner error stays at 1e-4 of the outer tolerance: below the outer rule's
+    // floor (1/100 of its share).
+    std::array<double, 2> m = azimuthal(t, std::min(1.0, 1e-4 * tolerance / w));
+    return {w * m[0], w * m[1]};
   };
-  // uFull: end of the full-azimuth range; uNone: start of the empty one (bisection).
-  auto bisect = [&](bool wantFull) {
-    double lo = 0.0, hi = 1.0;
-    for (int it = 0; it < 80; ++it) {
-      double mid = 0.5 * (lo + hi), pm = phiMax(mid);
-      bool inside = wantFull ? pm >= kPi : pm > 0.0;
-      (inside ? lo : hi) = mid;
-    }
-    return lo;
-  };
-  double uFull = bisect(true), uNone = bisect(false);
-  DfgIntegrals r;
-  // [0, uFull]: smooth integrand, composite Gauss-Legendre.
-  for (int p = 0; p < panels; ++p) {
-    double u0 = uFull * p / panels, u1 = uFull * (p + 1) / panels;
-    for (int i = 0; i < 8; ++i) {
-      double u = 0.5 * (u0 + u1) + 0.5 * (u1 - u0) * glU.x[i], fx, fy;
-      azimuthal(u, fx, fy);
-      r.gvFc += 0.5 * (u1 - u0) * glU.w[i] * fx;
-      r.gv += 0.5 * (u1 - u0) * glU.w[i] * fy;
-    }
-  }
-  // [uFull, uNone]: phiMax has square-root behaviour at both ends; u = uFull + (uNone -
-  // uFull)(1 - cos(pi s))/2 makes the integrand smooth in s.
-  double span = uNone - uFull;
-  if (span > 0.0) {
-    for (int p = 0; p < panels; ++p) {
-      double s0 = double(p) / panels, s1 = double(p + 1) / panels;
-      for (int i = 0; i < 8; ++i) {
-        double sv = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * glU.x[i];
-        double u = uFull + span * 0.5 * (1.0 - std::cos(kPi * sv));
-        double jac = span * 0.5 * kPi * std::sin(kPi * sv), fx, fy;
-        azimuthal(u, fx, fy);
-        r.gvFc += 0.5 * (s1 - s0) * glU.w[i] * jac * fx;
-        r.gv += 0.5 * (s1 - s0) * glU.w[i] * jac * fy;
-      }
-    }
-  }
-  return r;
+  const detail_ibl::AzimuthBreaks br = detail_ibl::azimuthBreaks(NoV);
+  const double xLow = std::min(std::log(alpha) - 16.0, br.xFull);
+  std::array<double, 2> r = detail_ibl::integrateOuter(outer, g, xLow, br.xFull, br.xNone, 2.0, tolerance);
+  return {r[0], r[1]};
 }
 
 // Split-sum specular environment BRDF with Schlick's F (f90 = 1) inside the integral:
