@@ -10,5 +10,12 @@ float mb_v_smith_ggx_correlated(Geometry g, float alpha) {
     float a2 = alpha * alpha;
     float lambdaV = g.NoL * sqrt(g.NoV * g.NoV * (1.0 - a2) + a2);
     float lambdaL = g.NoV * sqrt(g.NoL * g.NoL * (1.0 - a2) + a2);
-    return 0.5 / (lambdaV + lambdaL);
+    float v = 0.5 / (lambdaV + lambdaL);
+#ifdef MB_FP16
+    // Filament's saturateMediump (surface_brdf.fs V_SmithGGXCorrelated): at fp16, n.l = 0 with
+    // a clamped n.v and a small alpha (a clear coat seen from below its geometric horizon)
+    // leaves a subnormal denominator, and 0.5 / it overflows to Inf, which times n.l = 0 is NaN.
+    v = min(v, 65504.0);
+#endif
+    return v;
 }
