@@ -39,10 +39,9 @@ std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 // A user's project: a material, a README and some code.
 fs::path makeProject(const fs::path& root) {
   const fs::path project = root / "project";
-  fs::copy_file(test::materialPath("filament_plastic.json"), project.string() + ".tmp");
   writeText(project / "README.md", "# my engine\n");
   writeText(project / "src/engine.cpp", "int main() { return 0; }\n");
-  fs::rename(project.string() + ".tmp", project / "filament_plastic.json");
+  fs::copy_file(test::materialPath("filament_plastic.json"), project / "filament_plastic.json");
   return project;
 }
 

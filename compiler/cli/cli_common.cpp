@@ -41,16 +41,20 @@ void addMaterialInputs(std::vector<ProtectedPath>& inputs, const std::vector<Mat
   addMaterialInputs(inputs, all);
 }
 
-void addMaterialInputs(std::vector<ProtectedPath>& inputs, const std::vector<const MaterialDesc*>& materials) {
+void addMaterialInputs(std::vector<ProtectedPath>& inputs, const std::vector<const MaterialDesc*>& materials,
+                       const std::string& sceneFile) {
   std::set<std::string> gltfFiles;  // a glTF file holds many materials: read its URIs once
-  for (const MaterialDesc* pm : materials) {
-    const MaterialDesc& m = *pm;
-    inputs.push_back({m.sourceFile, "material"});
-    for (const auto& inc : m.includedFiles) inputs.push_back({inc, "#included file"});
-    if (m.surface.present()) inputs.push_back({m.surface.where.file, "surface file"});
-    const std::string ext = lowerExtension(m.sourceFile);
-    if ((ext == ".gltf" || ext == ".glb") && gltfFiles.insert(m.sourceFile).second)
-      for (const auto& f : gltfExternalFiles(m.sourceFile)) inputs.push_back({f, "glTF buffer or image"});
+  auto add = [&](const std::string& file, const char* what) {
+    inputs.push_back({file, what});
+    const std::string ext = lowerExtension(file);
+    if ((ext == ".gltf" || ext == ".glb") && gltfFiles.insert(file).second)
+      for (const auto& f : gltfExternalFiles(file)) inputs.push_back({f, "glTF buffer or image"});
+  };
+  if (!sceneFile.empty()) add(sceneFile, "scene");
+  for (const MaterialDesc* m : materials) {
+    add(m->sourceFile, "material");
+    for (const auto& inc : m->includedFiles) inputs.push_back({inc, "#included file"});
+    if (m->surface.present()) inputs.push_back({m->surface.where.file, "surface file"});
   }
 }
 

@@ -40,7 +40,10 @@ std::vector<MaterialDesc> loadMaterials(const std::vector<std::string>& paths, c
 // shader library, and each material's description, #includes, surface file and, for glTF,
 // the buffers and images it names.
 std::vector<ProtectedPath> libraryInputs(const ShaderLibrary& lib);
-void addMaterialInputs(std::vector<ProtectedPath>& inputs, const std::vector<const MaterialDesc*>& materials);
+// `sceneFile`, when given, is protected too, with the glTF buffers and images it names (each
+// glTF file's URIs are read once, whether it is the scene, a material's file, or both).
+void addMaterialInputs(std::vector<ProtectedPath>& inputs, const std::vector<const MaterialDesc*>& materials,
+                       const std::string& sceneFile = "");
 void addMaterialInputs(std::vector<ProtectedPath>& inputs, const std::vector<MaterialDesc>& materials);
 // Before any work: a directory output must be new, empty or one matbricks wrote, and no
 // output may be, contain or lie inside an input. Throws DiagnosticError (exit 3).

@@ -10,8 +10,6 @@
 #include "compile/build.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
-#include "load/gltf_external_files.hpp"
-#include "load/project_files.hpp"
 #include "load/scene_desc.hpp"
 #include "permute/scene_plan.hpp"
 #include "write/depfile.hpp"
@@ -61,16 +59,10 @@ void refuseDuplicateKeys(const std::vector<Permutation>& perms, const std::vecto
 void refuseUnsafeOutputs(const CompileArgs& a, const ShaderLibrary& lib, const SceneDesc& scene,
                          const std::vector<MaterialDesc>& materials, const std::filesystem::path& cacheDir) {
   std::vector<ProtectedPath> inputs = libraryInputs(lib);
-  addMaterialInputs(inputs, materials);
-  if (!a.scene.empty()) {
-    inputs.push_back({a.scene, "scene"});
-    std::vector<const MaterialDesc*> used;
-    for (const auto& m : scene.materials) used.push_back(&m.material);
-    addMaterialInputs(inputs, used);
-    const std::string ext = lowerExtension(a.scene);
-    if (ext == ".gltf" || ext == ".glb")
-      for (const auto& f : gltfExternalFiles(a.scene)) inputs.push_back({f, "glTF buffer or image"});
-  }
+  std::vector<const MaterialDesc*> read;  // the files' materials, or the scene's
+  for (const auto& m : materials) read.push_back(&m);
+  for (const auto& m : scene.materials) read.push_back(&m.material);
+  addMaterialInputs(inputs, read, a.scene);
   if (!cacheDir.empty()) inputs.push_back({cacheDir, "cache directory"});
   if (!a.out.empty()) checkDirectoryOutput(a.out, inputs);
   if (!a.depfile.empty()) {
