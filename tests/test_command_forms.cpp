@@ -140,3 +140,23 @@ TEST_CASE("help texts and docs/cli.md name the same accepted forms, from one pla
     }
   }
 }
+
+TEST_CASE("eval --name picks a material of a glTF file; an unknown name is a coded error with a suggestion", "[cli][forms][eval]") {
+  const fs::path out = test::freshTempDir("forms", "eval_name");
+  const fs::path csv = out / "nvl.csv";
+  {
+    std::FILE* f = std::fopen(csv.c_str(), "w");
+    std::fputs("n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z\n0,0,1,0.6,0,0.8,-0.6,0,0.8\n", f);
+    std::fclose(f);
+  }
+  const std::string gltf = (test::sourceDir() / "examples/gltf/showroom.gltf").string();
+  auto picked = test::runCli("eval --material " + gltf + " --name Glazed_Ceramic --input " + csv.string());
+  INFO(picked.output);
+  CHECK(picked.exitCode == 0);
+  CHECK_THAT(picked.output, Catch::Contains("Glazed_Ceramic.standard"));
+  auto unknown = test::runCli("eval --material " + gltf + " --name Glazed_Ceramik --input " + csv.string());
+  INFO(unknown.output);
+  CHECK(unknown.exitCode == 3);
+  CHECK_THAT(unknown.output, Catch::Contains("error[E-UNKNOWN-MATERIAL]") && Catch::Contains("Glazed_Ceramic"));
+  fs::remove_all(out);
+}
