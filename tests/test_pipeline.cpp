@@ -144,6 +144,23 @@ TEST_CASE("a GLSL error inside a brick points at the brick's own file and line",
   fs::remove_all(root);
 }
 
+// Issue 14, item 4: the regrouped Newton step keeps its derived tolerance (abs 5e-6 plus the
+// input-conditioning allowance) over the grazing views it was once excluded from; 200,000
+// samples reach the values where the step's denominator cancels (docs/validation.md).
+TEST_CASE("max_noh_decima_newton holds its derived tolerance down to n.v = 1e-3", "[pipeline][stability]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  const Brick* brick = lib.findBrick("max_noh_decima_newton");
+  REQUIRE(brick != nullptr);
+  CHECK(brick->geometry.NoV.lo == 1e-3);
+  CHECK(brick->tolerance.abs <= 5e-6);
+  harness::VulkanHarness gpu(harness::testDeviceOptions());
+  ValidationRecord r = validateProbe(gpu, buildBrickProbe(lib, *brick), "brick", 200000, 3);
+  INFO("max abs " << r.stats.maxAbs << ", passed by conditioning " << r.stats.passedByConditioning);
+  CHECK(r.passed());
+  CHECK(r.stats.failures == 0);
+  requireNoLayerMessages(gpu);
+}
+
 TEST_CASE("each stability fix is shown: the naive form fails where the shipped brick passes", "[pipeline][stability]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
