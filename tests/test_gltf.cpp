@@ -254,7 +254,7 @@ TEST_CASE("texture-dependent warnings and combinations", "[gltf]") {
   "materials": [{
     "extensions": {
       "KHR_materials_clearcoat": {"clearcoatFactor": 0.5, "clearcoatTexture": {"index": 0},
-                                  "clearcoatNormalTexture": {"index": 0}},
+                                  "clearcoatNormalTexture": {"index": 0, "scale": 0.5}},
       "KHR_materials_anisotropy": {"anisotropyStrength": 0.3, "anisotropyRotation": 0.5},
       "KHR_materials_specular": {"specularFactor": 0.5, "specularColorTexture": {"index": 0}},
       "KHR_materials_sheen": {"sheenRoughnessTexture": {"index": 0}}
@@ -276,11 +276,14 @@ TEST_CASE("texture-dependent warnings and combinations", "[gltf]") {
   CHECK_THAT(s.surface.glsl, Contains("  m.sheenRoughness = 0.0 * p.sheenRoughnessTexture;\n"));
   CHECK_THAT(s.surface.glsl,
              Contains("  m.f0Dielectric = min(vec3(0.04, 0.04, 0.04) * p.specularColorTexture, vec3(1.0)) * (0.5);\n"));
+  // The coat's normal map is the tangent-space clearCoatNormal, decoded with its scale as the
+  // glTF spec's scaledNormal (issue 14, item 6); it is no longer ignored with a warning.
+  CHECK_THAT(s.surface.glsl,
+             Contains("  m.clearCoatNormal = (p.clearcoatNormalTexture * 2.0 - 1.0) * vec3(0.5, 0.5, 1.0);\n"));
   INFO(DiagnosticError(s.warnings).what());
-  REQUIRE(s.warnings.size() == 3);
-  CHECK_THAT(s.warnings[0].message, Contains("clearcoatNormalTexture is ignored"));
-  CHECK_THAT(s.warnings[1].message, Contains("anisotropyRotation 0.5 rad"));
-  CHECK(s.warnings[2].code == "W-GLTF-APPROXIMATED");
+  REQUIRE(s.warnings.size() == 2);
+  CHECK_THAT(s.warnings[0].message, Contains("anisotropyRotation 0.5 rad"));
+  CHECK(s.warnings[1].code == "W-GLTF-APPROXIMATED");
   CHECK(ms[0].textures[0].uri == "bufferView 3");
 }
 

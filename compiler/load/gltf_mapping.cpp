@@ -378,10 +378,14 @@ class MaterialMapper {
     std::string e = ext(kClearcoat);
     apply(e, {"clearCoat", "clearcoatFactor", {0.0}, "clearcoatTexture", "r", false, ""});
     apply(e, {"clearCoatRoughness", "clearcoatRoughnessFactor", {0.0}, "clearcoatRoughnessTexture", "g", false, ""});
-    std::string normal = at(e, "clearcoatNormalTexture");
-    if (f_.isObject(normal) && textureBinding(normal, "", "rgb", false))
-      warn("W-GLTF-NOT-SHADED", f_.keyAt(normal),
-           label() + ": clearcoatNormalTexture is ignored; the coat uses the geometric normal (seed 000)");
+    // The coat's own normal map (a normalTextureInfo): the spec's scaledNormal =
+    // normalize((texel * 2 - 1) * (scale, scale, 1)) is the model's tangent-space
+    // clearCoatNormal (Filament's), which the model normalizes about the geometric normal.
+    std::string normal = texture(at(e, "clearcoatNormalTexture"), "clearcoatNormalTexture", "rgb", false);
+    if (!normal.empty()) {
+      std::string s = glslFloat(out_.textures.back().scale);
+      line("m.clearCoatNormal = (" + normal + " * 2.0 - 1.0) * vec3(" + s + ", " + s + ", 1.0);");
+    }
   }
 
   void readSheen() {

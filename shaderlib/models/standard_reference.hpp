@@ -9,6 +9,7 @@ namespace mb::ref::standard {
 
 struct ClearCoatPixel {
   double strength = 0, perceptualRoughness = 0, alpha = 0;
+  Vec3 normal;  // the coat's unit normal, world space (clearCoatNormal)
 };
 struct AnisotropyPixel {
   double anisotropy = 0, at = 0, ab = 0;
@@ -52,7 +53,7 @@ Vec3 shadeEnvironment(const ModelEvalInput& in, const Pixel& px, const Environme
 
 // standard_clearcoat.ref.cpp
 ClearCoatPixel clearCoatPrepare(const ModelEvalInput& in, Vec3& f0, double& perceptualRoughness);
-// The coat's specular about the geometric normal times its own n.l; `attenuation` is the
+// The coat's specular about its normal (clearCoatNormal) times its own n.l; `attenuation` is the
 // base's share, 1 - strength * Fc.
 Vec3 clearCoatDirect(const ModelEvalInput& in, const ClearCoatPixel& cc, const Vec3& l, double& attenuation);
 Vec3 clearCoatEnvironment(const ModelEvalInput& in, const ClearCoatPixel& cc, const Environment& env,
