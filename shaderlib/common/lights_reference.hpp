@@ -146,30 +146,31 @@ inline double sphereIrradianceOverPoint(const Geometry& g, double sinAlpha, int 
   return sum / (kPi * sinAlpha * sinAlpha);
 }
 
-// The sphere light's effective GGX D: the D a point light of the sphere's intensity
-// (pi L sin^2 a, in irradiance at normal incidence) would need to give the same specular,
-// treating the Smith and Fresnel factors as constant over the cap (as every representative-
-// point method does):  D_eff = (1 / (pi sin^2 a)) Int_cap D(n.h(l)) dw,  the whole cap (the
-// horizon is the business of sphere_horizon_wrap). -> D(n.h(c)) as a -> 0.
-// Quadrature in polar coordinates (t, phi) about the mirror direction r, where D peaks:
-// for each phi the cap is one interval [t0, t1] in t (cos(angle to c) = R cos(t - delta)),
-// integrated by 12-point Gauss-Legendre on panels that grow geometrically from t0 (the D peak
-// seen along that phi) at the scale of alpha; phi by composite Gauss-Legendre over the whole
-// circle when r is inside the cap, else over the azimuth range that meets the cap after
+// Int_cap f(l) dw over the sphere light's cap (centre g.l, sin of its angular radius
+// sinAlpha), for an f that peaks, at the scale of alpha, at the mirror direction r where GGX
+// D does. Quadrature in polar coordinates (t, phi) about r: for each phi the cap is one
+// interval [t0, t1] in t (cos(angle to c) = R cos(t - delta)), integrated by 12-point
+// Gauss-Legendre on panels that grow geometrically from t0 (the peak seen along that phi) at
+// the scale of alpha; phi by composite Gauss-Legendre over the whole circle when r is inside
+// the cap, else over the azimuth range that meets the cap after
 // phi = phi0 + dphi sin(pi u / 2), which removes the square-root ends of that range.
-inline double sphereEffectiveDWith(const Geometry& g, double alpha, double sinAlpha,
-                                   int phiPanels) {
+template <class F>
+double capIntegral(const Geometry& g, double alpha, double sinAlpha, F f, int phiPanels) {
   const Vec3& c = g.l;
-  if (sinAlpha <= 0.0) return ggxD(nohFor(g, c), alpha);
   static const detail_ibl::GaussLegendre<12> glT;
   static const detail_ibl::GaussLegendre<8> glPhi;
   Vec3 r = normalize(reflectionOf(g));
   double cosAlpha = std::sqrt(1.0 - sinAlpha * sinAlpha);
   double cosD = std::clamp(dot(r, c), -1.0, 1.0);
-  Vec3 e = c - r * cosD;  // towards c, in r's tangent plane
+  // Towards c, in r's tangent plane. Where the mirror ray passes through the centre, c and r
+  // agree to rounding and c - r cosD is rounding noise with a component along r: the frame
+  // built from it was not orthogonal to r, and the integral came out 1.003x to 4.8x too large
+  // (issue 14; the 2.33x reported). A second projection keeps e in r's tangent plane.
+  Vec3 e = c - r * cosD;
+  e = e - r * dot(e, r);
   double sinD = length(e);
-  Frame f = sinD > 1e-300 ? Frame{e / sinD, cross(r, e / sinD)} : frameAround(r);
-  // Integral over t of D sin t for one azimuth phi (measured from e).
+  Frame fr = sinD > 1e-300 ? Frame{e / sinD, cross(r, e / sinD)} : frameAround(r);
+  // Integral over t of f sin t for one azimuth phi (measured from e).
   auto alongPhi = [&](double phi) {
     double A = cosD, B = sinD * std::cos(phi);
     double R = std::sqrt(A * A + B * B);
@@ -181,8 +182,7 @@ inline double sphereEffectiveDWith(const Geometry& g, double alpha, double sinAl
       double b = std::min(t1, a + width);
       for (int i = 0; i < 12; ++i) {
         double t = 0.5 * (a + b) + 0.5 * (b - a) * glT.x[i];
-        Vec3 l = onCone(r, f, std::cos(t), std::sin(t), phi);
-        sum += 0.5 * (b - a) * glT.w[i] * ggxD(std::max(0.0, nohFor(g, l)), alpha) * std::sin(t);
+        sum += 0.5 * (b - a) * glT.w[i] * f(onCone(r, fr, std::cos(t), std::sin(t), phi)) * std::sin(t);
       }
       a = b;
       width *= 2.0;
@@ -206,7 +206,19 @@ inline double sphereEffectiveDWith(const Geometry& g, double alpha, double sinAl
       }
     }
   }
-  return integral / (kPi * sinAlpha * sinAlpha);
+  return integral;
+}
+
+// The sphere light's effective GGX D: the D a point light of the sphere's intensity
+// (pi L sin^2 a, in irradiance at normal incidence) would need to give the same specular,
+// treating the Smith and Fresnel factors as constant over the cap (as every representative-
+// point method does):  D_eff = (1 / (pi sin^2 a)) Int_cap D(n.h(l)) dw,  the whole cap (the
+// horizon is the business of sphere_horizon_wrap). -> D(n.h(c)) as a -> 0.
+inline double sphereEffectiveDWith(const Geometry& g, double alpha, double sinAlpha,
+                                   int phiPanels) {
+  if (sinAlpha <= 0.0) return ggxD(nohFor(g, g.l), alpha);
+  auto D = [&](const Vec3& l) { return ggxD(std::max(0.0, nohFor(g, l)), alpha); };
+  return capIntegral(g, alpha, sinAlpha, D, phiPanels) / (kPi * sinAlpha * sinAlpha);
 }
 
 inline double sphereEffectiveD(const Geometry& g, double alpha, double sinAlpha) {

@@ -164,6 +164,53 @@ double integrateGraded(F f, double a, double b, std::vector<double> points, doub
   return sum;
 }
 
+// Int_capsule f(l) dw (l the unit direction) on the chart of `ch`, for an f that peaks at the
+// scale of alpha at the mirror direction r, as GGX D does: outer over t in [tMin, tMax] and
+// inner over |s| <= sMax(t), both graded towards the peak (the mirror ray's chart point) at the
+// lobe's width and towards the square-root ends (integrateGraded).
+struct CapsuleQuadrature {
+  const CapsuleChart& ch;
+  double tMin = 0, tMax = 1, tPeak = 0.5, sPeak = 0, w0 = 0;
+  bool faces = false;  // r faces the plane Pi: the chart has a peak point
+
+  CapsuleQuadrature(const Geometry& g, double alpha, const CapsuleChart& chart, double lobeFraction) : ch(chart) {
+    Vec3 r = mirror(g);
+    tMin = ch.edge(0.0, -1.0), tMax = ch.edge(1.0, 1.0);
+    // The mirror ray's point on Pi, if r faces Pi.
+    double rPi = dot(ch.nPi, r), scale = length(ch.L0);
+    faces = rPi > 0.0;
+    if (faces) {
+      Vec3 xr = r * (ch.h0 / rPi);
+      tPeak = dot(xr - ch.L0, ch.Ld) / (ch.lenD * ch.lenD);
+      sPeak = dot(xr, ch.m);
+      scale = length(xr);
+    }
+    // Lobe width on Pi: an angle alpha moves the chart point by ~alpha |X|^2 / h0.
+    w0 = lobeFraction * alpha * scale * scale / ch.h0;
+  }
+
+  template <class F>
+  double integrate(F f) const {
+    std::vector<double> tPoints = {0.0, 1.0};
+    if (faces && tPeak > tMin && tPeak < tMax) tPoints.push_back(tPeak);
+    return integrateGraded(
+        [&](double t) {
+          double s2 = ch.sMax2(t);
+          if (s2 <= 0.0) return 0.0;
+          double sm = std::sqrt(s2);
+          std::vector<double> sPoints;
+          if (faces && sPeak > -sm && sPeak < sm) sPoints.push_back(sPeak);
+          return integrateGraded(
+              [&](double s) {
+                Vec3 x = ch.point(t, s);
+                return f(normalize(x)) * ch.jacobian(x);
+              },
+              -sm, sm, sPoints, w0);
+        },
+        tMin, tMax, tPoints, w0 / ch.lenD);
+  }
+};
+
 // The tube light's GGX D averaged over its solid angle, relative to D at the capsule's max n.h:
 //   truth = ( Int_capsule D(n.h(w)) dw / Int_capsule dw ) / D(max_capsule n.h).
 // This is the factor a representative point's D needs when the point light standing in for
@@ -181,7 +228,6 @@ double integrateGraded(F f, double a, double b, std::vector<double> points, doub
 // tube_energy_normalization/slot.json.
 inline double tubeNormalizationTruthWith(const Geometry& g, double alpha, const Vec3& L0,
                                          const Vec3& L1, double radius, double lobeFraction) {
-  Vec3 r = mirror(g);
   double R = std::max(radius, 1e-7 * length(L0));
   CapsuleChart ch(L0, L1, R);
   if (ch.endOn) {
@@ -194,33 +240,10 @@ inline double tubeNormalizationTruthWith(const Geometry& g, double alpha, const 
     return lights::sphereEffectiveD(gc, alpha, sinA) * (kPi * sinA * sinA / capSolidAngle) /
            ggxD(capMaxNoH, alpha);
   }
-  double tMin = ch.edge(0.0, -1.0), tMax = ch.edge(1.0, 1.0);
-  // The mirror ray's point on Pi, if r faces Pi.
-  double rPi = dot(ch.nPi, r);
-  bool faces = rPi > 0.0;
-  double tPeak = 0.5, sPeak = 0.0, scale = length(L0);
-  if (faces) {
-    Vec3 xr = r * (ch.h0 / rPi);
-    tPeak = dot(xr - L0, ch.Ld) / (ch.lenD * ch.lenD);
-    sPeak = dot(xr, ch.m);
-    scale = length(xr);
-  }
-  // Lobe width on Pi: an angle alpha moves the chart point by ~alpha |X|^2 / h0.
-  double w0 = lobeFraction * alpha * scale * scale / ch.h0;
-  auto D = [&](const Vec3& x) { return ggxD(std::max(0.0, nohFor(g, normalize(x))), alpha); };
-  std::vector<double> tPoints = {0.0, 1.0};
-  if (faces && tPeak > tMin && tPeak < tMax) tPoints.push_back(tPeak);
-  double integralD = integrateGraded(
-      [&](double t) {
-        double s2 = ch.sMax2(t);
-        if (s2 <= 0.0) return 0.0;
-        double sm = std::sqrt(s2);
-        std::vector<double> sPoints;
-        if (faces && sPeak > -sm && sPeak < sm) sPoints.push_back(sPeak);
-        return integrateGraded([&](double s) { Vec3 x = ch.point(t, s); return D(x) * ch.jacobian(x); },
-                               -sm, sm, sPoints, w0);
-      },
-      tMin, tMax, tPoints, w0 / ch.lenD);
+  CapsuleQuadrature q(g, alpha, ch, lobeFraction);
+  const double tMin = q.tMin, tMax = q.tMax, tPeak = q.tPeak, sPeak = q.sPeak;
+  const bool faces = q.faces;
+  double integralD = q.integrate([&](const Vec3& l) { return ggxD(std::max(0.0, nohFor(g, l)), alpha); });
   double solidAngle = integrateGraded(
       [&](double t) {
         double s2 = ch.sMax2(t);
