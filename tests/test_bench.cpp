@@ -129,7 +129,7 @@ TEST_CASE("DFG LUT error falls with resolution against the integrated split sum"
   CHECK(ibl.luts[3].error.meanScaled() < 0.5 * ibl.luts[1].error.meanScaled());
 }
 
-TEST_CASE("bench probes evaluate the probe's function, once per iteration", "[bench]") {
+TEST_CASE("bench probes evaluate the probe's function, once per iteration", "[bench][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   auto materials = std::vector<MaterialDesc>{loadMaterialJson((test::sourceDir() / "materials/filament_plastic.json").string(), lib)};
@@ -174,7 +174,7 @@ TEST_CASE("bench probes evaluate the probe's function, once per iteration", "[be
   requireNoLayerMessages(gpu);
 }
 
-TEST_CASE("a tiny bench run: finite numbers, the validator's instruction count, well-formed outputs", "[bench]") {
+TEST_CASE("a tiny bench run: finite numbers, the validator's instruction count, well-formed outputs", "[bench][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   BenchOptions o;
@@ -229,7 +229,7 @@ TEST_CASE("a tiny bench run: finite numbers, the validator's instruction count, 
   requireNoLayerMessages(gpu);
 }
 
-TEST_CASE("matbricks bench writes its outputs and rejects unknown names", "[bench][cli]") {
+TEST_CASE("matbricks bench writes its outputs and rejects unknown names", "[bench][cli][vulkan]") {
   auto dir = tempDir("cli");
   auto r = test::runCli("bench --brick f_schlick --samples 64 --repeats 1 --records 256 --iterations 2 -o " +
                         (dir / "out").string() + " --csv " + (dir / "b.csv").string());

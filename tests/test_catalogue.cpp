@@ -8,7 +8,7 @@
 
 using namespace mb;
 
-TEST_CASE("the committed docs/bricks.md is current", "[catalogue]") {
+TEST_CASE("the committed docs/bricks.md is current", "[catalogue][vulkan]") {
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   std::string generated = brickCatalogueMarkdown(test::shippedLibrary(), gpu);
   std::string committed = test::readFile(test::sourceDir() / "docs/bricks.md");

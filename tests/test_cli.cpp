@@ -114,7 +114,7 @@ TEST_CASE("a failing compile leaves an existing package untouched", "[cli][packa
   fs::remove_all(dir);
 }
 
-TEST_CASE("eval works for every brick that bricks --json lists", "[cli][eval]") {
+TEST_CASE("eval works for every brick that bricks --json lists", "[cli][eval][vulkan]") {
   auto list = test::runCli("bricks --json");
   REQUIRE(list.exitCode == 0);
   auto bricks = nlohmann::json::parse(list.output);
@@ -135,7 +135,7 @@ TEST_CASE("eval works for every brick that bricks --json lists", "[cli][eval]") 
   fs::remove_all(dir);
 }
 
-TEST_CASE("eval --material evaluates a whole material; a bad CSV header is located", "[cli][eval]") {
+TEST_CASE("eval --material evaluates a whole material; a bad CSV header is located", "[cli][eval][vulkan]") {
   fs::path dir = tempDir("evalmat");
   { std::ofstream(dir / "in.csv") << "n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z,roughness\n0,0,1,0.6,0,0.8,-0.6,0,0.8,0.3\n0,0,1,0,0,1,0,0,1,0.05\n"; }
   auto r = test::runCli("eval --material " + material("ue4_metal.json") + " --input " + (dir / "in.csv").string());
@@ -150,7 +150,7 @@ TEST_CASE("eval --material evaluates a whole material; a bad CSV header is locat
   fs::remove_all(dir);
 }
 
-TEST_CASE("validate --json gives one complete record per permutation", "[cli][validate]") {
+TEST_CASE("validate --json gives one complete record per permutation", "[cli][validate][vulkan]") {
   auto r = test::runCli("--vk-validation validate --json --samples 512 " + material("filament_plastic.json") + " " + material("ue4_metal.json"));
   REQUIRE(r.exitCode == 0);
   auto recs = nlohmann::json::parse(r.output);
@@ -186,7 +186,7 @@ TEST_CASE("every subcommand has --help and usage errors exit 2", "[cli]") {
   CHECK(test::runCli("bench --repeats 0").exitCode == 2);
 }
 
-TEST_CASE("every example eval input evaluates within tolerance", "[cli][eval][examples]") {
+TEST_CASE("every example eval input evaluates within tolerance", "[cli][eval][examples][vulkan]") {
   // examples/eval/brick.<id>.<label>.csv and material.<name>.<label>.csv (examples/README.md).
   size_t count = 0;
   for (const auto& e : fs::directory_iterator(test::sourceDir() / "examples" / "eval")) {
@@ -205,7 +205,7 @@ TEST_CASE("every example eval input evaluates within tolerance", "[cli][eval][ex
   CHECK(count >= 2);
 }
 
-TEST_CASE("eval --material takes an optional illuminance column; a partial one is located", "[cli][eval]") {
+TEST_CASE("eval --material takes an optional illuminance column; a partial one is located", "[cli][eval][vulkan]") {
   fs::path dir = tempDir("illum");
   const std::string header = "n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z,";
   { std::ofstream(dir / "lit.csv") << header << "illuminance.x,illuminance.y,illuminance.z,roughness\n0,0,1,0.6,0,0.8,-0.6,0,0.8,1000,500,2,0.5\n"; }

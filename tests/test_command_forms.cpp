@@ -94,7 +94,7 @@ TEST_CASE("every command that takes materials or scenes runs cleanly on every de
   fs::remove_all(out);
 }
 
-TEST_CASE("stress on the shipped glTF files exits 0 and reports every material", "[cli][forms][stress]") {
+TEST_CASE("stress on the shipped glTF files exits 0 and reports every material", "[cli][forms][stress][vulkan]") {
   struct Shipped {
     const char* file;
     std::vector<std::string> materials;
@@ -141,7 +141,7 @@ TEST_CASE("help texts and docs/cli.md name the same accepted forms, from one pla
   }
 }
 
-TEST_CASE("eval --name picks a material of a glTF file; an unknown name is a coded error with a suggestion", "[cli][forms][eval]") {
+TEST_CASE("eval --name picks a material of a glTF file; an unknown name is a coded error with a suggestion", "[cli][forms][eval][vulkan]") {
   const fs::path out = test::freshTempDir("forms", "eval_name");
   const fs::path csv = out / "nvl.csv";
   {

@@ -54,7 +54,7 @@ TEST_CASE("half-vector maps invert their CDFs and integrate D (n.h) to 1", "[ene
   }
 }
 
-TEST_CASE("Lambert albedo is 1 within the quadrature error, on the GPU", "[energy]") {
+TEST_CASE("Lambert albedo is 1 within the quadrature error, on the GPU", "[energy][vulkan]") {
   Gpu g;
   auto lobes = lobesNamed({"diffuse_lambert"});
   auto result = whiteFurnace(g.gpu, g.probes, lobes, EnergyGrid::coarse());
@@ -67,7 +67,7 @@ TEST_CASE("Lambert albedo is 1 within the quadrature error, on the GPU", "[energ
   }
 }
 
-TEST_CASE("GGX with correlated Smith has albedo <= 1 and a known non-conserving lobe is detected", "[energy]") {
+TEST_CASE("GGX with correlated Smith has albedo <= 1 and a known non-conserving lobe is detected", "[energy][vulkan]") {
   Gpu g;
   auto lobes = lobesNamed({"d_ggx * v_smith_ggx_correlated", "diffuse_disney_burley"});
   auto result = whiteFurnace(g.gpu, g.probes, lobes, EnergyGrid::coarse());
@@ -85,7 +85,7 @@ TEST_CASE("GGX with correlated Smith has albedo <= 1 and a known non-conserving 
   CHECK(burley.exceedsOne());
 }
 
-TEST_CASE("multiscatter-compensated GGX at f0 = 1 has albedo 1 within its derived margin", "[energy]") {
+TEST_CASE("multiscatter-compensated GGX at f0 = 1 has albedo 1 within its derived margin", "[energy][vulkan]") {
   Gpu g;
   auto lobes = lobesNamed({"d_ggx * v_smith_ggx_correlated"});
   EnergyGrid grid = EnergyGrid::coarse();
@@ -100,7 +100,7 @@ TEST_CASE("multiscatter-compensated GGX at f0 = 1 has albedo 1 within its derive
   for (const auto& c : comp.cells) CHECK(c.compensation > 1.0);  // E < 1: compensation brightens
 }
 
-TEST_CASE("d_ggx * v_smith_ggx_correlated is reciprocal on the GPU; the n.v clamp breaks it below 1e-4", "[energy]") {
+TEST_CASE("d_ggx * v_smith_ggx_correlated is reciprocal on the GPU; the n.v clamp breaks it below 1e-4", "[energy][vulkan]") {
   Gpu g;
   auto lobes = lobesNamed({"d_ggx * v_smith_ggx_correlated", "diffuse_lambert"});
   auto result = reciprocity(g.gpu, g.probes, lobes, EnergyGrid::coarse());
@@ -114,7 +114,7 @@ TEST_CASE("d_ggx * v_smith_ggx_correlated is reciprocal on the GPU; the n.v clam
   CHECK(result[1].gpuAsymmetry == 0.0);
 }
 
-TEST_CASE("matbricks energy --grid coarse --json reports every lobe", "[energy][cli]") {
+TEST_CASE("matbricks energy --grid coarse --json reports every lobe", "[energy][cli][vulkan]") {
   auto r = test::runCli("energy --grid coarse --json");
   INFO(r.output.substr(0, 2000));
   REQUIRE(r.exitCode == 0);

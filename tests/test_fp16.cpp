@@ -83,14 +83,14 @@ TEST_CASE("an fp16 brick probe enables half arithmetic and defines MB_FP16", "[f
   CHECK(fp32.glsl.find("float16_t") == std::string::npos);
 }
 
-TEST_CASE("lavapipe offers shaderFloat16 and the harness enables it", "[fp16][harness]") {
+TEST_CASE("lavapipe offers shaderFloat16 and the harness enables it", "[fp16][harness][vulkan]") {
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   REQUIRE(gpu.isLavapipe());
   CHECK(gpu.supportsShaderFloat16());
   requireNoLayerMessages(gpu);
 }
 
-TEST_CASE("an fp16 probe runs on lavapipe and stays within its half-precision bound of fp32", "[fp16][harness]") {
+TEST_CASE("an fp16 probe runs on lavapipe and stays within its half-precision bound of fp32", "[fp16][harness][vulkan]") {
   // roughness_squared is one product r * r. In half precision the input is rounded (relative
   // error u = 2^-11), the square doubles that, and the product rounds once more: 3u relative,
   // for results above fp16's smallest normal 2^-14 (inputs >= 0.01 keep r^2 >= 1e-4 there).
@@ -117,7 +117,7 @@ TEST_CASE("an fp16 probe runs on lavapipe and stays within its half-precision bo
   requireNoLayerMessages(gpu);
 }
 
-TEST_CASE("fp16 probes of geometry bricks run without NaN or Inf in the fp16 domain", "[fp16][harness]") {
+TEST_CASE("fp16 probes of geometry bricks run without NaN or Inf in the fp16 domain", "[fp16][harness][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   for (const char* id : {"d_ggx", "v_smith_ggx_correlated", "f_schlick", "diffuse_lambert"}) {
@@ -151,7 +151,7 @@ TEST_CASE("fp16 material permutations use the fp16 roughness clamp", "[fp16][emi
   CHECK_THROWS_AS(emitPermutation(lib, perm), DiagnosticError);
 }
 
-TEST_CASE("an fp16 permutation runs on lavapipe; its NaN/Inf are reported", "[fp16][harness]") {
+TEST_CASE("an fp16 permutation runs on lavapipe; its NaN/Inf are reported", "[fp16][harness][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   MaterialDesc m = loadMaterialJson((test::sourceDir() / "materials/filament_plastic.json").string(), lib);
   Permutation perm;
@@ -178,7 +178,7 @@ TEST_CASE("an fp16 permutation runs on lavapipe; its NaN/Inf are reported", "[fp
   requireNoLayerMessages(gpu);
 }
 
-TEST_CASE("the mediump (ESSL) form of fp16 permutations computes the fp32 function on lavapipe, but for its caps", "[fp16][harness]") {
+TEST_CASE("the mediump (ESSL) form of fp16 permutations computes the fp32 function on lavapipe, but for its caps", "[fp16][harness][vulkan]") {
   // Lavapipe ignores RelaxedPrecision, so the mediump form runs at fp32 there. Against the
   // fp16 permutation's own reference (its bricks, the fp16 roughness floor, the fp16 domain)
   // each value must be within the fp32 tolerance, except where one of MB_FP16's half-range
@@ -216,7 +216,7 @@ TEST_CASE("the mediump (ESSL) form of fp16 permutations computes the fp32 functi
   requireNoLayerMessages(gpu);
 }
 
-TEST_CASE("validate --precision fp16 runs a brick and exits 0", "[fp16][cli]") {
+TEST_CASE("validate --precision fp16 runs a brick and exits 0", "[fp16][cli][vulkan]") {
   auto r = test::runCli("validate --brick d_ggx --precision fp16 --samples 512 --json");
   INFO(r.output);
   CHECK(r.exitCode == 0);

@@ -178,7 +178,7 @@ TEST_CASE("scene JSON naming a glTF without lights: the same default, overridabl
 
 // The numeric checks run the probe in-process (test_gltf_conventions.cpp); this is the same
 // through `matbricks eval`, as a user would: the emission at strength 1500.
-TEST_CASE("eval evaluates a glTF material from the corpus", "[gltf][gltf-conformance]") {
+TEST_CASE("eval evaluates a glTF material from the corpus", "[gltf][gltf-conformance][vulkan]") {
   std::filesystem::path csv = test::freshTempDir("gltf_conformance", "eval") / "below_horizon.csv";
   std::ofstream(csv) << "n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z\n0,0,1,0,0,1,0,0.6,-0.8\n";
   test::CliResult r = test::runCli("eval --material '" + (corpus() / "emissive_strength.gltf").string() + "' --input '" +

@@ -128,7 +128,7 @@ struct CoatedMetal {
 
 }  // namespace
 
-TEST_CASE("glTF anisotropy shades as KHR_materials_anisotropy defines", "[gltf][gltf-conformance]") {
+TEST_CASE("glTF anisotropy shades as KHR_materials_anisotropy defines", "[gltf][gltf-conformance][vulkan]") {
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   MaterialDesc m = corpusMaterial("anisotropy.gltf");
   CHECK(m.bricks.at("anisotropy_alpha") == "aniso_alpha_gltf");
@@ -157,7 +157,7 @@ TEST_CASE("glTF anisotropy shades as KHR_materials_anisotropy defines", "[gltf][
   CHECK(gpu.validationMessages().empty());
 }
 
-TEST_CASE("glTF clear coat shades as KHR_materials_clearcoat defines", "[gltf][gltf-conformance]") {
+TEST_CASE("glTF clear coat shades as KHR_materials_clearcoat defines", "[gltf][gltf-conformance][vulkan]") {
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   const MaterialDesc m = corpusMaterial("clearcoat.gltf");
   const spec::V3 n{0, 0, 1};
@@ -220,7 +220,7 @@ TEST_CASE("glTF clearcoatNormalTexture tilts the coat as KHR_materials_clearcoat
   CHECK(gpu.validationMessages().empty());
 }
 
-TEST_CASE("glTF emissiveStrength above 1000 is emitted as glTF defines", "[gltf][gltf-conformance]") {
+TEST_CASE("glTF emissiveStrength above 1000 is emitted as glTF defines", "[gltf][gltf-conformance][vulkan]") {
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   const MaterialDesc m = corpusMaterial("emissive_strength.gltf");
   // With the light below the horizon only the emission remains: emissiveFactor x strength.
@@ -230,7 +230,7 @@ TEST_CASE("glTF emissiveStrength above 1000 is emitted as glTF defines", "[gltf]
   CHECK(a.reference <= 1.0);
 }
 
-TEST_CASE("a black metal under ibl_analytic reflects no negative radiance", "[gltf][gltf-conformance]") {
+TEST_CASE("a black metal under ibl_analytic reflects no negative radiance", "[gltf][gltf-conformance][vulkan]") {
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   const MaterialDesc m = corpusMaterial("black_metal.gltf");
   Permutation perm = permutationsFor({m}).front();

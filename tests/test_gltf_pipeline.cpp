@@ -45,7 +45,7 @@ TEST_CASE("every glTF example material emits and compiles", "[gltf][pipeline]") 
 
 // Texture inputs go through generated surface code, which the C++ reference composition does
 // not run; materials with only constants have nothing the reference does not see.
-TEST_CASE("glTF example materials without textures validate on lavapipe", "[gltf][pipeline]") {
+TEST_CASE("glTF example materials without textures validate on lavapipe", "[gltf][pipeline][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   std::vector<MaterialDesc> constantOnly;

@@ -97,7 +97,7 @@ class ScopedEnv {
 
 }  // namespace
 
-TEST_CASE("harness runs a kernel over 100000 records exactly", "[harness]") {
+TEST_CASE("harness runs a kernel over 100000 records exactly", "[harness][vulkan]") {
   VulkanHarness h(testDeviceOptions());
   auto kernel = h.createKernel(compileKernel(kMulAddKernel));
   const uint64_t count = 100000;
@@ -116,7 +116,7 @@ TEST_CASE("harness runs a kernel over 100000 records exactly", "[harness]") {
   requireNoValidationMessages(h);
 }
 
-TEST_CASE("harness splits a run into chunks with identical results", "[harness]") {
+TEST_CASE("harness splits a run into chunks with identical results", "[harness][vulkan]") {
   DeviceOptions options = testDeviceOptions();
   options.maxRecordsPerChunk = 1000;
   VulkanHarness h(options);
@@ -156,7 +156,7 @@ TEST_CASE("harness splits a run into chunks with identical results", "[harness]"
   }
 }
 
-TEST_CASE("harness handles empty runs and rejects bad arguments", "[harness]") {
+TEST_CASE("harness handles empty runs and rejects bad arguments", "[harness][vulkan]") {
   VulkanHarness h(testDeviceOptions());
   auto kernel = h.createKernel(compileKernel(kMulAddKernel));
 
@@ -170,7 +170,7 @@ TEST_CASE("harness handles empty runs and rejects bad arguments", "[harness]") {
   requireNoValidationMessages(h);
 }
 
-TEST_CASE("harness reports device limits and picks lavapipe", "[harness]") {
+TEST_CASE("harness reports device limits and picks lavapipe", "[harness][vulkan]") {
   VulkanHarness h(testDeviceOptions());
   CHECK(h.maxWorkGroupCountX() > 0);
   CHECK(h.maxStorageBufferRange() > 0);
@@ -187,7 +187,7 @@ TEST_CASE("harness reports device limits and picks lavapipe", "[harness]") {
   }
 }
 
-TEST_CASE("harness rejects an unknown device name", "[harness]") {
+TEST_CASE("harness rejects an unknown device name", "[harness][vulkan]") {
   DeviceOptions options = testDeviceOptions();
   options.device = "no-such-gpu-xyzzy";
   try {
@@ -218,7 +218,7 @@ TEST_CASE("harness without a Vulkan driver throws one clear line", "[harness]") 
   }
 }
 
-TEST_CASE("harness captures validation-layer errors", "[harness]") {
+TEST_CASE("harness captures validation-layer errors", "[harness][vulkan]") {
   DeviceOptions options = testDeviceOptions();
   if (!options.validation) {
     WARN("MATBRICKS_VALIDATION is not set: skipping");
@@ -245,7 +245,7 @@ void main() {
   CHECK(h.validationMessages().empty());
 }
 
-TEST_CASE("a kernel may outlive its harness", "[harness]") {
+TEST_CASE("a kernel may outlive its harness", "[harness][vulkan]") {
   auto h = std::make_unique<VulkanHarness>(testDeviceOptions());
   std::shared_ptr<Kernel> kernel = h->createKernel(compileKernel(kMulAddKernel));
   const std::vector<float> in = makeInputs(10);
@@ -256,7 +256,7 @@ TEST_CASE("a kernel may outlive its harness", "[harness]") {
   SUCCEED();
 }
 
-TEST_CASE("concurrent runs on one harness are safe", "[harness]") {
+TEST_CASE("concurrent runs on one harness are safe", "[harness][vulkan]") {
   VulkanHarness h(testDeviceOptions());
   auto kernel = h.createKernel(compileKernel(kMulAddKernel));
   const uint64_t count = 20000;
@@ -284,7 +284,7 @@ TEST_CASE("concurrent runs on one harness are safe", "[harness]") {
   requireNoValidationMessages(h);
 }
 
-TEST_CASE("a kernel from another harness is rejected", "[harness]") {
+TEST_CASE("a kernel from another harness is rejected", "[harness][vulkan]") {
   VulkanHarness a(testDeviceOptions());
   VulkanHarness b(testDeviceOptions());
   auto kernel = a.createKernel(compileKernel(kMulAddKernel));

@@ -65,7 +65,7 @@ fs::path tempPath(const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("GPU DFG LUT equals the CPU evaluation of the identical sum within the fp32 bound", "[lut]") {
+TEST_CASE("GPU DFG LUT equals the CPU evaluation of the identical sum within the fp32 bound", "[lut][vulkan]") {
   const GpuLut& lut = smallLut();
   REQUIRE(lut.table.values.size() == kTestSize * kTestSize * kChannels);
   LutCheck check = checkLut(lut.table, 0, false);
@@ -80,7 +80,7 @@ TEST_CASE("GPU DFG LUT equals the CPU evaluation of the identical sum within the
   CHECK(checkLut(broken, 0, false).failures == 1);
 }
 
-TEST_CASE("the quadrature DFG LUT is within 1e-4 (channels 0, 1) and 1e-3 relative (cloth) of the exact integrals at every texel", "[lut]") {
+TEST_CASE("the quadrature DFG LUT is within 1e-4 (channels 0, 1) and 1e-3 relative (cloth) of the exact integrals at every texel", "[lut][vulkan]") {
   // Every texel of 16^2 and 64^2 tables, the grazing column and the smoothest rows included;
   // larger tables are measured by bench/bench_lut.cpp (docs/lut.md).
   for (uint32_t size : {16u, 64u}) {
@@ -106,7 +106,7 @@ TEST_CASE("the quadrature DFG LUT is within 1e-4 (channels 0, 1) and 1e-3 relati
   }
 }
 
-TEST_CASE("the quadrature kernel meets the bounds at the extreme texels of 1024^2 and 4096^2 tables", "[lut]") {
+TEST_CASE("the quadrature kernel meets the bounds at the extreme texels of 1024^2 and 4096^2 tables", "[lut][vulkan]") {
   // The grazing column and the smoothest rows of the largest tables (alpha down to
   // (0.5/4096)^2 = 1.5e-8), run as single records without generating the whole table.
   harness::VulkanHarness gpu(harness::testDeviceOptions());
@@ -133,7 +133,7 @@ TEST_CASE("the quadrature kernel meets the bounds at the extreme texels of 1024^
   }
 }
 
-TEST_CASE("DFG LUT rows run from smooth to rough and channels are Gv*Fc, Gv, cloth", "[lut]") {
+TEST_CASE("DFG LUT rows run from smooth to rough and channels are Gv*Fc, Gv, cloth", "[lut][vulkan]") {
   const LutTable& t = smallLut().table;
   const uint32_t last = kTestSize - 1;
   // Row 0, last column: perceptual roughness 1/32 and n.v = 31/32: a near-mirror lobe keeps
@@ -176,7 +176,7 @@ TEST_CASE("fp16 conversion rounds to nearest even", "[lut]") {
   for (uint32_t h = 0; h < 0x7c00; ++h) REQUIRE(floatToHalf(halfToFloat(static_cast<uint16_t>(h))) == h);
 }
 
-TEST_CASE("raw LUT layout: little-endian, row-major from the smoothest row, channels interleaved", "[lut]") {
+TEST_CASE("raw LUT layout: little-endian, row-major from the smoothest row, channels interleaved", "[lut][vulkan]") {
   const LutTable& t = smallLut().table;
   for (Precision p : {Precision::Fp32, Precision::Fp16}) {
     const std::string raw = encodeLut(t, OutputFormat::Raw, p);
@@ -192,7 +192,7 @@ TEST_CASE("raw LUT layout: little-endian, row-major from the smoothest row, chan
   }
 }
 
-TEST_CASE("KTX2 LUT parses back: identifier, header, index, DFD, key/values, texels", "[lut]") {
+TEST_CASE("KTX2 LUT parses back: identifier, header, index, DFD, key/values, texels", "[lut][vulkan]") {
   const LutTable& t = smallLut().table;
   for (Precision p : {Precision::Fp32, Precision::Fp16}) {
     const std::string f = encodeLut(t, OutputFormat::Ktx2, p);
@@ -253,7 +253,7 @@ TEST_CASE("KTX2 LUT parses back: identifier, header, index, DFD, key/values, tex
   }
 }
 
-TEST_CASE("CSV LUT reads back with texel-centre coordinates", "[lut]") {
+TEST_CASE("CSV LUT reads back with texel-centre coordinates", "[lut][vulkan]") {
   const LutTable& t = smallLut().table;
   std::istringstream in(encodeLut(t, OutputFormat::Csv, Precision::Fp32));
   std::string line;
@@ -276,7 +276,7 @@ TEST_CASE("CSV LUT reads back with texel-centre coordinates", "[lut]") {
   CHECK_FALSE(std::getline(in, line));
 }
 
-TEST_CASE("C header LUT has its size constants and every value", "[lut]") {
+TEST_CASE("C header LUT has its size constants and every value", "[lut][vulkan]") {
   const LutTable& t = smallLut().table;
   const std::string h = encodeLut(t, OutputFormat::Header, Precision::Fp32);
   CHECK(h.find("#define MB_DFG_LUT_SIZE 16\n") != std::string::npos);
@@ -299,7 +299,7 @@ TEST_CASE("C header LUT has its size constants and every value", "[lut]") {
   CHECK(h16.find("static const uint16_t mb_dfg_lut[") != std::string::npos);
 }
 
-TEST_CASE("matbricks lut writes the file its extension names and reports in JSON", "[lut][cli]") {
+TEST_CASE("matbricks lut writes the file its extension names and reports in JSON", "[lut][cli][vulkan]") {
   fs::path out = tempPath("dfg.ktx2");
   fs::remove(out);
   auto r = test::runCli("lut --size 8 --samples 32 --check-grid 4 --format fp16 --json -o " + out.string());

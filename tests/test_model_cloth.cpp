@@ -84,7 +84,7 @@ Vec3 underDirectional(ref::ModelEvalInput in, const Vec3& l) {
 
 }  // namespace
 
-TEST_CASE("the cloth model validates on lavapipe: all lights, every environment mode", "[model-cloth][gpu]") {
+TEST_CASE("the cloth model validates on lavapipe: all lights, every environment mode", "[model-cloth][gpu][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   MaterialDesc velvet = parseMaterialJson(kVelvet, "velvet.json", lib);
   MaterialDesc ashikhmin = parseMaterialJson(kAshikhmin, "ashikhmin_cloth.json", lib);

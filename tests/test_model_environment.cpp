@@ -114,7 +114,7 @@ Vec3 envBrdf(const std::string& id, const Vec3& f0, double roughness, double NoV
 
 }  // namespace
 
-TEST_CASE("the standard model's SH and IBL environments validate on lavapipe", "[model-environment][gpu]") {
+TEST_CASE("the standard model's SH and IBL environments validate on lavapipe", "[model-environment][gpu][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   MaterialDesc plastic = parseMaterialJson(kPlastic, "env_plastic.json", lib);
   MaterialDesc metal = parseMaterialJson(kMetal, "env_metal.json", lib);

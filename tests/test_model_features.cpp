@@ -364,7 +364,7 @@ TEST_CASE("a clear coat over a white Lambertian base conserves energy at normal 
 // ---------------------------------------------------------------------------------------
 // lavapipe: each feature alone and all three, through the lights and environment modes.
 
-TEST_CASE("clear-coated metal validates on lavapipe under punctual lights", "[model-features][gpu]") {
+TEST_CASE("clear-coated metal validates on lavapipe under punctual lights", "[model-features][gpu][vulkan]") {
   validateThrough(kClearCoatMetal, kPunctual, "none");
 }
 
@@ -378,15 +378,15 @@ TEST_CASE("a clear coat with its own normal validates on lavapipe under every li
   }
 }
 
-TEST_CASE("anisotropic metal validates on lavapipe under punctual lights", "[model-features][gpu]") {
+TEST_CASE("anisotropic metal validates on lavapipe under punctual lights", "[model-features][gpu][vulkan]") {
   validateThrough(kAnisotropicMetal, kPunctual, "none");
 }
 
-TEST_CASE("green velvet (sheen) validates on lavapipe under punctual lights", "[model-features][gpu]") {
+TEST_CASE("green velvet (sheen) validates on lavapipe under punctual lights", "[model-features][gpu][vulkan]") {
   validateThrough(kVelvetGreen, kPunctual, "none");
 }
 
-TEST_CASE("all three features together validate on lavapipe in every environment mode", "[model-features][gpu]") {
+TEST_CASE("all three features together validate on lavapipe in every environment mode", "[model-features][gpu][vulkan]") {
   // The IBL hooks: the coat's and the sheen's prefiltered lookups and attenuations, the bent
   // normal of the anisotropic base, the sheen albedo from the LUT (ibl_lut) or the fit.
   for (const char* environment : {"none", "sh", "ibl_lut", "ibl_analytic"}) {
@@ -395,7 +395,7 @@ TEST_CASE("all three features together validate on lavapipe in every environment
   }
 }
 
-TEST_CASE("all three features together validate on lavapipe under sphere and tube lights", "[model-features][gpu]") {
+TEST_CASE("all three features together validate on lavapipe under sphere and tube lights", "[model-features][gpu][vulkan]") {
   // The coat is evaluated at the area light's centre direction (docs/models/features.md).
   validateThrough(kAllFeatures, kArea, "none");
 }

@@ -308,7 +308,7 @@ TEST_CASE("lights: area lights stay finite below the horizon, inside the light a
   }
 }
 
-TEST_CASE("lights: shipped materials with the five light types validate on lavapipe", "[model-lights][gpu]") {
+TEST_CASE("lights: shipped materials with the five light types validate on lavapipe", "[model-lights][gpu][vulkan]") {
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   for (const char* name : {"filament_plastic", "ue4_metal"}) {
     MaterialDesc m = shippedMaterial(name);
@@ -319,7 +319,7 @@ TEST_CASE("lights: shipped materials with the five light types validate on lavap
   test::requireNoValidationLayerMessages(gpu);
 }
 
-TEST_CASE("lights: degenerate area lights stay finite on lavapipe and agree with the reference", "[model-lights][gpu]") {
+TEST_CASE("lights: degenerate area lights stay finite on lavapipe and agree with the reference", "[model-lights][gpu][vulkan]") {
   // The probe's ranges keep the lights outside and the tube off the shading point; records are
   // edited here to put the shading point inside the sphere and the tube, to shrink the tube to
   // zero length, and (finiteness only: the direction is then undefined) to run the tube through

@@ -33,7 +33,7 @@ void requireNoLayerMessages(const harness::VulkanHarness& gpu) {
 
 }  // namespace
 
-TEST_CASE("every brick of the manifest validates against its reference on lavapipe", "[pipeline][bricks]") {
+TEST_CASE("every brick of the manifest validates against its reference on lavapipe", "[pipeline][bricks][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   REQUIRE(!lib.bricks().empty());
@@ -49,7 +49,7 @@ TEST_CASE("every brick of the manifest validates against its reference on lavapi
   requireNoLayerMessages(gpu);
 }
 
-TEST_CASE("every example permutation validates", "[pipeline][materials]") {
+TEST_CASE("every example permutation validates", "[pipeline][materials][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   auto materials = exampleMaterials();
   REQUIRE(materials.size() >= 3);
@@ -161,7 +161,7 @@ TEST_CASE("max_noh_decima_newton holds its derived tolerance down to n.v = 1e-3"
   requireNoLayerMessages(gpu);
 }
 
-TEST_CASE("each stability fix is shown: the naive form fails where the shipped brick passes", "[pipeline][stability]") {
+TEST_CASE("each stability fix is shown: the naive form fails where the shipped brick passes", "[pipeline][stability][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   size_t variants = 0;

@@ -171,7 +171,7 @@ size_t checkScene(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const S
 
 }  // namespace
 
-TEST_CASE("pruned permutations of a constructed scene equal their feature-complete forms", "[pruned]") {
+TEST_CASE("pruned permutations of a constructed scene equal their feature-complete forms", "[pruned][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   // Three ways to be pruned: a feature folded (clear coat 0 in every use), a sheen folded
@@ -187,7 +187,7 @@ TEST_CASE("pruned permutations of a constructed scene equal their feature-comple
   CHECK(pairs == 3);
 }
 
-TEST_CASE("pruned permutations of the shipped example scenes equal their feature-complete forms", "[pruned]") {
+TEST_CASE("pruned permutations of the shipped example scenes equal their feature-complete forms", "[pruned][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   std::vector<std::filesystem::path> files;
   for (const auto& e : std::filesystem::directory_iterator(test::sourceDir() / "examples/scenes"))
@@ -200,7 +200,7 @@ TEST_CASE("pruned permutations of the shipped example scenes equal their feature
   CHECK(pairs > 0);  // the shipped scenes exist to show pruning: at least one pair
 }
 
-TEST_CASE("a fold that is not neutral in the full form is caught", "[pruned]") {
+TEST_CASE("a fold that is not neutral in the full form is caught", "[pruned][vulkan]") {
   // Negative control: clear coat folded from the pruned shader, but 0.5 in the full one.
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());

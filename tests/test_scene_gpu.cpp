@@ -31,7 +31,7 @@ void validates(harness::VulkanHarness& gpu, const Permutation& perm) {
 
 }  // namespace
 
-TEST_CASE("a low-quality and a folded scene permutation validate on lavapipe", "[scene][gpu]") {
+TEST_CASE("a low-quality and a folded scene permutation validate on lavapipe", "[scene][gpu][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   // Low quality: sh_l1_irradiance and no energy compensation in place of the defaults. fp32,

@@ -341,7 +341,7 @@ TEST_CASE("diffKeys lists missing and extra keys, empty when nothing is missing"
   CHECK(diffKeys({"a", "b"}, {"b", "c"}) == "- a\n+ c\n");
 }
 
-TEST_CASE("verify: a package missing one required permutation fails with the key; a bad manifest is bad input", "[scene][cli]") {
+TEST_CASE("verify: a package missing one required permutation fails with the key; a bad manifest is bad input", "[scene][cli][vulkan]") {
   namespace fs = std::filesystem;
   fs::path dir = fs::temp_directory_path() / ("mb_scene_verify_" + std::to_string(::getpid()));
   fs::remove_all(dir);

@@ -47,7 +47,7 @@ std::map<std::string, double> geometry() {
 
 }  // namespace
 
-TEST_CASE("diffuse_fabric_lambert takes alpha, as seed 000 and Unity", "[seed-conventions][gpu]") {
+TEST_CASE("diffuse_fabric_lambert takes alpha, as seed 000 and Unity", "[seed-conventions][gpu][vulkan]") {
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   // fp32 inputs, as the probe receives them.
   const double r = static_cast<float>(0.8), alpha = static_cast<float>(r * r);
@@ -62,7 +62,7 @@ TEST_CASE("diffuse_fabric_lambert takes alpha, as seed 000 and Unity", "[seed-co
   CHECK(std::abs(v.gpu - (1.0 - 0.5 * r) / std::numbers::pi) > 100 * v.allowed);
 }
 
-TEST_CASE("norm_tube_karis saturates the line angle, as UE4", "[seed-conventions][gpu]") {
+TEST_CASE("norm_tube_karis saturates the line angle, as UE4", "[seed-conventions][gpu][vulkan]") {
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   // A tube longer than its distance: |L1 - L0| = 2.89, distance to its centre 1.97.
   // fp32 inputs, as the probe receives them.

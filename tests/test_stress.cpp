@@ -83,7 +83,7 @@ TEST_CASE("the stress set has exact n.h = 1, v = -l, zero and scaled vectors, ta
   CHECK(halfScaledIn == 0);
 }
 
-TEST_CASE("stress passes a shipped brick and keeps out-of-domain results apart", "[stress]") {
+TEST_CASE("stress passes a shipped brick and keeps out-of-domain results apart", "[stress][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   ProbeProgram p = buildBrickProbe(lib, *lib.findBrick("d_ggx"));
@@ -97,7 +97,7 @@ TEST_CASE("stress passes a shipped brick and keeps out-of-domain results apart",
   CHECK(gpu.validationMessages().empty());
 }
 
-TEST_CASE("stress finds a planted NaN, exits 1, and its worst input replays with eval", "[stress][cli]") {
+TEST_CASE("stress finds a planted NaN, exits 1, and its worst input replays with eval", "[stress][cli][vulkan]") {
   test::FakeLibrary lib(plantedNaNLibrary());
   const std::string global = "--shaderlib " + lib.root().string();
   auto r = test::runCli(global + " stress --brick d_ggx --json --samples 64");
@@ -127,7 +127,7 @@ TEST_CASE("stress finds a planted NaN, exits 1, and its worst input replays with
   CHECK(t.output.find("replay: printf 'n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z,alpha\\n") != std::string::npos);
 }
 
-TEST_CASE("stress of a material passes at fp32 and reports fp16", "[stress][cli]") {
+TEST_CASE("stress of a material passes at fp32 and reports fp16", "[stress][cli][vulkan]") {
   const std::string material = (test::sourceDir() / "materials/filament_plastic.json").string();
   CHECK(test::runCli("stress " + material + " --samples 64").exitCode == 0);
   auto r = test::runCli("stress " + material + " --precision all --json --samples 64");

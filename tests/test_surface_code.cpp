@@ -59,7 +59,7 @@ const char* kSurface =
 
 }  // namespace
 
-TEST_CASE("surface code runs in the permutation and validates against the fed reference", "[surface]") {
+TEST_CASE("surface code runs in the permutation and validates against the fed reference", "[surface][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   MaterialDesc m = tintedMaterial(kSurface);
   Permutation perm;

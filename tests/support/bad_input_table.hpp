@@ -2,6 +2,9 @@
 // exact text the CLI printed (tests/test_bad_inputs.cpp checks the committed file is current
 // and writes it with `mb_tests "[.bad-inputs-doc]"`).
 #pragma once
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -17,6 +20,24 @@ inline std::string codeCell(const std::string& text) {
   replaceAll(s, "|", "\\|");
   std::string fence = s.find('`') == std::string::npos ? "`" : "``";
   return fence + (fence.size() > 1 ? " " : "") + s + (fence.size() > 1 ? " " : "") + fence;
+}
+
+// The coverage-guided fuzzing section: what runs, and the latest counts and rates that
+// scripts/fuzz.sh measured (fuzz/results.md, copied there from build-asan/fuzz-results.md).
+inline std::string fuzzingSection() {
+  std::ifstream in(std::filesystem::path(MB_FUZZ_DIR) / "results.md", std::ios::binary);
+  std::string results((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return "\n## Coverage-guided fuzzing\n\n"
+         "Five libFuzzer targets ([fuzz/](../fuzz/), [fuzzing.md](fuzzing.md)) feed the loaders inputs\n"
+         "that grow toward new code: the JSON material reader, the macro form (with `#include`s in a\n"
+         "scratch project), glTF (.gltf and .glb, materials resolved), scene JSON (loaded and planned)\n"
+         "and the CSV reader of `eval`. They are built with AddressSanitizer and\n"
+         "UndefinedBehaviorSanitizer, seeded from the shipped files and this corpus, and guided by a\n"
+         "dictionary each. A finding is any crash, sanitizer report, leak, hang (20 s) or an error\n"
+         "without a code and a file; each is fixed and kept in `fuzz/regressions/<target>/`, which\n"
+         "`tests/test_fuzz_regressions.cpp` replays in every build and `.ci/run` replays under the\n"
+         "sanitizers.\n\n" +
+         results;
 }
 
 inline std::string badInputsMarkdown(const std::vector<BadInputCase>& cases, const std::vector<CaseRun>& runs) {
@@ -62,7 +83,7 @@ inline std::string badInputsMarkdown(const std::vector<BadInputCase>& cases, con
     md += "| " + (c.absent ? c.input + " (absent)" : link) + " | " + what + " | " + codeCell(displayCommand(c)) +
           " | " + std::to_string(runs[i].exitCode) + " | " + messages + " |\n";
   }
-  return md;
+  return md + fuzzingSection();
 }
 
 }  // namespace mb::test
