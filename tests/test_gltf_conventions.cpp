@@ -191,7 +191,7 @@ TEST_CASE("glTF clear coat shades as KHR_materials_clearcoat defines", "[gltf][g
 // computed them (fp32): the spec side takes the factors as fp32 numbers too, and texel and
 // scale are dyadic, so the decoded normal is exact; the reference is then held to 1e-9 as in
 // the other checks.
-TEST_CASE("glTF clearcoatNormalTexture tilts the coat as KHR_materials_clearcoat defines", "[gltf][gltf-conformance]") {
+TEST_CASE("glTF clearcoatNormalTexture tilts the coat as KHR_materials_clearcoat defines", "[gltf][gltf-conformance][vulkan]") {
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   const MaterialDesc m = corpusMaterial("clearcoat_normal.gltf");
   const double coat = f32(0.8), coatAlpha = 0.25 * 0.25, alpha = f32(0.3) * f32(0.3), scale = 0.75;

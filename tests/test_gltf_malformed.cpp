@@ -81,7 +81,9 @@ std::vector<BadGlb> badGlbCases() {
   size_t jsonLength = glb.size() - 20;
   std::string withBin = packGlb(kJson, "abcd");
   return {
+      {"empty .glb", "", "E-GLB-TRUNCATED", 1},
       {"header shorter than 12 bytes", glb.substr(0, 8), "E-GLB-TRUNCATED", 9},
+      {"wrong magic ('gLTf')", withU32(glb, 0, 0x66544C67), "E-GLB-HEADER", 1},
       {"container version 1", withU32(glb, 4, 1), "E-GLB-HEADER", 5},
       {"truncated file (header length > size)", glb.substr(0, glb.size() - 4), "E-GLB-TRUNCATED", static_cast<int>(glb.size() - 4 + 1)},
       {"header length < size", glb + std::string(4, ' '), "E-GLB-HEADER", 9},

@@ -368,7 +368,7 @@ TEST_CASE("clear-coated metal validates on lavapipe under punctual lights", "[mo
   validateThrough(kClearCoatMetal, kPunctual, "none");
 }
 
-TEST_CASE("a clear coat with its own normal validates on lavapipe under every light and environment", "[model-features][gpu]") {
+TEST_CASE("a clear coat with its own normal validates on lavapipe under every light and environment", "[model-features][gpu][vulkan]") {
   const std::string json = clearCoatNormalMetal();
   REQUIRE(json.find("clearCoatNormal") != std::string::npos);
   validateThrough(json.c_str(), kArea, "none");

@@ -147,7 +147,7 @@ TEST_CASE("a GLSL error inside a brick points at the brick's own file and line",
 // Issue 14, item 4: the regrouped Newton step keeps its derived tolerance (abs 5e-6 plus the
 // input-conditioning allowance) over the grazing views it was once excluded from; 200,000
 // samples reach the values where the step's denominator cancels (docs/validation.md).
-TEST_CASE("max_noh_decima_newton holds its derived tolerance down to n.v = 1e-3", "[pipeline][stability]") {
+TEST_CASE("max_noh_decima_newton holds its derived tolerance down to n.v = 1e-3", "[pipeline][stability][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   const Brick* brick = lib.findBrick("max_noh_decima_newton");
   REQUIRE(brick != nullptr);

@@ -5,8 +5,11 @@
 // before checking it against the bytes actually present.
 #include "load/gltf_container.hpp"
 
+#include "load/project_files.hpp"
+
 #include <algorithm>
 #include <climits>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -84,12 +87,32 @@ void appendU32(std::string& out, uint32_t v) {
 
 bool isGlb(ByteSource& bytes) { return bytes.size() >= 4 && bytes.u32(0) == kGlbMagic; }
 
+// A file named .glb is a GLB container whatever its bytes (a damaged header is a GLB error, not
+// a JSON one); any other name is read as GLB when it starts with the magic, else as JSON text.
+bool readsAsGlb(ByteSource& bytes, const std::string& file) {
+  return lowerExtension(file) == ".glb" || isGlb(bytes);
+}
+
+// A printable rendering of the 4 bytes where the magic should be, for the message.
+std::string magicText(ByteSource& bytes) {
+  std::string out;
+  for (char c : bytes.read(0, 4)) {
+    unsigned char u = static_cast<unsigned char>(c);
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "\\x%02x", u);
+    out += (u >= 0x20 && u < 0x7F) ? std::string(1, c) : std::string(hex);
+  }
+  return out;
+}
+
 std::string jsonChunkOf(ByteSource& bytes, const std::string& file, GltfContainerInfo& info) {
   info.glb = true;
   const uint64_t size = bytes.size();
   if (size < kHeaderSize)
     glbError("E-GLB-TRUNCATED", file, size,
              "the header needs 12 bytes, the file has " + std::to_string(size));
+  if (bytes.u32(0) != kGlbMagic)
+    glbError("E-GLB-HEADER", file, 0, "the magic is '" + magicText(bytes) + "', expected 'glTF'");
   uint32_t version = bytes.u32(4);
   if (version != 2)
     glbError("E-GLB-HEADER", file, 4,
@@ -145,7 +168,7 @@ std::string jsonChunkOf(ByteSource& bytes, const std::string& file, GltfContaine
 JsonDocument parseGltfJson(const std::string& bytes, const std::string& file, GltfContainerInfo& info) {
   MemorySource source(bytes);
   // Positions of a .glb's JSON errors are line:column in the JSON chunk's text.
-  return JsonDocument::parse(isGlb(source) ? jsonChunkOf(source, file, info) : bytes, file);
+  return JsonDocument::parse(readsAsGlb(source, file) ? jsonChunkOf(source, file, info) : bytes, file);
 }
 
 JsonDocument parseGltfJson(const std::string& bytes, const std::string& file) {
@@ -164,7 +187,7 @@ JsonDocument loadGltfJson(const std::string& path, GltfContainerInfo& info) {
                             "cannot open file: expected a readable .gltf or .glb file", ""}});
   }
   FileSource source(in, size);
-  if (isGlb(source)) return JsonDocument::parse(jsonChunkOf(source, path, info), path);
+  if (readsAsGlb(source, path)) return JsonDocument::parse(jsonChunkOf(source, path, info), path);
   if (size > kMaxGltfJsonBytes) {
     throw DiagnosticError({{Severity::Error, "E-FILE-TOO-LARGE", {path, 0, 0},
                             "a .gltf of " + std::to_string(size) + " bytes is over the limit of " +

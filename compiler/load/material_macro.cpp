@@ -350,8 +350,13 @@ class MacroReader {
     }
     SourceLocation where = line.where(path.column);
     if (!expectEnd(line, "the include path")) return;
+    // An include that is refused or unreadable may have held brick choices: missing roles are
+    // then not reported, only the include's own error (as for other unreadable choices).
     auto resolved = project_.resolve(path.text, line.file, where, sink_);
-    if (!resolved) return;
+    if (!resolved) {
+      src_.bricksIncomplete = true;
+      return;
+    }
     std::string key = canonicalKey(*resolved);
     for (size_t i = 0; i < stack_.size(); ++i) {
       if (stack_[i].first != key) continue;
@@ -363,10 +368,14 @@ class MacroReader {
     if (!included_.insert(key).second) return;  // each file is read once, as with #pragma once
     if (stack_.size() >= kMaxIncludeDepth) {
       error(where, "E-INCLUDE-DEPTH", "includes nested deeper than " + std::to_string(kMaxIncludeDepth) + " files");
+      src_.bricksIncomplete = true;
       return;
     }
     auto text = readTextFile(*resolved, where, "macro-form include file", sink_);
-    if (!text) return;
+    if (!text) {
+      src_.bricksIncomplete = true;
+      return;
+    }
     src_.includedFiles.push_back(*resolved);
     stack_.push_back({key, *resolved});
     readFile(*text, *resolved, false);

@@ -129,7 +129,12 @@ std::vector<float> generateSamples(const ProbeLayout& layout, const SampleDomain
       } else if (i % 5 == 1 && peakSample(domain.geometry, rng, g)) {
         // near the specular peak
       } else {
-        g = stratifiedSample(domain.geometry, stratum(scalarComponents), stratum(scalarComponents + 1), rng);
+        // Drawn one statement at a time: as two arguments of one call their order was unspecified,
+        // so GCC and clang drew different samples (found by the clang sanitizer build). This is
+        // the order GCC used, which the committed docs were generated with.
+        double uNoL = stratum(scalarComponents + 1);
+        double uNoV = stratum(scalarComponents);
+        g = stratifiedSample(domain.geometry, uNoV, uNoL, rng);
       }
       Frame f = randomFrame(rng);
       // Interpolated vectors are not unit length: scale each by a factor in [0.8, 1.25].
