@@ -75,10 +75,13 @@ std::vector<Permutation> throughputList(const ShaderLibrary& lib, const std::vec
   std::vector<Permutation> perms;
   for (const auto& m : materials) {
     const ShadingModel* model = lib.findModel(m.model);
-    auto has = [](const std::vector<std::string>& v, const std::string& x) { return std::find(v.begin(), v.end(), x) != v.end(); };
+    auto has = [](const std::vector<std::string>& v, const std::string& x) {
+      return std::find(v.begin(), v.end(), x) != v.end();
+    };
     for (std::vector<std::string> lights : {std::vector<std::string>{"dir"}, {"dir", "point", "spot"}})
       for (std::string env : {"none", "sh"}) {
-        if (!has(model->environments, env) || !std::all_of(lights.begin(), lights.end(), [&](auto& l) { return has(model->lights, l); }))
+        if (!has(model->environments, env) ||
+            !std::all_of(lights.begin(), lights.end(), [&](auto& l) { return has(model->lights, l); }))
           continue;
         Permutation p;
         p.material = &m;
@@ -99,7 +102,8 @@ BuildOptions options(unsigned jobs, fs::path cacheDir = {}) {
 
 // Writes each permutation's emitted GLSL (as the build emits it) and times
 // glslangValidator -V + spirv-opt -O per file, `jobs` pairs at a time (xargs -P).
-double externalPairsMs(const ShaderLibrary& lib, const std::vector<Permutation>& perms, const fs::path& dir, unsigned jobs) {
+double externalPairsMs(const ShaderLibrary& lib, const std::vector<Permutation>& perms, const fs::path& dir,
+                       unsigned jobs) {
   fs::create_directories(dir);
   std::ofstream list(dir / "files.txt");
   for (const auto& p : perms) {
@@ -109,22 +113,28 @@ double externalPairsMs(const ShaderLibrary& lib, const std::vector<Permutation>&
     list << src.string() << "\n";
   }
   list.close();
-  std::string cmd = "xargs -P " + std::to_string(jobs) + " -I{} sh -c 'glslangValidator -V --target-env vulkan1.1 -o {}.spv {} >/dev/null" +
+  std::string cmd = "xargs -P " + std::to_string(jobs) +
+                    " -I{} sh -c 'glslangValidator -V --target-env vulkan1.1 -o {}.spv {} >/dev/null" +
                     " && spirv-opt -O --target-env=vulkan1.1 {}.spv -o {}.opt.spv' < " + (dir / "files.txt").string();
   auto t0 = Clock::now();
   if (std::system(cmd.c_str()) != 0) throw std::runtime_error("external compile failed: " + cmd);
   return msSince(t0);
 }
 
-json benchThroughput(const ShaderLibrary& lib, const std::vector<Permutation>& perms, int repeats, const fs::path& tmp) {
+json benchThroughput(const ShaderLibrary& lib, const std::vector<Permutation>& perms, int repeats,
+                     const fs::path& tmp) {
   json out{{"permutations", perms.size()}};
   for (unsigned jobs : {1u, 2u}) {
     BuildStats stats;
     double ms = bench::median(timeRepeats(repeats, [&] { buildPermutations(lib, perms, options(jobs), &stats); }));
-    out["in_process_j" + std::to_string(jobs)] = json{{"ms_median", ms}, {"permutations_per_s", perms.size() * 1000.0 / ms},
-                                                   {"compiled", stats.compiled}, {"unique_spirv", stats.uniqueSpirv}};
-    double ext = bench::median(timeRepeats(repeats, [&] { externalPairsMs(lib, perms, tmp / ("ext" + std::to_string(jobs)), jobs); }));
-    out["process_pairs_j" + std::to_string(jobs)] = json{{"ms_median", ext}, {"permutations_per_s", perms.size() * 1000.0 / ext}};
+    out["in_process_j" + std::to_string(jobs)] = json{{"ms_median", ms},
+                                                      {"permutations_per_s", perms.size() * 1000.0 / ms},
+                                                      {"compiled", stats.compiled},
+                                                      {"unique_spirv", stats.uniqueSpirv}};
+    double ext = bench::median(
+        timeRepeats(repeats, [&] { externalPairsMs(lib, perms, tmp / ("ext" + std::to_string(jobs)), jobs); }));
+    out["process_pairs_j" + std::to_string(jobs)] =
+        json{{"ms_median", ext}, {"permutations_per_s", perms.size() * 1000.0 / ext}};
     out["speedup_j" + std::to_string(jobs)] = ext / ms;
   }
   return out;
@@ -136,23 +146,27 @@ json benchNoop(const ShaderLibrary& lib, const std::vector<Permutation>& perms, 
   BuildStats cold, warm;
   double coldMs = bench::median(timeRepeats(1, [&] { buildPermutations(lib, perms, options(2, cache), &cold); }));
   double warmMs = bench::median(timeRepeats(repeats, [&] { buildPermutations(lib, perms, options(2, cache), &warm); }));
-  json out{{"permutations", perms.size()}, {"cold_ms", coldMs}, {"warm_ms_median", warmMs},
-           {"warm_cache_hits", warm.cacheHits}, {"warm_compiled", warm.compiled}};
+  json out{{"permutations", perms.size()},
+           {"cold_ms", coldMs},
+           {"warm_ms_median", warmMs},
+           {"warm_cache_hits", warm.cacheHits},
+           {"warm_compiled", warm.compiled}};
   if (scene.empty()) return out;
-  std::string cmd = cli + " compile --scene " + scene + " -q -j 2 --cache-dir " + (tmp / "cli-cache").string() + " -o " +
-                    (tmp / "pkg").string();
+  std::string cmd = cli + " compile --scene " + scene + " -q -j 2 --cache-dir " + (tmp / "cli-cache").string() +
+                    " -o " + (tmp / "pkg").string();
   auto run = [&] {
     if (std::system(cmd.c_str()) != 0) throw std::runtime_error("CLI failed: " + cmd);
   };
   out["cli"] = json{{"command", "matbricks compile --scene " + scene + " -q -j 2 --cache-dir CACHE -o PKG"},
-                {"cold_ms", bench::median(timeRepeats(1, run))},
-                {"noop_ms_median", bench::median(timeRepeats(repeats, run))}};
+                    {"cold_ms", bench::median(timeRepeats(1, run))},
+                    {"noop_ms_median", bench::median(timeRepeats(repeats, run))}};
   return out;
 }
 
 // N distinct materials: filament_plastic with roughness and base colour made constants that
 // differ per material, so that no two emit the same GLSL (no dedup, no cache sharing).
-json benchScaling(const ShaderLibrary& lib, const MaterialDesc& base, size_t maxSize, int repeats, const fs::path& tmp) {
+json benchScaling(const ShaderLibrary& lib, const MaterialDesc& base, size_t maxSize, int repeats,
+                  const fs::path& tmp) {
   json rows = json::array();
   for (size_t n = 1; n <= maxSize; n *= 10) {
     std::vector<MaterialDesc> mats(n, base);
@@ -178,24 +192,34 @@ json benchScaling(const ShaderLibrary& lib, const MaterialDesc& base, size_t max
       fs::remove_all(cache);
     }
     double m = bench::median(ms);
-    rows.push_back({{"permutations", n}, {"repeats", reps}, {"ms_median", m}, {"ms_per_permutation", m / n},
-                    {"compiled", stats.compiled}, {"unique_spirv", stats.uniqueSpirv}, {"peak_rss_mib", peakRssMiB()}});
+    rows.push_back({{"permutations", n},
+                    {"repeats", reps},
+                    {"ms_median", m},
+                    {"ms_per_permutation", m / n},
+                    {"compiled", stats.compiled},
+                    {"unique_spirv", stats.uniqueSpirv},
+                    {"peak_rss_mib", peakRssMiB()}});
     std::cerr << "  scaling: " << n << " permutations, " << m << " ms\n";
   }
   return rows;
 }
 
-json costOf(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const Permutation& perm, const bench::CostOptions& o) {
+json costOf(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const Permutation& perm,
+            const bench::CostOptions& o) {
   ProbeProgram probe = buildPermutationProbe(lib, perm);
   BenchProbeOptions timedOpt, baseOpt;
   timedOpt.iterations = baseOpt.iterations = o.iterations;
   baseOpt.baseline = true;
-  EmittedShader timed = emitPermutationBenchProbe(lib, perm, timedOpt), base = emitPermutationBenchProbe(lib, perm, baseOpt);
-  bench::CostMeasurement c = bench::measureCost(gpu, compileComputeGlsl(timed.glsl, timed.fileName),
-                                                compileComputeGlsl(base.glsl, base.fileName), probe.shader.layout,
-                                                probe.domain, o);
-  return {{"key", perm.key()}, {"ns_per_eval", c.nsPerEval}, {"ns_per_eval_min", c.nsPerEvalMin},
-          {"records_per_dispatch", c.records}, {"gpu_timestamps", c.gpuTimestamps},
+  EmittedShader timed = emitPermutationBenchProbe(lib, perm, timedOpt),
+                base = emitPermutationBenchProbe(lib, perm, baseOpt);
+  bench::CostMeasurement c =
+      bench::measureCost(gpu, compileComputeGlsl(timed.glsl, timed.fileName),
+                         compileComputeGlsl(base.glsl, base.fileName), probe.shader.layout, probe.domain, o);
+  return {{"key", perm.key()},
+          {"ns_per_eval", c.nsPerEval},
+          {"ns_per_eval_min", c.nsPerEvalMin},
+          {"records_per_dispatch", c.records},
+          {"gpu_timestamps", c.gpuTimestamps},
           {"spirv_instructions", spirvInstructionCount(probe.compiled.spirv)}};
 }
 
@@ -220,7 +244,11 @@ json benchRuntime(const ShaderLibrary& lib, const std::vector<MaterialDesc>& mat
   harness::VulkanHarness gpu;
   bench::CostOptions o;
   o.repeats = std::max<uint32_t>(9, static_cast<uint32_t>(repeats));  // cost.hpp default: ns figures need more
-  struct Case { std::string material; std::vector<std::string> folded; MaterialUse use; };
+  struct Case {
+    std::string material;
+    std::vector<std::string> folded;
+    MaterialUse use;
+  };
   std::vector<Case> cases{{"filament_plastic", {}, {}},
                           {"clearcoat_metal", {"clearcoat"}, {{{"clearCoat", {0.0}}}, {}}},
                           {"satin_sheen", {"sheen"}, {{{"sheenColor", {0.0, 0.0, 0.0}}}, {}}}};
@@ -239,13 +267,16 @@ json benchRuntime(const ShaderLibrary& lib, const std::vector<MaterialDesc>& mat
     fr.material = &fullRuntime;
     json sp = costOf(gpu, lib, p, o), jc = costOf(gpu, lib, fc, o), jr = costOf(gpu, lib, fr, o);
     const double base = sp["ns_per_eval"].get<double>();
-    rows.push_back({{"material", c.material}, {"specialized", sp}, {"feature_complete_constant", jc},
+    rows.push_back({{"material", c.material},
+                    {"specialized", sp},
+                    {"feature_complete_constant", jc},
                     {"feature_complete_runtime", jr},
                     {"time_ratio_constant_over_specialized", jc["ns_per_eval"].get<double>() / base},
                     {"time_ratio_runtime_over_specialized", jr["ns_per_eval"].get<double>() / base}});
     std::cerr << "  runtime: " << c.material << " done\n";
   }
-  return json{{"device", gpu.deviceName()}, {"iterations_per_record", o.iterations}, {"repeats", o.repeats}, {"rows", rows}};
+  return json{
+      {"device", gpu.deviceName()}, {"iterations_per_record", o.iterations}, {"repeats", o.repeats}, {"rows", rows}};
 }
 
 std::string fmt(double v, int digits = 3) {
@@ -255,35 +286,45 @@ std::string fmt(double v, int digits = 3) {
 }
 
 std::string markdown(const json& r) {
-  std::string s = "# Compile benchmarks\n\n" + r["command"].get<std::string>() + "\n\nMachine: " + r["machine"].get<std::string>() + "\n\n";
+  std::string s = "# Compile benchmarks\n\n" + r["command"].get<std::string>() +
+                  "\n\nMachine: " + r["machine"].get<std::string>() + "\n\n";
   const json& t = r["throughput"];
-  s += "## a. Throughput (" + std::to_string(t["permutations"].get<size_t>()) + " permutations)\n\n"
+  s += "## a. Throughput (" + std::to_string(t["permutations"].get<size_t>()) +
+       " permutations)\n\n"
        "| jobs | in-process perm/s | process pairs perm/s | speedup |\n|---|---|---|---|\n";
   for (int j : {1, 2}) {
     std::string k = std::to_string(j);
-    s += "| " + k + " | " + fmt(t["in_process_j" + k]["permutations_per_s"]) + " | " + fmt(t["process_pairs_j" + k]["permutations_per_s"]) +
-         " | " + fmt(t["speedup_j" + k]) + " |\n";
+    s += "| " + k + " | " + fmt(t["in_process_j" + k]["permutations_per_s"]) + " | " +
+         fmt(t["process_pairs_j" + k]["permutations_per_s"]) + " | " + fmt(t["speedup_j" + k]) + " |\n";
   }
   const json& n = r["noop"];
   s += "\n## b. No-op rebuild, warm cache\n\n| what | cold ms | warm ms |\n|---|---|---|\n| buildPermutations, " +
-       std::to_string(n["permutations"].get<size_t>()) + " permutations, -j2 | " + fmt(n["cold_ms"]) + " | " + fmt(n["warm_ms_median"]) + " |\n";
-  if (n.contains("cli")) s += "| `" + n["cli"]["command"].get<std::string>() + "` | " + fmt(n["cli"]["cold_ms"]) + " | " + fmt(n["cli"]["noop_ms_median"]) + " |\n";
-  s += "\n## c. Cold compile time against scene size (-j2)\n\n| permutations | repeats | ms | ms per permutation | peak RSS MiB |\n|---|---|---|---|---|\n";
+       std::to_string(n["permutations"].get<size_t>()) + " permutations, -j2 | " + fmt(n["cold_ms"]) + " | " +
+       fmt(n["warm_ms_median"]) + " |\n";
+  if (n.contains("cli"))
+    s += "| `" + n["cli"]["command"].get<std::string>() + "` | " + fmt(n["cli"]["cold_ms"]) + " | " +
+         fmt(n["cli"]["noop_ms_median"]) + " |\n";
+  s +=
+      "\n## c. Cold compile time against scene size (-j2)\n\n| permutations | repeats | ms | ms per permutation | peak RSS MiB |\n|---|---|---|---|---|\n";
   for (const auto& row : r["scaling"])
-    s += "| " + std::to_string(row["permutations"].get<size_t>()) + " | " + std::to_string(row["repeats"].get<int>()) + " | " +
-         fmt(row["ms_median"], 5) + " | " + fmt(row["ms_per_permutation"]) + " | " + fmt(row["peak_rss_mib"]) + " |\n";
-  s += "\n## d. Specialized against feature-complete, on " + r["runtime"]["device"].get<std::string>() +
-       "\n\nns per evaluation (ratio to specialized) and SPIR-V instructions after spirv-opt. Full (constants): every "
-       "feature on, the folded or absent features' inputs compile-time constants at the scene's values. Full (run-time): "
-       "the same inputs read from the record, as a uniform-driven uber shader.\n\n"
-       "| material | specialized | full (constants) | full (run-time) | instr. specialized | full (constants) | full (run-time) |\n"
-       "|---|---|---|---|---|---|---|\n";
+    s += "| " + std::to_string(row["permutations"].get<size_t>()) + " | " + std::to_string(row["repeats"].get<int>()) +
+         " | " + fmt(row["ms_median"], 5) + " | " + fmt(row["ms_per_permutation"]) + " | " + fmt(row["peak_rss_mib"]) +
+         " |\n";
+  s +=
+      "\n## d. Specialized against feature-complete, on " + r["runtime"]["device"].get<std::string>() +
+      "\n\nns per evaluation (ratio to specialized) and SPIR-V instructions after spirv-opt. Full (constants): every "
+      "feature on, the folded or absent features' inputs compile-time constants at the scene's values. Full (run-time): "
+      "the same inputs read from the record, as a uniform-driven uber shader.\n\n"
+      "| material | specialized | full (constants) | full (run-time) | instr. specialized | full (constants) | full (run-time) |\n"
+      "|---|---|---|---|---|---|---|\n";
   auto instr = [](const json& j) { return std::to_string(j["spirv_instructions"].get<size_t>()); };
   for (const auto& row : r["runtime"]["rows"])
     s += "| " + row["material"].get<std::string>() + " | " + fmt(row["specialized"]["ns_per_eval"]) + " ns | " +
-         fmt(row["feature_complete_constant"]["ns_per_eval"]) + " ns (" + fmt(row["time_ratio_constant_over_specialized"]) + "x) | " +
-         fmt(row["feature_complete_runtime"]["ns_per_eval"]) + " ns (" + fmt(row["time_ratio_runtime_over_specialized"]) + "x) | " +
-         instr(row["specialized"]) + " | " + instr(row["feature_complete_constant"]) + " | " + instr(row["feature_complete_runtime"]) + " |\n";
+         fmt(row["feature_complete_constant"]["ns_per_eval"]) + " ns (" +
+         fmt(row["time_ratio_constant_over_specialized"]) + "x) | " +
+         fmt(row["feature_complete_runtime"]["ns_per_eval"]) + " ns (" +
+         fmt(row["time_ratio_runtime_over_specialized"]) + "x) | " + instr(row["specialized"]) + " | " +
+         instr(row["feature_complete_constant"]) + " | " + instr(row["feature_complete_runtime"]) + " |\n";
   return s;
 }
 
@@ -304,7 +345,8 @@ int main(int argc, char** argv) {
     compileComputeGlsl(emitPermutation(lib, permutationsFor(materials).front()).glsl, "warmup.glsl");
     std::vector<Permutation> perms = throughputList(lib, materials);
     json r;
-    r["command"] = "mb_bench_compile " + std::to_string(repeats) + " " + std::to_string(maxSize) + " " + outDir.string() + " " + scene;
+    r["command"] = "mb_bench_compile " + std::to_string(repeats) + " " + std::to_string(maxSize) + " " +
+                   outDir.string() + " " + scene;
     r["machine"] = std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
     r["toolchain"] = toolchainVersion();
     std::cerr << "a. throughput\n";

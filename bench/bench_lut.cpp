@@ -55,7 +55,8 @@ void writeErrorMap(const std::string& path, const lut::LutTable& t, uint32_t gri
   for (auto& th : pool) th = std::thread(worker);
   for (auto& th : pool) th.join();
   std::ofstream f(path);
-  f << "# matbricks DFG LUT " << t.size << "x" << t.size << (t.samples ? ", Hammersley " + std::to_string(t.samples) : ", quadrature")
+  f << "# matbricks DFG LUT " << t.size << "x" << t.size
+    << (t.samples ? ", Hammersley " + std::to_string(t.samples) : ", quadrature")
     << ": GPU minus the exact integrals per texel (bench/bench_lut.cpp)\n";
   f << "i,j,nov,perceptual_roughness,err_dfg_gv_fc,err_dfg_gv,err_cloth,rel_err_cloth\n";
   char buf[160];

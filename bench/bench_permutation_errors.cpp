@@ -57,7 +57,8 @@ int main(int argc, char** argv) {
       for (uint64_t i = 1; i < run.count; ++i)
         if (recordRel(run, i, stride, outputs) > recordRel(run, worst, stride, outputs)) worst = i;
       std::vector<std::string> cols = layout.columns();
-      std::vector<float> record(inputs.begin() + worst * layout.inStride, inputs.begin() + (worst + 1) * layout.inStride);
+      std::vector<float> record(inputs.begin() + worst * layout.inStride,
+                                inputs.begin() + (worst + 1) * layout.inStride);
       json out{{"key", program.shader.key}, {"max_rel", recordRel(run, worst, stride, outputs)}};
       json in = json::object();
       for (size_t k = 0; k < cols.size(); ++k) in[cols[k]] = record[k];
@@ -101,8 +102,8 @@ int main(int argc, char** argv) {
           absErr = std::max(absErr, std::abs(parts.gpu[v * stride + k] - parts.reference[v * stride + k]));
           ref = std::max(ref, std::abs(parts.reference[v * stride + k]));
         }
-        only[names[v] + (names[v] == "dir" ? "" : " + dir")] = {{"max_abs", absErr}, {"max_reference", ref},
-                                                               {"max_rel", recordRel(parts, v, stride, outputs)}};
+        only[names[v] + (names[v] == "dir" ? "" : " + dir")] = {
+            {"max_abs", absErr}, {"max_reference", ref}, {"max_rel", recordRel(parts, v, stride, outputs)}};
       }
       out["only"] = only;
       // On the variant that keeps the error, each other input column at 0 in turn (material
@@ -110,7 +111,8 @@ int main(int argc, char** argv) {
       size_t carrier = 0;
       for (size_t v = 1; v < names.size(); ++v)
         if (recordRel(parts, v, stride, outputs) > recordRel(parts, carrier, stride, outputs)) carrier = v;
-      std::vector<float> base(batch.begin() + carrier * layout.inStride, batch.begin() + (carrier + 1) * layout.inStride);
+      std::vector<float> base(batch.begin() + carrier * layout.inStride,
+                              batch.begin() + (carrier + 1) * layout.inStride);
       std::vector<std::string> zeroed;
       std::vector<float> zbatch;
       for (size_t k = 0; k < cols.size(); ++k) {

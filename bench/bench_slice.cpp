@@ -44,8 +44,11 @@ int main(int argc, char** argv) {
   auto perms = permutationsFor(materials);
 
   harness::VulkanHarness gpu;
-  nlohmann::json out{{"device", gpu.deviceName()}, {"repeats", repeats}, {"eval_count", evalCount},
-                     {"toolchain", toolchainVersion()}, {"permutations", nlohmann::json::array()}};
+  nlohmann::json out{{"device", gpu.deviceName()},
+                     {"repeats", repeats},
+                     {"eval_count", evalCount},
+                     {"toolchain", toolchainVersion()},
+                     {"permutations", nlohmann::json::array()}};
   fs::path tmp = fs::temp_directory_path() / ("mb_bench_" + std::to_string(::getpid()));
   fs::create_directories(tmp);
 

@@ -105,8 +105,7 @@ class FakeLibrary {
   explicit FakeLibrary(const std::map<std::string, std::string>& overrides = {}) {
     static std::atomic<int> counter{0};
     root_ = std::filesystem::temp_directory_path() /
-            ("mb_fake_lib_" + std::to_string(std::random_device{}()) + "_" +
-             std::to_string(counter++));
+            ("mb_fake_lib_" + std::to_string(std::random_device{}()) + "_" + std::to_string(counter++));
     auto files = fakeLibraryFiles();
     for (const auto& [path, text] : overrides) files[path] = text;
     for (const auto& [path, text] : files) {
@@ -123,9 +122,7 @@ class FakeLibrary {
 
   const std::filesystem::path& root() const { return root_; }
   // The path diagnostics use for a library file.
-  std::string path(const std::string& relative) const {
-    return (root_ / relative).lexically_normal().string();
-  }
+  std::string path(const std::string& relative) const { return (root_ / relative).lexically_normal().string(); }
   void write(const std::string& relative, const std::string& text) const {
     std::filesystem::create_directories((root_ / relative).parent_path());
     std::ofstream(root_ / relative, std::ios::binary) << text;

@@ -69,7 +69,8 @@ TEST_CASE("the sphere's lobe integrals agree with independent integrals over the
     Geometry g = mirrorThroughCentre(rng);
     if (i % 2) {
       double theta = 1.7 * u(rng), phi = 2 * kPi * u(rng);
-      g = makeGeometry(g.n, g.v, Vec3{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
+      g = makeGeometry(g.n, g.v,
+                       Vec3{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
     }
     double alpha = 0.05 + 0.5 * u(rng), sinAlpha = 0.05 + 0.5 * u(rng);
     arealights::LobeIntegrals lobe = arealights::sphereLobe(g, alpha, sinAlpha);

@@ -49,7 +49,8 @@ TEST_CASE("every file of the bad-input corpus belongs to a case, and every case'
   }
 }
 
-TEST_CASE("every bad input gets its expected diagnostics, in text and json, and leaves nothing behind", "[bad-input][cli]") {
+TEST_CASE("every bad input gets its expected diagnostics, in text and json, and leaves nothing behind",
+          "[bad-input][cli]") {
   auto cases = test::loadBadInputCases();
   auto before = corpusSnapshot();
   for (const auto& c : cases) {
@@ -67,7 +68,8 @@ TEST_CASE("every bad input gets its expected diagnostics, in text and json, and 
     if (c.knownFailure.empty()) {
       for (const auto& p : j.problems) FAIL_CHECK(p);
     } else if (j.problems.empty()) {
-      FAIL_CHECK("known failure is fixed: remove \"known_failure\" from the case in tests/data/bad_inputs/cases.json and regenerate docs/bad-inputs.md");
+      FAIL_CHECK(
+          "known failure is fixed: remove \"known_failure\" from the case in tests/data/bad_inputs/cases.json and regenerate docs/bad-inputs.md");
     } else {
       WARN("known failure " << c.input << ": " << j.problems.front());
     }

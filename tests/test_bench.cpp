@@ -65,16 +65,16 @@ std::filesystem::path tempDir(const std::string& name) {
 TEST_CASE("the Pareto frontier of a hand-made set", "[bench]") {
   const double nan = std::nan("");
   std::vector<ParetoPoint> pts{
-      {1.0, 1e-1},   // 0: frontier
-      {2.0, 1e-3},   // 1: frontier
-      {3.0, 1e-2},   // 2: dominated by 1
-      {0.5, 1.0},    // 3: frontier (cheapest)
-      {4.0, 1e-6},   // 4: frontier (most accurate)
-      {2.0, 1e-3},   // 5: equal to 1: neither dominates
-      {5.0, 1e-6},   // 6: dominated by 4 (same error, costlier)
-      {0.1, nan},    // 7: non-finite: never on the frontier
-      {1.0, 0.5},    // 8: dominated by 0 (same cost, larger error)
-      {-0.2, 2.0},   // 9: frontier (negative net cost is still a cost)
+      {1.0, 1e-1},  // 0: frontier
+      {2.0, 1e-3},  // 1: frontier
+      {3.0, 1e-2},  // 2: dominated by 1
+      {0.5, 1.0},   // 3: frontier (cheapest)
+      {4.0, 1e-6},  // 4: frontier (most accurate)
+      {2.0, 1e-3},  // 5: equal to 1: neither dominates
+      {5.0, 1e-6},  // 6: dominated by 4 (same error, costlier)
+      {0.1, nan},   // 7: non-finite: never on the frontier
+      {1.0, 0.5},   // 8: dominated by 0 (same cost, larger error)
+      {-0.2, 2.0},  // 9: frontier (negative net cost is still a cost)
   };
   CHECK(paretoFrontier(pts) == std::vector<size_t>{9, 3, 0, 1, 5, 4});
   CHECK(paretoFrontier({}).empty());
@@ -85,7 +85,7 @@ TEST_CASE("binary16 rounding and bilinear DFG LUT sampling", "[bench][ibl]") {
   CHECK(roundToHalf(1.0) == 1.0);
   CHECK(roundToHalf(0.1) == 0.0999755859375);
   CHECK(roundToHalf(-0.1) == -0.0999755859375);
-  CHECK(roundToHalf(1.0 + std::ldexp(1.0, -11)) == 1.0);                           // tie: to even
+  CHECK(roundToHalf(1.0 + std::ldexp(1.0, -11)) == 1.0);                            // tie: to even
   CHECK(roundToHalf(1.0 + 3 * std::ldexp(1.0, -11)) == 1.0 + std::ldexp(1.0, -9));  // tie: to even
   CHECK(roundToHalf(3e-8) == std::ldexp(1.0, -24));                                 // subnormal
   CHECK(std::isinf(roundToHalf(70000.0)));
@@ -132,7 +132,8 @@ TEST_CASE("DFG LUT error falls with resolution against the integrated split sum"
 TEST_CASE("bench probes evaluate the probe's function, once per iteration", "[bench][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
-  auto materials = std::vector<MaterialDesc>{loadMaterialJson((test::sourceDir() / "materials/filament_plastic.json").string(), lib)};
+  auto materials = std::vector<MaterialDesc>{
+      loadMaterialJson((test::sourceDir() / "materials/filament_plastic.json").string(), lib)};
   Permutation perm = permutationsFor(materials).front();
   const uint32_t iterations = 8;
   struct Case {
@@ -174,7 +175,8 @@ TEST_CASE("bench probes evaluate the probe's function, once per iteration", "[be
   requireNoLayerMessages(gpu);
 }
 
-TEST_CASE("a tiny bench run: finite numbers, the validator's instruction count, well-formed outputs", "[bench][vulkan]") {
+TEST_CASE("a tiny bench run: finite numbers, the validator's instruction count, well-formed outputs",
+          "[bench][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   BenchOptions o;
@@ -225,7 +227,8 @@ TEST_CASE("a tiny bench run: finite numbers, the validator's instruction count, 
   std::string md = toMarkdown(r);
   CHECK(md.find("### `specular_d`") != std::string::npos);
   std::string doc = std::string("intro\n") + kMarkdownBegin + "\nold\n" + kMarkdownEnd + "\ntail\n";
-  CHECK(spliceGenerated(doc, "new\n") == std::string("intro\n") + kMarkdownBegin + "\nnew\n" + kMarkdownEnd + "\ntail\n");
+  CHECK(spliceGenerated(doc, "new\n") ==
+        std::string("intro\n") + kMarkdownBegin + "\nnew\n" + kMarkdownEnd + "\ntail\n");
   requireNoLayerMessages(gpu);
 }
 

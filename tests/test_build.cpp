@@ -50,7 +50,8 @@ TEST_CASE("identical emitted GLSL is compiled once; unique SPIR-V is counted", "
 
 TEST_CASE("fp16 permutations skip spirv-opt and still validate", "[build][fp16]") {
   const ShaderLibrary& lib = test::shippedLibrary();
-  auto perms = test::permutationsOf(test::loadedMaterials(lib, {"worn_car_paint"}), {"dir", "point"}, "ibl_lut", "fp16");
+  auto perms =
+      test::permutationsOf(test::loadedMaterials(lib, {"worn_car_paint"}), {"dir", "point"}, "ibl_lut", "fp16");
   auto built = buildPermutations(lib, perms, {});
   spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
   CHECK(tools.Validate(built[0].artifacts.spirv));
@@ -77,7 +78,9 @@ TEST_CASE("every failing permutation is reported, in input order, and nothing is
     if (std::find(bricks.begin(), bricks.end(), brickId) != bricks.end()) using_.push_back(i);
   }
   REQUIRE(using_.size() >= 2);
-  { std::ofstream(test::rootOf(root) / brick->file, std::ios::app) << "\nfloat broken() { return undefinedSymbol; }\n"; }
+  {
+    std::ofstream(test::rootOf(root) / brick->file, std::ios::app) << "\nfloat broken() { return undefinedSymbol; }\n";
+  }
   ShaderLibrary broken = ShaderLibrary::load(test::rootOf(root));
   const auto& brokenMats = test::loadedMaterials(broken, {"filament_plastic", "ue4_metal", "frostbite_dielectric"});
   BuildOptions o;

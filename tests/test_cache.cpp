@@ -112,7 +112,8 @@ TEST_CASE("a corrupt entry is detected, deleted and reported", "[cache]") {
   SECTION("trailing bytes") { corruptWith(good + "x"); }
 }
 
-TEST_CASE("builds through the cache: a warm build hits, a corrupt entry is rebuilt to identical output", "[cache][build]") {
+TEST_CASE("builds through the cache: a warm build hits, a corrupt entry is rebuilt to identical output",
+          "[cache][build]") {
   test::ScratchDir dir("cache_build");
   const ShaderLibrary& lib = test::shippedLibrary();
   auto perms = cachePermutations();
@@ -206,8 +207,9 @@ TEST_CASE("the cache key changes with a brick source, an option or the target li
   CHECK(keyOf(lib, true, {"spirv", "hlsl", "msl"}) == keyOf(lib, true, {"msl", "hlsl"}));  // spirv always built
 
   // A brick the permutation includes changes: a new key, even for a comment-only edit.
-  const Brick* brick = lib.findBrick(emitPermutation(lib, test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}),
-                                                                              {"dir"}, "none")[0]).bricks.front());
+  const Brick* brick = lib.findBrick(
+      emitPermutation(lib, test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir"}, "none")[0])
+          .bricks.front());
   REQUIRE(brick);
   { std::ofstream(test::rootOf(root) / brick->file, std::ios::app) << "// edited\n"; }
   ShaderLibrary edited = ShaderLibrary::load(test::rootOf(root));

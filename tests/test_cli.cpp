@@ -29,8 +29,14 @@ std::string csvFor(const nlohmann::json& brick) {
     if (c.size() == 3 && c[1] == '.') {  // vector component: n, v, l, or a vec3 parameter
       char vec = c[0], axis = c[2];
       if (vec == 'n') v1 = v2 = axis == 'z' ? 1.0 : 0.0;
-      if (vec == 'v') { v1 = axis == 'x' ? 0.6 : (axis == 'z' ? 0.8 : 0.0); v2 = axis == 'z' ? 1.0 : 0.0; }
-      if (vec == 'l') { v1 = axis == 'x' ? -0.6 : (axis == 'z' ? 0.8 : 0.0); v2 = axis == 'y' ? 0.6 : (axis == 'z' ? 0.8 : 0.0); }
+      if (vec == 'v') {
+        v1 = axis == 'x' ? 0.6 : (axis == 'z' ? 0.8 : 0.0);
+        v2 = axis == 'z' ? 1.0 : 0.0;
+      }
+      if (vec == 'l') {
+        v1 = axis == 'x' ? -0.6 : (axis == 'z' ? 0.8 : 0.0);
+        v2 = axis == 'y' ? 0.6 : (axis == 'z' ? 0.8 : 0.0);
+      }
     }
     std::string key = c.substr(0, c.find('.'));
     if (brick["domain"].contains(key)) {
@@ -102,14 +108,21 @@ TEST_CASE("a failing compile leaves an existing package untouched", "[cli][packa
   fs::path dir = tempDir("atomic");
   REQUIRE(test::runCli("compile -q " + material("ue4_metal.json") + " -o " + (dir / "pkg").string()).exitCode == 0);
   std::string before = test::readFile(dir / "pkg/manifest.json");
-  { std::ofstream(dir / "unknown_brick.json") << R"({"name": "m", "model": "standard", "bricks": {"roughness": "roughness_clamped", "diffuse": "diffuse_lambert", "specular_d": "d_ggxx", "specular_v": "v_smith_ggx_correlated", "fresnel": "f_schlick"}})"; }
-  auto r = test::runCli("compile " + material("ue4_metal.json") + " " + (dir / "unknown_brick.json").string() + " -o " + (dir / "pkg").string());
+  {
+    std::ofstream(dir / "unknown_brick.json")
+        << R"({"name": "m", "model": "standard", "bricks": {"roughness": "roughness_clamped", "diffuse": "diffuse_lambert", "specular_d": "d_ggxx", "specular_v": "v_smith_ggx_correlated", "fresnel": "f_schlick"}})";
+  }
+  auto r = test::runCli("compile " + material("ue4_metal.json") + " " + (dir / "unknown_brick.json").string() + " -o " +
+                        (dir / "pkg").string());
   CHECK(r.exitCode == 3);
   CHECK_THAT(r.output, Catch::Contains("E-UNKNOWN-BRICK"));
   CHECK_THAT(r.output, Catch::Contains("d_ggx"));
   CHECK(test::readFile(dir / "pkg/manifest.json") == before);
   size_t entries = 0;
-  for (const auto& e : fs::directory_iterator(dir)) { (void)e; ++entries; }
+  for (const auto& e : fs::directory_iterator(dir)) {
+    (void)e;
+    ++entries;
+  }
   CHECK(entries == 2);  // pkg and the bad material: no staging directory left behind
   fs::remove_all(dir);
 }
@@ -137,12 +150,17 @@ TEST_CASE("eval works for every brick that bricks --json lists", "[cli][eval][vu
 
 TEST_CASE("eval --material evaluates a whole material; a bad CSV header is located", "[cli][eval][vulkan]") {
   fs::path dir = tempDir("evalmat");
-  { std::ofstream(dir / "in.csv") << "n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z,roughness\n0,0,1,0.6,0,0.8,-0.6,0,0.8,0.3\n0,0,1,0,0,1,0,0,1,0.05\n"; }
+  {
+    std::ofstream(dir / "in.csv")
+        << "n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z,roughness\n0,0,1,0.6,0,0.8,-0.6,0,0.8,0.3\n0,0,1,0,0,1,0,0,1,0.05\n";
+  }
   auto r = test::runCli("eval --material " + material("ue4_metal.json") + " --input " + (dir / "in.csv").string());
   INFO(r.output);
   CHECK(r.exitCode == 0);
   CHECK_THAT(r.output, Catch::Contains("within tolerance"));
-  { std::ofstream(dir / "bad.csv") << "n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z,roughnes\n0,0,1,0.6,0,0.8,-0.6,0,0.8,0.3\n"; }
+  {
+    std::ofstream(dir / "bad.csv") << "n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z,roughnes\n0,0,1,0.6,0,0.8,-0.6,0,0.8,0.3\n";
+  }
   auto bad = test::runCli("eval --material " + material("ue4_metal.json") + " --input " + (dir / "bad.csv").string());
   CHECK(bad.exitCode == 3);
   CHECK_THAT(bad.output, Catch::Contains("bad.csv:1:37: error[E-CSV-COLUMN]: unknown column 'roughnes'"));
@@ -151,7 +169,8 @@ TEST_CASE("eval --material evaluates a whole material; a bad CSV header is locat
 }
 
 TEST_CASE("validate --json gives one complete record per permutation", "[cli][validate][vulkan]") {
-  auto r = test::runCli("--vk-validation validate --json --samples 512 " + material("filament_plastic.json") + " " + material("ue4_metal.json"));
+  auto r = test::runCli("--vk-validation validate --json --samples 512 " + material("filament_plastic.json") + " " +
+                        material("ue4_metal.json"));
   REQUIRE(r.exitCode == 0);
   auto recs = nlohmann::json::parse(r.output);
   // Two materials, each with every light type of the standard model, once per environment mode.
@@ -161,8 +180,8 @@ TEST_CASE("validate --json gives one complete record per permutation", "[cli][va
   CHECK(keys.count("filament_plastic.standard.dir+point+spot+sphere+tube.ibl_lut.fp32"));
   CHECK(keys.count("ue4_metal.standard.dir+point+spot+sphere+tube.none.fp32"));
   for (const auto& rec : recs) {
-    for (const char* k : {"key", "samples", "max_abs_error", "max_rel_error", "max_ulp", "nan_count",
-                          "inf_count", "negative_count", "passed", "gpu_ms"})
+    for (const char* k : {"key", "samples", "max_abs_error", "max_rel_error", "max_ulp", "nan_count", "inf_count",
+                          "negative_count", "passed", "gpu_ms"})
       CHECK(rec.contains(k));
     CHECK(rec["passed"] == true);
     CHECK(rec["nan_count"] == 0);
@@ -208,13 +227,17 @@ TEST_CASE("every example eval input evaluates within tolerance", "[cli][eval][ex
 TEST_CASE("eval --material takes an optional illuminance column; a partial one is located", "[cli][eval][vulkan]") {
   fs::path dir = tempDir("illum");
   const std::string header = "n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z,";
-  { std::ofstream(dir / "lit.csv") << header << "illuminance.x,illuminance.y,illuminance.z,roughness\n0,0,1,0.6,0,0.8,-0.6,0,0.8,1000,500,2,0.5\n"; }
+  {
+    std::ofstream(dir / "lit.csv")
+        << header << "illuminance.x,illuminance.y,illuminance.z,roughness\n0,0,1,0.6,0,0.8,-0.6,0,0.8,1000,500,2,0.5\n";
+  }
   { std::ofstream(dir / "partial.csv") << header << "illuminance.x,roughness\n0,0,1,0,0,1,0,0,1,2,0.5\n"; }
   auto lit = test::runCli("eval --material " + material("ue4_metal.json") + " --input " + (dir / "lit.csv").string());
   INFO(lit.output);
   CHECK(lit.exitCode == 0);
   CHECK_THAT(lit.output, Catch::Contains("within tolerance"));
-  auto partial = test::runCli("eval --material " + material("ue4_metal.json") + " --input " + (dir / "partial.csv").string());
+  auto partial =
+      test::runCli("eval --material " + material("ue4_metal.json") + " --input " + (dir / "partial.csv").string());
   INFO(partial.output);
   CHECK(partial.exitCode == 3);
   CHECK_THAT(partial.output, Catch::Contains((dir / "partial.csv").string() + ":1:1: error[E-CSV-COLUMN]"));
@@ -222,7 +245,8 @@ TEST_CASE("eval --material takes an optional illuminance column; a partial one i
   fs::remove_all(dir);
 }
 
-TEST_CASE("compile's scene, target and cache options: usage errors exit 2; an unusable cache is no error", "[cli][scene]") {
+TEST_CASE("compile's scene, target and cache options: usage errors exit 2; an unusable cache is no error",
+          "[cli][scene]") {
   fs::path dir = tempDir("compile_options");
   const std::string scene = (test::sourceDir() / "examples/scenes/mobile.json").string();
   const std::string out = " -o " + (dir / "pkg").string();

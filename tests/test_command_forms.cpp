@@ -54,7 +54,8 @@ const std::vector<CommandCase> kCommands = {
 };
 
 std::string substitute(std::string s, const std::string& key, const std::string& value) {
-  for (size_t at = s.find(key); at != std::string::npos; at = s.find(key, at + value.size())) s.replace(at, key.size(), value);
+  for (size_t at = s.find(key); at != std::string::npos; at = s.find(key, at + value.size()))
+    s.replace(at, key.size(), value);
   return s;
 }
 
@@ -63,9 +64,9 @@ void requireCleanExit(const test::CliResult& r) {
   static const std::regex located(R"((^|\n)[^\n:]+:\d+:\d+: error\[E-[A-Z0-9-]+\]: )");
   INFO("exit " << r.exitCode << ", output:\n" << r.output.substr(0, 4000));
   CHECK(r.exitCode >= 0);
-  CHECK(r.exitCode < 128);   // no signal
-  CHECK(r.exitCode != 5);    // no internal error
-  CHECK(r.exitCode != 2);    // the matrix's command lines are valid
+  CHECK(r.exitCode < 128);  // no signal
+  CHECK(r.exitCode != 5);   // no internal error
+  CHECK(r.exitCode != 2);   // the matrix's command lines are valid
   if (r.exitCode == 3) CHECK(std::regex_search(r.output, located));
 }
 
@@ -85,8 +86,8 @@ TEST_CASE("every command that takes materials or scenes runs cleanly on every de
     for (const auto& c : kCommands) {
       const std::string& pattern = form.scene ? c.sceneArgs : c.materialArgs;
       if (pattern.empty()) continue;
-      std::string args = substitute(substitute(substitute(pattern, "{in}", form.path), "{out}", out.string()), "{csv}",
-                                    csv.string());
+      std::string args =
+          substitute(substitute(substitute(pattern, "{in}", form.path), "{out}", out.string()), "{csv}", csv.string());
       INFO("matbricks " << args);
       requireCleanExit(test::runCli(args));
     }
@@ -100,8 +101,9 @@ TEST_CASE("stress on the shipped glTF files exits 0 and reports every material",
     std::vector<std::string> materials;
   };
   const std::vector<std::string> showroom{"Car_Paint", "Velvet", "Brushed_Aluminium", "Glazed_Ceramic", "Neon_Sign"};
-  for (const auto& [file, names] : {Shipped{"examples/gltf/showroom.gltf", showroom}, Shipped{"examples/gltf/showroom.glb", showroom},
-                                    Shipped{"examples/gltf/textured_props.gltf", {}}}) {
+  for (const auto& [file, names] :
+       {Shipped{"examples/gltf/showroom.gltf", showroom}, Shipped{"examples/gltf/showroom.glb", showroom},
+        Shipped{"examples/gltf/textured_props.gltf", {}}}) {
     const std::string path = (test::sourceDir() / file).string();
     // Both precisions: at fp16 the glTF clear coat's Smith V once overflowed to Inf for a
     // viewer below the coat's geometric horizon (Car_Paint); the V brick now saturates as
@@ -141,7 +143,8 @@ TEST_CASE("help texts and docs/cli.md name the same accepted forms, from one pla
   }
 }
 
-TEST_CASE("eval --name picks a material of a glTF file; an unknown name is a coded error with a suggestion", "[cli][forms][eval][vulkan]") {
+TEST_CASE("eval --name picks a material of a glTF file; an unknown name is a coded error with a suggestion",
+          "[cli][forms][eval][vulkan]") {
   const fs::path out = test::freshTempDir("forms", "eval_name");
   const fs::path csv = out / "nvl.csv";
   {

@@ -49,7 +49,8 @@ TEST_CASE("half-vector maps invert their CDFs and integrate D (n.h) to 1", "[ene
       HalfVectorAngle m = map.angleAt(0.5);
       double t = std::atan2(m.sinTheta, m.cosTheta), h = 1e-6 * std::min(t, 0.5 * ref::kPi - t);
       double slope = (map.cdf(t + h) - map.cdf(t - h)) / (2 * h);
-      CHECK(slope == Approx(2 * ref::kPi * map.density({std::cos(t), std::sin(t)}) * std::sin(t)).epsilon(1e-5).margin(1e-200));
+      CHECK(slope ==
+            Approx(2 * ref::kPi * map.density({std::cos(t), std::sin(t)}) * std::sin(t)).epsilon(1e-5).margin(1e-200));
     }
   }
 }
@@ -100,7 +101,8 @@ TEST_CASE("multiscatter-compensated GGX at f0 = 1 has albedo 1 within its derive
   for (const auto& c : comp.cells) CHECK(c.compensation > 1.0);  // E < 1: compensation brightens
 }
 
-TEST_CASE("d_ggx * v_smith_ggx_correlated is reciprocal on the GPU; the n.v clamp breaks it below 1e-4", "[energy][vulkan]") {
+TEST_CASE("d_ggx * v_smith_ggx_correlated is reciprocal on the GPU; the n.v clamp breaks it below 1e-4",
+          "[energy][vulkan]") {
   Gpu g;
   auto lobes = lobesNamed({"d_ggx * v_smith_ggx_correlated", "diffuse_lambert"});
   auto result = reciprocity(g.gpu, g.probes, lobes, EnergyGrid::coarse());

@@ -90,7 +90,8 @@ TEST_CASE("lavapipe offers shaderFloat16 and the harness enables it", "[fp16][ha
   requireNoLayerMessages(gpu);
 }
 
-TEST_CASE("an fp16 probe runs on lavapipe and stays within its half-precision bound of fp32", "[fp16][harness][vulkan]") {
+TEST_CASE("an fp16 probe runs on lavapipe and stays within its half-precision bound of fp32",
+          "[fp16][harness][vulkan]") {
   // roughness_squared is one product r * r. In half precision the input is rounded (relative
   // error u = 2^-11), the square doubles that, and the product rounds once more: 3u relative,
   // for results above fp16's smallest normal 2^-14 (inputs >= 0.01 keep r^2 >= 1e-4 there).
@@ -123,7 +124,8 @@ TEST_CASE("fp16 probes of geometry bricks run without NaN or Inf in the fp16 dom
   for (const char* id : {"d_ggx", "v_smith_ggx_correlated", "f_schlick", "diffuse_lambert"}) {
     INFO(id);
     ProbeProgram p = buildBrickProbe(lib, *lib.findBrick(id), false, ShaderPrecision::Fp16);
-    bool alphaAtFp16Floor = p.domain.ranges.count("alpha") == 0 || p.domain.ranges.at("alpha").lo >= 0.089 * 0.089 - 1e-12;
+    bool alphaAtFp16Floor =
+        p.domain.ranges.count("alpha") == 0 || p.domain.ranges.at("alpha").lo >= 0.089 * 0.089 - 1e-12;
     CHECK(alphaAtFp16Floor);
     ProbeRun run = runProbe(gpu, p, generateSamples(p.shader.layout, p.domain, 2048, 7));
     ErrorStats s = compare(run, p);
@@ -172,13 +174,14 @@ TEST_CASE("an fp16 permutation runs on lavapipe; its NaN/Inf are reported", "[fp
     infInRange += inf && std::abs(run.reference[i]) <= 65504.0;
     overflow += inf && std::abs(run.reference[i]) > 65504.0;
   }
-  WARN("fp16 filament_plastic over 2048 samples: NaN " << nan << ", Inf with the exact value in range "
-                                                     << infInRange << ", beyond the half range " << overflow);
+  WARN("fp16 filament_plastic over 2048 samples: NaN " << nan << ", Inf with the exact value in range " << infInRange
+                                                       << ", beyond the half range " << overflow);
   CHECK(run.count == 2048);
   requireNoLayerMessages(gpu);
 }
 
-TEST_CASE("the mediump (ESSL) form of fp16 permutations computes the fp32 function on lavapipe, but for its caps", "[fp16][harness][vulkan]") {
+TEST_CASE("the mediump (ESSL) form of fp16 permutations computes the fp32 function on lavapipe, but for its caps",
+          "[fp16][harness][vulkan]") {
   // Lavapipe ignores RelaxedPrecision, so the mediump form runs at fp32 there. Against the
   // fp16 permutation's own reference (its bricks, the fp16 roughness floor, the fp16 domain)
   // each value must be within the fp32 tolerance, except where one of MB_FP16's half-range

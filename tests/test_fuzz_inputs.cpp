@@ -72,7 +72,8 @@ std::vector<Mutant> mutate(const std::string& seed, uint32_t seedValue) {
   const size_t n = seed.size();
   // Truncation at every k-th byte (12 prefixes, the empty one included).
   size_t step = std::max<size_t>(1, n / 12);
-  for (size_t k = 0; k < n; k += step) out.push_back({"truncated to " + std::to_string(k) + " bytes", seed.substr(0, k)});
+  for (size_t k = 0; k < n; k += step)
+    out.push_back({"truncated to " + std::to_string(k) + " bytes", seed.substr(0, k)});
   for (int i = 0; i < 12; ++i) {
     std::string s = seed;
     size_t at = pick(rng, n);
@@ -97,10 +98,20 @@ std::vector<Mutant> mutate(const std::string& seed, uint32_t seedValue) {
     out.push_back({"line " + std::to_string(b + 1) + " deleted", joinLines(del)});
   }
   auto nums = numbers(seed);
-  const std::vector<std::string> replacements{
-      "1e999", "-1e999", "1e308", "123456789012345678901234567890", "4.9e-324", "-0", "NaN", "nan",
-      "inf", "-Infinity", "0x1p3", std::string(65, '[') + "1" + std::string(65, ']'),
-      std::string(5000, '[') + "1" + std::string(5000, ']'), "vec3(" + std::string(3000, '(') + "1" + std::string(3000, ')') + ")"};
+  const std::vector<std::string> replacements{"1e999",
+                                              "-1e999",
+                                              "1e308",
+                                              "123456789012345678901234567890",
+                                              "4.9e-324",
+                                              "-0",
+                                              "NaN",
+                                              "nan",
+                                              "inf",
+                                              "-Infinity",
+                                              "0x1p3",
+                                              std::string(65, '[') + "1" + std::string(65, ']'),
+                                              std::string(5000, '[') + "1" + std::string(5000, ']'),
+                                              "vec3(" + std::string(3000, '(') + "1" + std::string(3000, ')') + ")"};
   for (const auto& r : replacements) {
     if (nums.empty()) break;
     auto [at, len] = nums[pick(rng, nums.size())];
@@ -132,7 +143,9 @@ void loadMaterial(const std::string& path) { loadMaterialFile(path, test::shippe
 
 // A scene is read and planned (its materials loaded, folding and validity decided); nothing
 // is compiled.
-void loadAndPlanScene(const std::string& path) { planScene(loadScene(path, test::shippedLibrary()), test::shippedLibrary()); }
+void loadAndPlanScene(const std::string& path) {
+  planScene(loadScene(path, test::shippedLibrary()), test::shippedLibrary());
+}
 
 // Loads `path` on a worker thread; a load that takes longer than the bound is a hang: the
 // mutant is printed and the process ends, because a stuck thread cannot be stopped.
@@ -183,7 +196,8 @@ FuzzCount fuzzSeeds(const std::vector<fs::path>& seedFiles, const fs::path& muta
       auto t0 = std::chrono::steady_clock::now();
       Outcome o = Outcome::Loaded;
       try {
-        o = loadWithin(mutantPath.string(), seed.filename().string() + ": " + m.description, std::chrono::seconds(20), load);
+        o = loadWithin(mutantPath.string(), seed.filename().string() + ": " + m.description, std::chrono::seconds(20),
+                       load);
       } catch (const std::exception& e) {
         FAIL_CHECK("threw " << e.what());
       }
@@ -196,7 +210,8 @@ FuzzCount fuzzSeeds(const std::vector<fs::path>& seedFiles, const fs::path& muta
       count.rejected += o == Outcome::Rejected ? 1 : 0;
     }
   }
-  UNSCOPED_INFO(count.total << " mutants, " << count.rejected << " rejected, slowest " << slowest.count() / 1e6 << " ms");
+  UNSCOPED_INFO(count.total << " mutants, " << count.rejected << " rejected, slowest " << slowest.count() / 1e6
+                            << " ms");
   return count;
 }
 
@@ -225,7 +240,8 @@ TEST_CASE("seeded mutations of every shipped material load or give coded diagnos
   CHECK(count.rejected > count.total / 2);
 }
 
-TEST_CASE("seeded mutations of every shipped scene load and plan or give coded diagnostics, never crash or hang", "[fuzz][scene]") {
+TEST_CASE("seeded mutations of every shipped scene load and plan or give coded diagnostics, never crash or hang",
+          "[fuzz][scene]") {
   // The scenes name materials as ../../materials/<file>: mirror that layout.
   fs::path scratch = scratchDir("scenes");
   fs::copy(test::sourceDir() / "materials", scratch / "materials", fs::copy_options::recursive);

@@ -71,10 +71,11 @@ TEST_CASE("pbrMetallicRoughness with textures: constants, texture inputs, surfac
   CHECK(featureNames(wood).empty());
   std::vector<std::pair<std::string, std::string>> bricks;
   for (const auto& [role, id] : wood.bricks) bricks.emplace_back(role.value, id.value);
-  CHECK(bricks == std::vector<std::pair<std::string, std::string>>{
-                      {"roughness", "roughness_clamped"}, {"diffuse", "diffuse_lambert"},
-                      {"specular_d", "d_ggx"}, {"specular_v", "v_smith_ggx_correlated"},
-                      {"fresnel", "f_schlick"}});
+  CHECK(bricks == std::vector<std::pair<std::string, std::string>>{{"roughness", "roughness_clamped"},
+                                                                   {"diffuse", "diffuse_lambert"},
+                                                                   {"specular_d", "d_ggx"},
+                                                                   {"specular_v", "v_smith_ggx_correlated"},
+                                                                   {"fresnel", "f_schlick"}});
   requireConstant(wood, "baseColor", {0.9, 0.85, 0.8});
   requireConstant(wood, "metallic", {0.0});
   requireConstant(wood, "roughness", {0.9});
@@ -104,7 +105,8 @@ TEST_CASE("pbrMetallicRoughness with textures: constants, texture inputs, surfac
   CHECK_FALSE(ms[0].textures[1].srgb);
   CHECK(ms[0].textures[3].param.empty());  // normalTexture
   CHECK(ms[0].textures[3].scale == 0.5);
-  CHECK_THAT(wood.description, Contains("baseColorTexture (rgb of the texel): texture 0, image 0 'wood_albedo.png', sRGB, TEXCOORD_0"));
+  CHECK_THAT(wood.description,
+             Contains("baseColorTexture (rgb of the texel): texture 0, image 0 'wood_albedo.png', sRGB, TEXCOORD_0"));
   CHECK(wood.warnings.empty());
 
   const MaterialSource& lamp = ms[1].source;
@@ -232,7 +234,8 @@ TEST_CASE("unsupported extensions: a warning when used, an error when required",
   Diagnostic d = test::theOne(ds, "E-GLTF-REQUIRED-EXTENSION");
   CHECK(d.where.file == required);
   CHECK_THAT(d.message, Contains("'KHR_materials_transmission'"));
-  test::requireAt(d, test::positionOf(test::readFile(required), "\"KHR_materials_transmission\"", "extensionsRequired"));
+  test::requireAt(d,
+                  test::positionOf(test::readFile(required), "\"KHR_materials_transmission\"", "extensionsRequired"));
   CHECK(ds.size() == 1);  // no second (warning) report of the same extension
 }
 
@@ -244,9 +247,9 @@ TEST_CASE("material names become unique identifiers", "[gltf]") {
   for (auto& m : parseGltf(text, "dir/My Scene.gltf")) ms.push_back(m.source);
   std::vector<std::string> names;
   for (const auto& m : ms) names.push_back(m.name.value);
-  CHECK(names == std::vector<std::string>{"Material_001", "Material_001_2", "Material_001_3",
-                                          "My_Scene_material3", "material_1st_coat", "material_gl_Paint",
-                                          "Mat_riau_blau", "My_Scene_material7"});
+  CHECK(names == std::vector<std::string>{"Material_001", "Material_001_2", "Material_001_3", "My_Scene_material3",
+                                          "material_1st_coat", "material_gl_Paint", "Mat_riau_blau",
+                                          "My_Scene_material7"});
 }
 
 TEST_CASE("texture-dependent warnings and combinations", "[gltf]") {

@@ -20,7 +20,8 @@ std::filesystem::path corpus() { return test::sourceDir() / "tests/data/gltf_con
 std::vector<std::string> corpusFiles() {
   std::vector<std::string> files;
   for (const auto& e : std::filesystem::directory_iterator(corpus()))
-    if (e.path().extension() == ".gltf" || e.path().extension() == ".glb") files.push_back(e.path().filename().string());
+    if (e.path().extension() == ".gltf" || e.path().extension() == ".glb")
+      files.push_back(e.path().filename().string());
   std::sort(files.begin(), files.end());
   return files;
 }
@@ -88,7 +89,8 @@ TEST_CASE("a parameter block the optimizer removed is no internal error", "[gltf
   REQUIRE(lit.cli.exitCode == 0);
   for (const auto& p : lit.manifest.at("permutations")) {
     bool block = false;
-    for (const auto& u : p.at("reflection").value("uniform_buffers", json::array())) block |= u.value("binding", -1) == 2;
+    for (const auto& u : p.at("reflection").value("uniform_buffers", json::array()))
+      block |= u.value("binding", -1) == 2;
     CHECK(block);
   }
 }
@@ -168,7 +170,8 @@ TEST_CASE("scene JSON naming a glTF without lights: the same default, overridabl
   for (const Case& c : {Case{"", {"ibl_lut"}, true}, Case{R"(, "environment": ["sh"])", {"sh"}, false},
                         Case{R"(, "lights": [{"type": "dir"}])", {"none"}, false}}) {
     std::filesystem::path out = dir / "pkg";
-    test::CliResult r = test::runCli("compile --scene '" + scene("s.json", c.extra) + "' -o '" + out.string() + "' --no-cache");
+    test::CliResult r =
+        test::runCli("compile --scene '" + scene("s.json", c.extra) + "' -o '" + out.string() + "' --no-cache");
     INFO(c.extra << ":\n" << r.output);
     REQUIRE(r.exitCode == 0);
     CHECK(environmentsOf(manifestOf(out)) == c.environments);
@@ -181,8 +184,8 @@ TEST_CASE("scene JSON naming a glTF without lights: the same default, overridabl
 TEST_CASE("eval evaluates a glTF material from the corpus", "[gltf][gltf-conformance][vulkan]") {
   std::filesystem::path csv = test::freshTempDir("gltf_conformance", "eval") / "below_horizon.csv";
   std::ofstream(csv) << "n.x,n.y,n.z,v.x,v.y,v.z,l.x,l.y,l.z\n0,0,1,0,0,1,0,0.6,-0.8\n";
-  test::CliResult r = test::runCli("eval --material '" + (corpus() / "emissive_strength.gltf").string() + "' --input '" +
-                                   csv.string() + "' --json");
+  test::CliResult r = test::runCli("eval --material '" + (corpus() / "emissive_strength.gltf").string() +
+                                   "' --input '" + csv.string() + "' --json");
   INFO(r.output);
   REQUIRE(r.exitCode == 0);
   json out = json::parse(r.output.substr(r.output.find('{')));

@@ -20,7 +20,8 @@ namespace spec = mb::test::gltfspec;
 namespace {
 
 MaterialDesc corpusMaterial(const std::string& file) {
-  auto ms = importGltfMaterials((test::sourceDir() / "tests/data/gltf_conformance" / file).string(), test::shippedLibrary());
+  auto ms =
+      importGltfMaterials((test::sourceDir() / "tests/data/gltf_conformance" / file).string(), test::shippedLibrary());
   REQUIRE(ms.size() == 1);
   return ms.front();
 }
@@ -58,16 +59,24 @@ struct Evaluated {
 
 // Runs the default permutation (one directional light of unit illuminance, no environment).
 // `extra`: values of further probe columns (texture inputs), the same for every row.
-Evaluated evaluate(harness::VulkanHarness& gpu, const MaterialDesc& m, const std::vector<Row>& rs,
-                   double tangentAngle, const std::map<std::string, double>& extra = {}) {
+Evaluated evaluate(harness::VulkanHarness& gpu, const MaterialDesc& m, const std::vector<Row>& rs, double tangentAngle,
+                   const std::map<std::string, double>& extra = {}) {
   Permutation perm = permutationsFor({m}).front();
   perm.material = &m;
   ProbeProgram program = buildPermutationProbe(test::shippedLibrary(), perm);
   std::vector<float> inputs;
   for (const Row& r : rs) {
-    std::map<std::string, double> value{{"n.x", 0}, {"n.y", 0}, {"n.z", 1}, {"v.x", r.v.x}, {"v.y", r.v.y},
-                                        {"v.z", r.v.z}, {"l.x", r.l.x}, {"l.y", r.l.y}, {"l.z", r.l.z},
-                                        {"ngTilt", 0}, {"tangentAngle", tangentAngle}};
+    std::map<std::string, double> value{{"n.x", 0},
+                                        {"n.y", 0},
+                                        {"n.z", 1},
+                                        {"v.x", r.v.x},
+                                        {"v.y", r.v.y},
+                                        {"v.z", r.v.z},
+                                        {"l.x", r.l.x},
+                                        {"l.y", r.l.y},
+                                        {"l.z", r.l.z},
+                                        {"ngTilt", 0},
+                                        {"tangentAngle", tangentAngle}};
     value.insert(extra.begin(), extra.end());
     for (const auto& c : program.shader.layout.columns()) {
       INFO("probe column " << c);
@@ -120,9 +129,8 @@ struct CoatedMetal {
     double Fc = spec::schlick(0.04, NcV);
     double coatLobe = coat * Fc * spec::dGgx(NcH, coatAlpha) * spec::vGgx(NcL, NcV, coatAlpha) * NcL;
     double D = spec::dGgx(spec::dot(n, h), alpha), V = spec::vGgx(spec::dot(n, r.l), spec::dot(n, r.v), alpha);
-    return perChannel(baseColor, [&](double c) {
-      return spec::metalRadiance(c, n, r.v, r.l, D, V) * (1 - coat * Fc) + coatLobe;
-    });
+    return perChannel(baseColor,
+                      [&](double c) { return spec::metalRadiance(c, n, r.v, r.l, D, V) * (1 - coat * Fc) + coatLobe; });
   }
 };
 
@@ -170,10 +178,11 @@ TEST_CASE("glTF clear coat shades as KHR_materials_clearcoat defines", "[gltf][g
   CHECK(a.reference <= 1.0);
 
   // Each seed convention the import replaced breaks the agreement on its own.
-  for (const auto& [role, seed] : std::map<std::string, std::string>{{"f0_clearcoat", "f0_clearcoat_fit"},
-                                                                     {"clearcoat_base_roughness", "coat_base_roughness_max"},
-                                                                     {"clearcoat_v", "v_kelemen"},
-                                                                     {"clearcoat_fresnel", "f_schlick"}}) {
+  for (const auto& [role, seed] :
+       std::map<std::string, std::string>{{"f0_clearcoat", "f0_clearcoat_fit"},
+                                          {"clearcoat_base_roughness", "coat_base_roughness_max"},
+                                          {"clearcoat_v", "v_kelemen"},
+                                          {"clearcoat_fresnel", "f_schlick"}}) {
     MaterialDesc seeded = m;
     INFO(role << " = " << seeded.bricks.at(role) << " replaced by the seed's " << seed);
     seeded.bricks[role] = seed;
@@ -191,22 +200,24 @@ TEST_CASE("glTF clear coat shades as KHR_materials_clearcoat defines", "[gltf][g
 // computed them (fp32): the spec side takes the factors as fp32 numbers too, and texel and
 // scale are dyadic, so the decoded normal is exact; the reference is then held to 1e-9 as in
 // the other checks.
-TEST_CASE("glTF clearcoatNormalTexture tilts the coat as KHR_materials_clearcoat defines", "[gltf][gltf-conformance][vulkan]") {
+TEST_CASE("glTF clearcoatNormalTexture tilts the coat as KHR_materials_clearcoat defines",
+          "[gltf][gltf-conformance][vulkan]") {
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   const MaterialDesc m = corpusMaterial("clearcoat_normal.gltf");
   const double coat = f32(0.8), coatAlpha = 0.25 * 0.25, alpha = f32(0.3) * f32(0.3), scale = 0.75;
   const spec::V3 baseColor = f32(spec::V3{0.95, 0.64, 0.54}), n{0, 0, 1}, texel{0.625, 0.40625, 0.96875};
   const double tangentAngle = f32(0.7);  // the probe column is fp32
   const spec::V3 t{std::cos(tangentAngle), std::sin(tangentAngle), 0}, b = spec::cross(n, t);
-  const spec::V3 nc = spec::normalize(t * ((2 * texel.x - 1) * scale) + b * ((2 * texel.y - 1) * scale) +
-                                      n * (2 * texel.z - 1));
+  const spec::V3 nc =
+      spec::normalize(t * ((2 * texel.x - 1) * scale) + b * ((2 * texel.y - 1) * scale) + n * (2 * texel.z - 1));
   SpecFn expected = CoatedMetal{baseColor, n, nc, coat, coatAlpha, alpha};
   std::vector<Row> rs;
   for (const Row& r : rows())
     if (spec::dot(nc, spec::normalize(r.v)) >= 0.05 && spec::dot(nc, spec::normalize(r.l)) >= 0.05) rs.push_back(r);
   REQUIRE(rs.size() >= 150);
-  const std::map<std::string, double> texelColumns{
-      {"clearcoatNormalTexture.x", texel.x}, {"clearcoatNormalTexture.y", texel.y}, {"clearcoatNormalTexture.z", texel.z}};
+  const std::map<std::string, double> texelColumns{{"clearcoatNormalTexture.x", texel.x},
+                                                   {"clearcoatNormalTexture.y", texel.y},
+                                                   {"clearcoatNormalTexture.z", texel.z}};
   Agreement a = agreement(evaluate(gpu, m, rs, tangentAngle, texelColumns), rs, expected);
   INFO(rs.size() << " rows; worst |gpu - spec| / tolerance " << a.gpu << ", |reference - spec| / 1e-9 rel "
                  << a.reference);

@@ -18,7 +18,8 @@ namespace {
 std::vector<MaterialDesc> exampleGltfMaterials() {
   std::vector<MaterialDesc> out;
   for (const char* file : {"textured_props.gltf", "showroom.glb", "unsupported_used.gltf"})
-    for (auto& m : importGltfMaterials((test::sourceDir() / "examples" / "gltf" / file).string(), test::shippedLibrary()))
+    for (auto& m :
+         importGltfMaterials((test::sourceDir() / "examples" / "gltf" / file).string(), test::shippedLibrary()))
       out.push_back(std::move(m));
   return out;
 }

@@ -73,7 +73,8 @@ TEST_CASE("ground truths are registered only for shipped bricks, and agree with 
     for (ValueType p : r->params) inCount += p == ValueType::Geometry ? 9 : componentCount(p);
     std::vector<double> in(inCount);
     for (int trial = 0; trial < 200; ++trial) {
-      for (size_t k = 0; k < in.size(); ++k) in[k] = 0.05 + 0.9 * std::fmod(0.6180339887 * (trial * 31 + k * 7 + 1), 1.0);
+      for (size_t k = 0; k < in.size(); ++k)
+        in[k] = 0.05 + 0.9 * std::fmod(0.6180339887 * (trial * 31 + k * 7 + 1), 1.0);
       double a[3] = {0, 0, 0}, bOut[3] = {0, 0, 0};
       r->eval(in.data(), a);
       t->eval(in.data(), bOut);

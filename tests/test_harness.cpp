@@ -52,13 +52,10 @@ std::vector<float> makeInputs(uint64_t count) {
   return in;
 }
 
-float expectedFirst(const std::vector<float>& in, uint64_t i) {
-  return in[i * 3] * in[i * 3 + 1] + in[i * 3 + 2];
-}
+float expectedFirst(const std::vector<float>& in, uint64_t i) { return in[i * 3] * in[i * 3 + 1] + in[i * 3 + 2]; }
 
 // Counts records whose first output differs from the CPU (exact comparison).
-uint64_t countMismatches(const std::vector<float>& in, const std::vector<float>& out,
-                         uint64_t count) {
+uint64_t countMismatches(const std::vector<float>& in, const std::vector<float>& out, uint64_t count) {
   uint64_t bad = 0;
   for (uint64_t i = 0; i < count; ++i)
     if (out[i * kOutStride] != expectedFirst(in, i)) ++bad;
@@ -292,13 +289,12 @@ TEST_CASE("a kernel from another harness is rejected", "[harness][vulkan]") {
 }
 
 // The chunk planner is pure arithmetic: check its rules with limits no real device has.
-TEST_CASE("chunk plan respects dispatch and range and alignment and allocation limits",
-          "[harness]") {
+TEST_CASE("chunk plan respects dispatch and range and alignment and allocation limits", "[harness]") {
   ChunkLimits limits;
-  limits.maxGroupsX = 100;          // 6400 records per dispatch
-  limits.maxRangeBytes = 1 << 16;   // 64 KiB per binding
+  limits.maxGroupsX = 100;         // 6400 records per dispatch
+  limits.maxRangeBytes = 1 << 16;  // 64 KiB per binding
   limits.offsetAlignment = 256;
-  limits.maxSegmentBytes = 1 << 18;  // 256 KiB per buffer
+  limits.maxSegmentBytes = 1 << 18;            // 256 KiB per buffer
   const uint32_t inStride = 3, outStride = 5;  // 12 and 20 bytes per record
   const uint64_t count = 100001;
 

@@ -219,30 +219,29 @@ TEST_CASE("library: slot name differs from its folder", "[library]") {
 }
 
 TEST_CASE("library: model names an unknown slot", "[library]") {
-  FakeLibrary lib({{"models/standard.json",
-                    edited("models/standard.json", "\"slot\": \"fresnel\"", "\"slot\": \"fresnl\"")}});
+  FakeLibrary lib(
+      {{"models/standard.json", edited("models/standard.json", "\"slot\": \"fresnel\"", "\"slot\": \"fresnl\"")}});
   auto d = only(errorsOf(lib), "E-UNKNOWN-SLOT");
   requireAt(d, lib.path("models/standard.json"), 10, 33);
   CHECK(d.suggestion == "did you mean 'fresnel'?");
 }
 
 TEST_CASE("library: model input default outside its range", "[library]") {
-  FakeLibrary lib({{"models/standard.json",
-                    edited("models/standard.json", "\"default\": 0.5", "\"default\": 1.5")}});
+  FakeLibrary lib({{"models/standard.json", edited("models/standard.json", "\"default\": 0.5", "\"default\": 1.5")}});
   auto d = only(errorsOf(lib), "E-PARAM-RANGE");
   requireAt(d, lib.path("models/standard.json"), 15, 55);
 }
 
 TEST_CASE("library: model role with a default of another slot", "[library]") {
-  FakeLibrary lib({{"models/standard.json",
-                    edited("models/standard.json", "\"slot\": \"fresnel\",", "\"slot\": \"fresnel\", \"default\": \"d_ggx\",")}});
+  FakeLibrary lib({{"models/standard.json", edited("models/standard.json", "\"slot\": \"fresnel\",",
+                                                   "\"slot\": \"fresnel\", \"default\": \"d_ggx\",")}});
   auto d = only(errorsOf(lib), "E-UNKNOWN-BRICK");
   CHECK_THAT(d.message, Contains("'d_ggx' is not a brick of slot 'fresnel'"));
 }
 
 TEST_CASE("library: model role names an unknown light type", "[library]") {
-  FakeLibrary lib({{"models/standard.json", edited("models/standard.json", "\"lights\": [\"dir\"]",
-                                                   "\"lights\": [\"dir\", \"spto\"]")}});
+  FakeLibrary lib({{"models/standard.json",
+                    edited("models/standard.json", "\"lights\": [\"dir\"]", "\"lights\": [\"dir\", \"spto\"]")}});
   auto d = only(errorsOf(lib), "E-UNKNOWN-NAME");
   CHECK_THAT(d.message, Contains("unknown light type 'spto'"));
   CHECK(d.suggestion == "did you mean 'spot'?");
@@ -250,15 +249,14 @@ TEST_CASE("library: model role names an unknown light type", "[library]") {
 
 TEST_CASE("library: domain must cover exactly the non-Geometry params", "[library]") {
   SECTION("a key that is not a parameter") {
-    FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "[0.0, 1.0]}",
-                                                  "[0.0, 1.0], \"f90\": [0.0, 1.0]}")}});
+    FakeLibrary lib(
+        {{"fresnel/slot.json", edited("fresnel/slot.json", "[0.0, 1.0]}", "[0.0, 1.0], \"f90\": [0.0, 1.0]}")}});
     auto d = only(errorsOf(lib), "E-UNKNOWN-PARAM");
     requireAt(d, lib.path("fresnel/slot.json"), 14, 36);
     CHECK_THAT(d.message, Contains("'f90'"));
   }
   SECTION("a parameter without a range") {
-    FakeLibrary lib({{"fresnel/slot.json",
-                      edited("fresnel/slot.json", "{\"f0\": [0.0, 1.0]}", "{}")}});
+    FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "{\"f0\": [0.0, 1.0]}", "{}")}});
     auto d = only(errorsOf(lib), "E-MISSING-DOMAIN");
     requireAt(d, lib.path("fresnel/slot.json"), 14, 17);
     CHECK_THAT(d.message, Contains("parameter 'f0'"));
@@ -273,8 +271,7 @@ TEST_CASE("library: GLSL file missing or not defining the function", "[library]"
     CHECK_THAT(d.message, Contains("'f_schlick.glsl'"));
   }
   SECTION("function not defined") {
-    FakeLibrary lib(
-        {{"fresnel/f_schlick.glsl", std::string("vec3 mb_f_schlick_x(vec3 f0) { return f0; }\n")}});
+    FakeLibrary lib({{"fresnel/f_schlick.glsl", std::string("vec3 mb_f_schlick_x(vec3 f0) { return f0; }\n")}});
     auto d = only(errorsOf(lib), "E-MISSING-FUNCTION");
     requireAt(d, lib.path("fresnel/slot.json"), 10, 19);
   }
@@ -304,15 +301,13 @@ TEST_CASE("library: bad type, schema, missing folder, bad values and paths", "[l
     requireAt(d, lib.path("fresnel/slot.json"), 15, 28);
   }
   SECTION("geometry range beyond a cosine") {
-    FakeLibrary lib({{"specular_d/slot.json",
-                      edited("specular_d/slot.json", "[0.01, 1.0]", "[-1.5, 1.0]")}});
+    FakeLibrary lib({{"specular_d/slot.json", edited("specular_d/slot.json", "[0.01, 1.0]", "[-1.5, 1.0]")}});
     auto d = only(errorsOf(lib), "E-PARAM-RANGE");
     requireAt(d, lib.path("specular_d/slot.json"), 15, 27);
     CHECK_THAT(d.message, Contains("'bricks[0].geometry.NoV' must lie inside [-1, 1]"));
   }
   SECTION("path outside the library") {
-    FakeLibrary lib({{"fresnel/slot.json",
-                      edited("fresnel/slot.json", "\"f_schlick.glsl\"", "\"../../x.glsl\"")}});
+    FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "\"f_schlick.glsl\"", "\"../../x.glsl\"")}});
     auto d = only(errorsOf(lib), "E-INVALID-PATH");
     requireAt(d, lib.path("fresnel/slot.json"), 11, 15);
   }

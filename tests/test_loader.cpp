@@ -73,8 +73,7 @@ TEST_CASE("valid material parses to the expected MaterialDesc", "[loader]") {
   CHECK(m.description == "polished gold");
   CHECK(m.model == "standard");
   CHECK(m.sourceFile == "m.json");
-  CHECK(m.bricks == std::map<std::string, std::string>{{"specular_d", "d_beckmann"},
-                                                       {"fresnel", "f_schlick"}});
+  CHECK(m.bricks == std::map<std::string, std::string>{{"specular_d", "d_beckmann"}, {"fresnel", "f_schlick"}});
   CHECK(m.brickLocations.at("specular_d").line == 6);
   CHECK(m.brickLocations.at("specular_d").column == 19);
   CHECK(m.brickLocations.at("fresnel").line == 7);
@@ -235,8 +234,7 @@ TEST_CASE("E-BRICK-WRONG-SLOT: a brick of another slot", "[loader]") {
                                "brick: one of 'd_ggx', 'd_beckmann'"));
 }
 
-TEST_CASE("E-PARAM-TYPE: declared type or default shape differs from the model input",
-          "[loader]") {
+TEST_CASE("E-PARAM-TYPE: declared type or default shape differs from the model input", "[loader]") {
   auto ds = errorsOf(R"({
   "name": "gold",
   "model": "standard",
@@ -253,15 +251,13 @@ TEST_CASE("E-PARAM-TYPE: declared type or default shape differs from the model i
   CHECK_THAT(ds[0].message, Equals("parameter 'roughness' is declared 'vec3' but model input "
                                    "'roughness' is a float"));
   requireAt(ds[1], 7, 46);
-  CHECK_THAT(ds[1].message,
-             Equals("'parameters.metallic.default' must be a float (a number), found string"));
+  CHECK_THAT(ds[1].message, Equals("'parameters.metallic.default' must be a float (a number), found string"));
   requireAt(ds[2], 8, 46);
   CHECK_THAT(ds[2].message, Equals("'parameters.baseColor.default' must be a vec3 (an array of 3 "
                                    "numbers), found an array of 2"));
 }
 
-TEST_CASE("E-PARAM-RANGE: default outside its range, range outside the model's, lo > hi",
-          "[loader]") {
+TEST_CASE("E-PARAM-RANGE: default outside its range, range outside the model's, lo > hi", "[loader]") {
   auto ds = errorsOf(R"({
   "name": "gold",
   "model": "standard",
@@ -382,8 +378,10 @@ TEST_CASE("a material using each slot's first brick of the shipped library loads
     bool complete = true;
     for (const auto& role : model.coreRoles()) {
       auto ids = lib.bricksOfSlot(model.findRole(role)->slot);
-      if (ids.empty()) complete = false;  // slot still being filled in
-      else j["bricks"][role] = ids.front();
+      if (ids.empty())
+        complete = false;  // slot still being filled in
+      else
+        j["bricks"][role] = ids.front();
     }
     if (!complete) continue;
     INFO(model.name);
@@ -430,7 +428,8 @@ TEST_CASE("features enable their roles and inputs; roles with a default get it",
 
   // Without the choice, the feature role takes the model's default.
   auto d = mb::parseMaterialJson(R"({"name": "c", "model": "standard", "features": ["clearcoat"],
-    "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}})", "m.json", mb::test::featureLibrary());
+    "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}})",
+                                 "m.json", mb::test::featureLibrary());
   CHECK(d.bricks.at("clearcoat_d") == "d_ggx");
   CHECK(d.param("clearCoat")->constant);
   CHECK(d.param("clearCoat")->value == std::vector<double>{1.0});
@@ -438,8 +437,8 @@ TEST_CASE("features enable their roles and inputs; roles with a default get it",
 
 TEST_CASE("features are listed in the model's order, whatever the file's", "[loader]") {
   auto m = mb::parseMaterialJson(R"({"name": "c", "model": "standard", "features": ["sheen", "clearcoat"],
-    "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick", "sheen_d": "d_ggx"}})", "m.json",
-                                 mb::test::featureLibrary());
+    "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick", "sheen_d": "d_ggx"}})",
+                                 "m.json", mb::test::featureLibrary());
   CHECK(m.features == std::vector<std::string>{"clearcoat", "sheen"});
 }
 
@@ -502,7 +501,8 @@ TEST_CASE("user parameters need surface code, a type, and a valid name", "[loade
     "roughness": {"type": "float", "default": 0.3},
     "gain": {"type": "float", "default": 2.0, "range": [0.0, 4.0], "constant": true}
   }
-})", "m.json", mb::test::featureLibrary());
+})",
+                                   "m.json", mb::test::featureLibrary());
     REQUIRE(m.params.size() == 5);
     CHECK(m.params[2].name == "roughness");
     CHECK_FALSE(m.params[2].user);
@@ -519,7 +519,8 @@ TEST_CASE("user parameters need surface code, a type, and a valid name", "[loade
     CHECK(m.surface.where.file == "m.json");
     CHECK(m.surface.where.line == 5);
     CHECK(m.surface.where.column == 24);
-    CHECK(m.surface.glsl == "void surface(inout MaterialInputs m, MaterialParams p) {\n  m.baseColor = p.tint * p.gain;\n}\n");
+    CHECK(m.surface.glsl ==
+          "void surface(inout MaterialInputs m, MaterialParams p) {\n  m.baseColor = p.tint * p.gain;\n}\n");
   }
   SECTION("without surface code a non-input name is unknown") {
     auto ds = featureErrorsOf(R"({
@@ -571,7 +572,8 @@ TEST_CASE("surface: a file inside the project, or errors naming what is wrong", 
   dir.write("shaders/velvet.surface.glsl", glsl);
   auto material = [&](const std::string& surface) {
     return R"({"name": "v", "model": "standard", "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"},
- "surface": )" + surface + "}";
+ "surface": )" +
+           surface + "}";
   };
   SECTION("read relative to the material, located at its own first line") {
     auto path = dir.write("v.json", material(R"({"file": "shaders/velvet.surface.glsl"})"));
@@ -582,7 +584,8 @@ TEST_CASE("surface: a file inside the project, or errors naming what is wrong", 
   }
   SECTION("E-PATH-ESCAPE: .. out of the project, or an absolute path") {
     dir.write("sub/v.json", material(R"({"file": "../shaders/velvet.surface.glsl"})"));
-    auto ds = mb::test::diagnosticsOf([&] { mb::loadMaterialJson(dir.path("sub/v.json"), mb::test::featureLibrary()); });
+    auto ds =
+        mb::test::diagnosticsOf([&] { mb::loadMaterialJson(dir.path("sub/v.json"), mb::test::featureLibrary()); });
     auto d = only(ds, "E-PATH-ESCAPE");
     CHECK(d.where.file == dir.path("sub/v.json"));
     CHECK(d.where.line == 2);
@@ -613,8 +616,9 @@ TEST_CASE("loadMaterialFile picks the form by extension", "[loader]") {
   mb::test::ScratchDir dir("load_file");
   auto json = dir.write("a.json", R"({"name": "a", "model": "standard",
  "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}})");
-  auto mat = dir.write("b.MAT", "#define MATERIAL b\n#define MODEL standard\n#define BRICK_specular_d d_ggx\n"
-                                "#define BRICK_fresnel f_schlick\n");
+  auto mat = dir.write("b.MAT",
+                       "#define MATERIAL b\n#define MODEL standard\n#define BRICK_specular_d d_ggx\n"
+                       "#define BRICK_fresnel f_schlick\n");
   auto a = mb::loadMaterialFile(json, mb::test::featureLibrary());
   REQUIRE(a.size() == 1);
   CHECK(a[0].form == "json");
@@ -622,7 +626,8 @@ TEST_CASE("loadMaterialFile picks the form by extension", "[loader]") {
   REQUIRE(b.size() == 1);
   CHECK(b[0].form == "macro");
   CHECK(b[0].name == "b");
-  auto ds = mb::test::diagnosticsOf([&] { mb::loadMaterialFile(dir.write("c.yaml", "x"), mb::test::featureLibrary()); });
+  auto ds =
+      mb::test::diagnosticsOf([&] { mb::loadMaterialFile(dir.write("c.yaml", "x"), mb::test::featureLibrary()); });
   CHECK_THAT(only(ds, "E-UNSUPPORTED-FORMAT").message, Contains("'.yaml': expected .json (material JSON), .mat"));
   ds = mb::test::diagnosticsOf([&] { mb::loadMaterialFile(dir.path("absent.mat"), mb::test::featureLibrary()); });
   only(ds, "E-FILE-NOT-FOUND");
@@ -632,7 +637,8 @@ TEST_CASE("loadMaterialFile picks the form by extension", "[loader]") {
 }
 
 TEST_CASE("hostile JSON never crashes or hangs the loader: one clean diagnostic", "[loader]") {
-  const std::string valid = R"({"name": "a", "model": "standard", "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}})";
+  const std::string valid =
+      R"({"name": "a", "model": "standard", "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}})";
   struct Case {
     const char* what;
     std::string text;
@@ -641,9 +647,17 @@ TEST_CASE("hostile JSON never crashes or hangs the loader: one clean diagnostic"
   std::vector<Case> cases = {
       {"empty", "", "E-JSON-SYNTAX"},
       {"truncated", valid.substr(0, valid.size() / 2), "E-JSON-SYNTAX"},
-      {"binary", std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10) + "\xff\xfe", "E-JSON-SYNTAX"},
+      {"binary",
+       std::string("\x7f"
+                   "ELF\x02\x01\x01\0\0\0",
+                   10) +
+           "\xff\xfe",
+       "E-JSON-SYNTAX"},
       {"deeply nested", std::string(200000, '[') + std::string(200000, ']'), "E-JSON-SYNTAX"},
-      {"huge name", R"({"name": ")" + std::string(4 << 20, 'x') + R"(!", "model": "standard", "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}})", "E-INVALID-NAME"},
+      {"huge name",
+       R"({"name": ")" + std::string(4 << 20, 'x') +
+           R"(!", "model": "standard", "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}})",
+       "E-INVALID-NAME"},
       {"not an object", "[1, 2, 3]", "E-FIELD-TYPE"},
   };
   for (const auto& c : cases) {

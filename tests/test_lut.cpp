@@ -80,7 +80,9 @@ TEST_CASE("GPU DFG LUT equals the CPU evaluation of the identical sum within the
   CHECK(checkLut(broken, 0, false).failures == 1);
 }
 
-TEST_CASE("the quadrature DFG LUT is within 1e-4 (channels 0, 1) and 1e-3 relative (cloth) of the exact integrals at every texel", "[lut][vulkan]") {
+TEST_CASE(
+    "the quadrature DFG LUT is within 1e-4 (channels 0, 1) and 1e-3 relative (cloth) of the exact integrals at every texel",
+    "[lut][vulkan]") {
   // Every texel of 16^2 and 64^2 tables, the grazing column and the smoothest rows included;
   // larger tables are measured by bench/bench_lut.cpp (docs/lut.md).
   for (uint32_t size : {16u, 64u}) {
@@ -114,7 +116,8 @@ TEST_CASE("the quadrature kernel meets the bounds at the extreme texels of 1024^
   auto kernel = gpu.createKernel(compileComputeGlsl(shader.glsl, shader.fileName).spirv);
   std::vector<float> records;
   for (uint32_t size : {1024u, 4096u})
-    for (auto [i, j] : {std::pair{0u, 0u}, {0u, 1u}, {1u, 0u}, {0u, size / 2}, {size / 2, 0u}, {0u, size - 1}, {size - 1, 0u}}) {
+    for (auto [i, j] :
+         {std::pair{0u, 0u}, {0u, 1u}, {1u, 0u}, {0u, size / 2}, {size / 2, 0u}, {0u, size - 1}, {size - 1, 0u}}) {
       records.push_back(static_cast<float>(texelCentre(i, size)));
       records.push_back(static_cast<float>(texelCentre(j, size)));
     }
@@ -124,8 +127,8 @@ TEST_CASE("the quadrature kernel meets the bounds at the extreme texels of 1024^
   for (uint32_t k = 0; k < count; ++k) {
     const auto exact = quadrature(records[2 * k], records[2 * k + 1]);
     for (uint32_t c = 0; c < kChannels; ++c) {
-      const double g = run.outputs[3 * k + c], bound = c == kChannelCloth ? kClothRelBound * std::abs(exact[c]) + kClothAbsFloor
-                                                                           : kExactAbsBound;
+      const double g = run.outputs[3 * k + c],
+                   bound = c == kChannelCloth ? kClothRelBound * std::abs(exact[c]) + kClothAbsFloor : kExactAbsBound;
       INFO("n.v " << records[2 * k] << " roughness " << records[2 * k + 1] << " channel " << c << ": GPU " << g
                   << " exact " << exact[c]);
       CHECK(std::abs(g - exact[c]) <= bound);
@@ -157,7 +160,8 @@ TEST_CASE("the CPU same sum converges to the quadrature of the exact integrals",
     TexelSum s = sameSum.evaluate(NoV, rough, 4096);
     auto q = quadrature(NoV, rough);
     for (uint32_t c = 0; c < kChannels; ++c) {
-      INFO("NoV " << NoV << " roughness " << rough << " channel " << c << ": sum " << s.value[c] << " quadrature " << q[c]);
+      INFO("NoV " << NoV << " roughness " << rough << " channel " << c << ": sum " << s.value[c] << " quadrature "
+                  << q[c]);
       CHECK(std::abs(s.value[c] - q[c]) < 2e-3);
     }
   }
@@ -167,10 +171,10 @@ TEST_CASE("fp16 conversion rounds to nearest even", "[lut]") {
   CHECK(floatToHalf(1.0f) == 0x3c00);
   CHECK(floatToHalf(-2.0f) == 0xc000);
   CHECK(floatToHalf(65504.0f) == 0x7bff);
-  CHECK(floatToHalf(65520.0f) == 0x7c00);                  // rounds up to inf
-  CHECK(floatToHalf(std::ldexp(1.0f, -24)) == 0x0001);      // smallest subnormal
-  CHECK(floatToHalf(std::ldexp(1.0f, -25)) == 0x0000);      // tie to even: 0
-  CHECK(floatToHalf(1.0f + std::ldexp(1.0f, -11)) == 0x3c00);  // tie to even: down
+  CHECK(floatToHalf(65520.0f) == 0x7c00);                          // rounds up to inf
+  CHECK(floatToHalf(std::ldexp(1.0f, -24)) == 0x0001);             // smallest subnormal
+  CHECK(floatToHalf(std::ldexp(1.0f, -25)) == 0x0000);             // tie to even: 0
+  CHECK(floatToHalf(1.0f + std::ldexp(1.0f, -11)) == 0x3c00);      // tie to even: down
   CHECK(floatToHalf(1.0f + 3 * std::ldexp(1.0f, -11)) == 0x3c02);  // tie to even: up
   CHECK(floatToHalf(0.1f) == 0x2e66);
   for (uint32_t h = 0; h < 0x7c00; ++h) REQUIRE(floatToHalf(halfToFloat(static_cast<uint16_t>(h))) == h);
@@ -200,7 +204,7 @@ TEST_CASE("KTX2 LUT parses back: identifier, header, index, DFD, key/values, tex
     const char id[12] = {'\xAB', 'K', 'T', 'X', ' ', '2', '0', '\xBB', '\r', '\n', '\x1A', '\n'};
     REQUIRE(std::memcmp(f.data(), id, 12) == 0);
     CHECK(le32(f, 12) == (p == Precision::Fp32 ? 109u : 97u));  // VK_FORMAT_R32G32B32A32/R16G16B16A16_SFLOAT
-    CHECK(le32(f, 16) == bits / 8);                              // typeSize
+    CHECK(le32(f, 16) == bits / 8);                             // typeSize
     CHECK(le32(f, 20) == kTestSize);
     CHECK(le32(f, 24) == kTestSize);
     CHECK(le32(f, 28) == 0);  // pixelDepth
@@ -222,16 +226,16 @@ TEST_CASE("KTX2 LUT parses back: identifier, header, index, DFD, key/values, tex
     // DFD: total size, then one basic block of 4 samples.
     CHECK(le32(f, dfdOffset) == dfdLength);
     CHECK(dfdLength == 4 + 24 + 4 * 16);
-    CHECK(le32(f, dfdOffset + 4) == 0);                           // Khronos, basic format
-    CHECK(le32(f, dfdOffset + 8) == (2u | (88u << 16)));          // version 1.3, block size
-    CHECK((le32(f, dfdOffset + 12) & 0xffffffu) == 0x010101u);    // RGBSDA, BT709, linear
-    CHECK((le32(f, dfdOffset + 20) & 0xffu) == texelBytes);       // bytesPlane0
+    CHECK(le32(f, dfdOffset + 4) == 0);                         // Khronos, basic format
+    CHECK(le32(f, dfdOffset + 8) == (2u | (88u << 16)));        // version 1.3, block size
+    CHECK((le32(f, dfdOffset + 12) & 0xffffffu) == 0x010101u);  // RGBSDA, BT709, linear
+    CHECK((le32(f, dfdOffset + 20) & 0xffu) == texelBytes);     // bytesPlane0
     const uint32_t channelIds[4] = {0, 1, 2, 15};
     for (uint32_t s = 0; s < 4; ++s) {
       size_t at = dfdOffset + 28 + 16 * s;
-      CHECK((le32(f, at) & 0xffffu) == s * bits);                  // bitOffset
-      CHECK(((le32(f, at) >> 16) & 0xffu) == bits - 1);            // bitLength - 1
-      CHECK((le32(f, at) >> 24) == (channelIds[s] | 0xc0u));       // channel | SIGNED | FLOAT
+      CHECK((le32(f, at) & 0xffffu) == s * bits);             // bitOffset
+      CHECK(((le32(f, at) >> 16) & 0xffu) == bits - 1);       // bitLength - 1
+      CHECK((le32(f, at) >> 24) == (channelIds[s] | 0xc0u));  // channel | SIGNED | FLOAT
       CHECK(le32(f, at + 8) == 0xBF800000u);
       CHECK(le32(f, at + 12) == 0x3F800000u);
     }
@@ -332,7 +336,8 @@ TEST_CASE("matbricks lut writes the file its extension names and reports in JSON
   fs::remove_all(out.parent_path());
 }
 
-TEST_CASE("matbricks lut rejects bad options with the documented exit codes and writes nothing", "[lut][cli][diagnostics]") {
+TEST_CASE("matbricks lut rejects bad options with the documented exit codes and writes nothing",
+          "[lut][cli][diagnostics]") {
   fs::path out = tempPath("bad.bin");
   fs::remove(out);
   auto r = test::runCli("lut --size 0 -o " + out.string());

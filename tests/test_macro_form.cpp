@@ -125,8 +125,11 @@ TEST_CASE("every shipped model: JSON and macro forms give the same MaterialDesc"
   auto number = [](double x) { return nlohmann::json(x).dump(); };
   for (const auto& model : lib.models()) {
     INFO("model " << model.name);
-    nlohmann::json j = {{"name", "all_" + model.name}, {"model", model.name}, {"features", nlohmann::json::array()},
-                        {"bricks", nlohmann::json::object()}, {"parameters", nlohmann::json::object()}};
+    nlohmann::json j = {{"name", "all_" + model.name},
+                        {"model", model.name},
+                        {"features", nlohmann::json::array()},
+                        {"bricks", nlohmann::json::object()},
+                        {"parameters", nlohmann::json::object()}};
     std::string mat = "#define MATERIAL all_" + model.name + "\n#define MODEL " + model.name + "\n";
     for (const auto& f : model.features) {
       j["features"].push_back(f.name);
@@ -146,7 +149,9 @@ TEST_CASE("every shipped model: JSON and macro forms give the same MaterialDesc"
     bool constant = false;
     for (const auto& in : model.inputs) {
       constant = !constant;
-      nlohmann::json p = {{"type", mb::toString(in.type)}, {"default", in.defaultValue}, {"constant", constant},
+      nlohmann::json p = {{"type", mb::toString(in.type)},
+                          {"default", in.defaultValue},
+                          {"constant", constant},
                           {"range", {in.range.lo, in.range.hi}}};
       if (in.type == mb::ValueType::Float) p["default"] = in.defaultValue[0];
       j["parameters"][in.name] = p;
@@ -170,19 +175,19 @@ TEST_CASE("every shipped model: JSON and macro forms give the same MaterialDesc"
 
 TEST_CASE("macro-form syntax errors: every line's problem, at its column, in file order", "[macro]") {
   auto ds = macroErrorsOf(
-      "#define MATERIAL gold\n"                        // 1
-      "#define MODLE standard\n"                       // 2
-      "#define MODEL standard\n"                       // 3
-      "#define BRIK_fresnel f_schlick\n"               // 4
-      "#define BRICK_specular_d d_ggx\n"               // 5
-      "#define BRICK_fresnel f_schlick\n"              // 6
-      "#define BRICK_fresnel f_schlick\n"              // 7
-      "#define PARAM_roughness 0.3.5\n"                // 8
-      "#define PARAM_metallic vec4(1, 2, 3, 4)\n"      // 9
-      "#define PARAM_baseColor vec3(0.1, 0.2)\n"       // 10
-      "#define CONST_clearCoat 0.5 RANGES(0, 1)\n"     // 11
-      "#defne FEATURE_clearcoat\n"                     // 12
-      "#define DESCRIPTION \"unterminated\n");         // 13
+      "#define MATERIAL gold\n"                     // 1
+      "#define MODLE standard\n"                    // 2
+      "#define MODEL standard\n"                    // 3
+      "#define BRIK_fresnel f_schlick\n"            // 4
+      "#define BRICK_specular_d d_ggx\n"            // 5
+      "#define BRICK_fresnel f_schlick\n"           // 6
+      "#define BRICK_fresnel f_schlick\n"           // 7
+      "#define PARAM_roughness 0.3.5\n"             // 8
+      "#define PARAM_metallic vec4(1, 2, 3, 4)\n"   // 9
+      "#define PARAM_baseColor vec3(0.1, 0.2)\n"    // 10
+      "#define CONST_clearCoat 0.5 RANGES(0, 1)\n"  // 11
+      "#defne FEATURE_clearcoat\n"                  // 12
+      "#define DESCRIPTION \"unterminated\n");      // 13
   REQUIRE(ds.size() == 9);
   CHECK(ds[0].code == "E-UNKNOWN-DIRECTIVE");
   requireAt(ds[0], "m.mat", 2, 9);
@@ -252,10 +257,11 @@ TEST_CASE("macro-form structure errors", "[macro]") {
     requireAt(d, "m.mat", 1, 2);
     CHECK_THAT(d.message, Contains("belong in the surface code"));
     // ... where they are plain GLSL.
-    auto m = mb::parseMaterialMacro("#define MATERIAL a\n#define MODEL standard\n#define BRICK_specular_d d_ggx\n"
-                                    "#define BRICK_fresnel f_schlick\nconst float k = 2.0;\n#define TWO k\n"
-                                    "void surface(inout MaterialInputs m, MaterialParams p) { m.roughness = TWO / 4.0; }\n",
-                                    "m.mat", featureLibrary());
+    auto m = mb::parseMaterialMacro(
+        "#define MATERIAL a\n#define MODEL standard\n#define BRICK_specular_d d_ggx\n"
+        "#define BRICK_fresnel f_schlick\nconst float k = 2.0;\n#define TWO k\n"
+        "void surface(inout MaterialInputs m, MaterialParams p) { m.roughness = TWO / 4.0; }\n",
+        "m.mat", featureLibrary());
     CHECK(m.surface.where.line == 5);
     CHECK_THAT(m.surface.glsl, Contains("#define TWO k"));
   }
@@ -331,8 +337,9 @@ TEST_CASE("#include: relative to the including file, read once, inside the proje
     dir.write("outside.mat", "#define MODEL standard\n");
     std::filesystem::create_directories(dir.path("project"));
     std::filesystem::create_symlink(dir.path("outside.mat"), dir.path("project/link.mat"));
-    auto ds = load("project/m.mat", head + "#include \"../outside.mat\"\n#include \"/etc/hostname\"\n"
-                                      "#include \"sub/../../outside.mat\"\n#include \"link.mat\"\n");
+    auto ds = load("project/m.mat", head +
+                                        "#include \"../outside.mat\"\n#include \"/etc/hostname\"\n"
+                                        "#include \"sub/../../outside.mat\"\n#include \"link.mat\"\n");
     std::vector<Diagnostic> escapes;
     for (const auto& d : ds)
       if (d.code == "E-PATH-ESCAPE") escapes.push_back(d);
@@ -356,8 +363,9 @@ TEST_CASE("#include: relative to the including file, read once, inside the proje
 }
 
 TEST_CASE("hostile macro-form input never crashes or hangs the loader", "[macro]") {
-  const std::string valid = "#define MATERIAL a\n#define MODEL standard\n#define BRICK_specular_d d_ggx\n"
-                            "#define BRICK_fresnel f_schlick\n";
+  const std::string valid =
+      "#define MATERIAL a\n#define MODEL standard\n#define BRICK_specular_d d_ggx\n"
+      "#define BRICK_fresnel f_schlick\n";
   struct Case {
     const char* what;
     std::string text;
@@ -366,7 +374,12 @@ TEST_CASE("hostile macro-form input never crashes or hangs the loader", "[macro]
   std::vector<Case> cases = {
       {"empty", "", "E-MISSING-FIELD"},
       {"truncated in a directive", valid.substr(0, valid.size() - 12), "E-MACRO-SYNTAX"},
-      {"binary", std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10) + "#define", "E-MACRO-SYNTAX"},
+      {"binary",
+       std::string("\x7f"
+                   "ELF\x02\x01\x01\0\0\0",
+                   10) +
+           "#define",
+       "E-MACRO-SYNTAX"},
       {"huge directive line", "#define MATERIAL " + std::string(4 << 20, 'x') + "!\n" + valid, "E-MACRO-SYNTAX"},
       {"huge unknown directive", "#define " + std::string(1 << 20, 'Q') + " 1\n" + valid, "E-UNKNOWN-DIRECTIVE"},
       {"deeply nested value", "#define PARAM_roughness " + std::string(100000, '(') + "\n" + valid, "E-MACRO-SYNTAX"},

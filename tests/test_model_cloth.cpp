@@ -75,8 +75,6 @@ ref::ModelEvalInput clothInput(const Vec3& v, double roughness, const Vec3& base
   return in;
 }
 
-
-
 Vec3 underDirectional(ref::ModelEvalInput in, const Vec3& l) {
   in.dir = ref::DirectionalLight{l, {1, 1, 1}};
   return clothReference()(in);
@@ -139,8 +137,7 @@ TEST_CASE("cloth's indirect sheen is sheenColor * Int D_Charlie V_Ashikhmin (n.l
       ref::ModelEvalInput in = clothInput(v, roughness, {0, 0, 0}, sheen);
       const double integral = ref::clothDfgIntegral(NoV, roughness * roughness);
       const Vec3 brute = test::hemisphereIntegral(in.frame.n, [&](const Vec3& l) { return underDirectional(in, l); });
-      INFO("roughness " << roughness << " NoV " << NoV << ": integral " << integral << ", brute "
-                        << brute.x / sheen.x);
+      INFO("roughness " << roughness << " NoV " << NoV << ": integral " << integral << ", brute " << brute.x / sheen.x);
       CHECK(maxComponentDiff(brute, sheen * integral) <= 3e-8);
 
       ref::Environment env;

@@ -93,7 +93,6 @@ ref::Environment environment(const std::string& mode) {
   return env;
 }
 
-
 // The probe's prefiltered fetch of a unit environment, at the mirror direction and the
 // mip_linear level the model looks up (n = z).
 double fetchedShape(const Vec3& v, double roughness, double maxMip) {
@@ -101,7 +100,6 @@ double fetchedShape(const Vec3& v, double roughness, double maxMip) {
   const Vec3 r = n * (2.0 * ref::dot(n, v)) - v;
   return ref::probeEnvironmentShape(r, roughness * maxMip);
 }
-
 
 Vec3 envBrdf(const std::string& id, const Vec3& f0, double roughness, double NoV) {
   const ref::Reference* r = ref::Registry::references().find(id);
@@ -203,7 +201,8 @@ TEST_CASE("the analytic and LUT paths differ exactly by the env BRDF brick's err
       const Vec3 lut = standardReference()(in) / shape;
       in.env = environment("ibl_analytic");
       const Vec3 analytic = standardReference()(in) / shape;
-      const Vec3 fitError = envBrdf("env_brdf_approx", metal, roughness, NoV) - ref::envBrdfIntegral(metal, roughness, NoV);
+      const Vec3 fitError =
+          envBrdf("env_brdf_approx", metal, roughness, NoV) - ref::envBrdfIntegral(metal, roughness, NoV);
       INFO("roughness " << roughness << " NoV " << NoV);
       CHECK(maxComponentDiff(analytic - lut, fitError) <= 1e-12);
       if (maxComponentDiff(analytic, lut) > worst) {
@@ -245,8 +244,8 @@ TEST_CASE("which env BRDF bricks are affine in f0, as ibl_analytic's DFG terms a
   CHECK(affineError("env_brdf_approx_nonmetal", colored, 0.0, 1.0) <= 1e-12);
   CHECK(envBrdf("env_brdf_approx_nonmetal", ref::splat(1.0), 0.5, 0.5).x < 0.1);
   // E(1) stays positive for every brick, so 1 / E(1) in the compensation is finite.
-  for (const char* id : {"env_brdf_approx", "env_brdf_approx_nonmetal", "env_dfg_lazarov", "env_dfg_polynomial",
-                         "env_brdf_unity"})
+  for (const char* id :
+       {"env_brdf_approx", "env_brdf_approx_nonmetal", "env_dfg_lazarov", "env_dfg_polynomial", "env_brdf_unity"})
     for (double r = 0.0; r <= 1.0; r += 0.05)
       for (double NoV = 0.0; NoV <= 1.0; NoV += 0.05) {
         INFO(id << " r " << r << " NoV " << NoV);

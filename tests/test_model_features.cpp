@@ -24,23 +24,38 @@ namespace {
 // Every role of the standard model a directional light reaches, bound to a plain choice
 // (roughness clamped so that alpha >= 0.045^2, the anisotropic bricks' domain).
 std::map<std::string, std::string> standardBricks() {
-  return {{"roughness", "roughness_clamped"},        {"diffuse", "diffuse_lambert"},
-          {"specular_d", "d_ggx"},                    {"specular_v", "v_smith_ggx_correlated"},
-          {"fresnel", "f_schlick"},                   {"clearcoat_d", "d_ggx"},
-          {"clearcoat_v", "v_kelemen"},               {"clearcoat_fresnel", "f_schlick"},
-          {"f0_clearcoat", "f0_clearcoat_fit"},       {"specular_d_aniso", "d_ggx_aniso"},
-          {"specular_v_aniso", "v_smith_ggx_correlated_aniso"}, {"sheen_d", "d_charlie"},
-          {"sheen_v", "v_ashikhmin"},                {"clearcoat_base_roughness", "coat_base_roughness_max"},
+  return {{"roughness", "roughness_clamped"},
+          {"diffuse", "diffuse_lambert"},
+          {"specular_d", "d_ggx"},
+          {"specular_v", "v_smith_ggx_correlated"},
+          {"fresnel", "f_schlick"},
+          {"clearcoat_d", "d_ggx"},
+          {"clearcoat_v", "v_kelemen"},
+          {"clearcoat_fresnel", "f_schlick"},
+          {"f0_clearcoat", "f0_clearcoat_fit"},
+          {"specular_d_aniso", "d_ggx_aniso"},
+          {"specular_v_aniso", "v_smith_ggx_correlated_aniso"},
+          {"sheen_d", "d_charlie"},
+          {"sheen_v", "v_ashikhmin"},
+          {"clearcoat_base_roughness", "coat_base_roughness_max"},
           {"anisotropy_alpha", "aniso_alpha_kulla"}};
 }
 
 ref::ModelEvalInput baseInput() {
   ref::ModelEvalInput in;
   in.bricks = standardBricks();
-  in.inputs = {{"baseColor", {0.7, 0.4, 0.2}}, {"metallic", {0.3}},       {"roughness", {0.45}},
-               {"f0Dielectric", {0.04, 0.04, 0.04}}, {"emissive", {0, 0, 0}}, {"ambientOcclusion", {1.0}},
-               {"clearCoat", {0.8}},          {"clearCoatRoughness", {0.2}}, {"clearCoatNormal", {0, 0, 1}},
-               {"anisotropy", {0.6}},         {"sheenColor", {0.3, 0.5, 0.2}}, {"sheenRoughness", {0.5}}};
+  in.inputs = {{"baseColor", {0.7, 0.4, 0.2}},
+               {"metallic", {0.3}},
+               {"roughness", {0.45}},
+               {"f0Dielectric", {0.04, 0.04, 0.04}},
+               {"emissive", {0, 0, 0}},
+               {"ambientOcclusion", {1.0}},
+               {"clearCoat", {0.8}},
+               {"clearCoatRoughness", {0.2}},
+               {"clearCoatNormal", {0, 0, 1}},
+               {"anisotropy", {0.6}},
+               {"sheenColor", {0.3, 0.5, 0.2}},
+               {"sheenRoughness", {0.5}}};
   return in;
 }
 
@@ -54,8 +69,10 @@ Vec3 randomUnit(std::mt19937& rng) {
 void randomScene(std::mt19937& rng, ref::ModelEvalInput& in) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   Vec3 n = randomUnit(rng), v, l;
-  do v = randomUnit(rng); while (ref::dot(n, v) < 0.02);
-  do l = randomUnit(rng); while (ref::dot(n, l) < 0.0);
+  do v = randomUnit(rng);
+  while (ref::dot(n, v) < 0.02);
+  do l = randomUnit(rng);
+  while (ref::dot(n, l) < 0.0);
   Vec3 side = ref::normalize(ref::cross(n, randomUnit(rng)));
   in.frame = {n, v, ref::normalize(n + side * (0.4 * u(rng))), randomUnit(rng)};
   in.dir = ref::DirectionalLight{l, {1.0, 0.8, 0.6}};
@@ -184,7 +201,7 @@ void validateThrough(const char* json, const std::vector<std::string>& lights, c
 // without the feature, bit for bit, over random frames (tilted ng, a directional light).
 // `extra` sets other inputs of the feature first.
 static void requireNeutralIsExact(const std::string& feature, const std::string& name, std::vector<double> neutral,
-                           const std::map<std::string, std::vector<double>>& extra, unsigned seed) {
+                                  const std::map<std::string, std::vector<double>>& extra, unsigned seed) {
   std::mt19937 rng(seed);
   for (int i = 0; i < 300; ++i) {
     ref::ModelEvalInput with = baseInput(), without = baseInput();
@@ -368,7 +385,8 @@ TEST_CASE("clear-coated metal validates on lavapipe under punctual lights", "[mo
   validateThrough(kClearCoatMetal, kPunctual, "none");
 }
 
-TEST_CASE("a clear coat with its own normal validates on lavapipe under every light and environment", "[model-features][gpu][vulkan]") {
+TEST_CASE("a clear coat with its own normal validates on lavapipe under every light and environment",
+          "[model-features][gpu][vulkan]") {
   const std::string json = clearCoatNormalMetal();
   REQUIRE(json.find("clearCoatNormal") != std::string::npos);
   validateThrough(json.c_str(), kArea, "none");
@@ -386,7 +404,8 @@ TEST_CASE("green velvet (sheen) validates on lavapipe under punctual lights", "[
   validateThrough(kVelvetGreen, kPunctual, "none");
 }
 
-TEST_CASE("all three features together validate on lavapipe in every environment mode", "[model-features][gpu][vulkan]") {
+TEST_CASE("all three features together validate on lavapipe in every environment mode",
+          "[model-features][gpu][vulkan]") {
   // The IBL hooks: the coat's and the sheen's prefiltered lookups and attenuations, the bent
   // normal of the anisotropic base, the sheen albedo from the LUT (ibl_lut) or the fit.
   for (const char* environment : {"none", "sh", "ibl_lut", "ibl_analytic"}) {
@@ -395,7 +414,8 @@ TEST_CASE("all three features together validate on lavapipe in every environment
   }
 }
 
-TEST_CASE("all three features together validate on lavapipe under sphere and tube lights", "[model-features][gpu][vulkan]") {
+TEST_CASE("all three features together validate on lavapipe under sphere and tube lights",
+          "[model-features][gpu][vulkan]") {
   // The coat is evaluated at the area light's centre direction (docs/models/features.md).
   validateThrough(kAllFeatures, kArea, "none");
 }

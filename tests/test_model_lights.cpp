@@ -29,7 +29,8 @@ MaterialDesc shippedMaterial(const std::string& name) {
 
 // The reference's input for `material`: its bricks with the model's defaults for every light
 // type (then `overrides`), the model's default inputs replaced by the material's values.
-ref::ModelEvalInput referenceInput(const MaterialDesc& material, const std::map<std::string, std::string>& overrides = {}) {
+ref::ModelEvalInput referenceInput(const MaterialDesc& material,
+                                   const std::map<std::string, std::string>& overrides = {}) {
   Permutation perm;
   perm.material = &material;
   perm.lights = kAllLights;
@@ -70,8 +71,8 @@ bool close(const Vec3& a, const Vec3& b, double rel) {
 }
 bool finite(const Vec3& a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
 
-Vec3 shadeWith(ref::ModelEvalInput in, double roughness, const std::function<Vec3(const ref::ModelEvalInput&,
-                                                                                 const ref::standard::Pixel&)>& shade) {
+Vec3 shadeWith(ref::ModelEvalInput in, double roughness,
+               const std::function<Vec3(const ref::ModelEvalInput&, const ref::standard::Pixel&)>& shade) {
   in.inputs["roughness"] = {roughness};
   return shade(in, ref::standard::prepare(in));
 }
@@ -118,11 +119,12 @@ TEST_CASE("lights: a tube light of length -> 0 is the sphere light of its radius
       });
       auto tube = [&](double halfLength) {
         return shadeWith(in, roughness, [&](auto& e, auto& px) {
-          return ref::standard::shadeTube(e, px, {center - axis * halfLength, center + axis * halfLength, radius,
-                                                  kIntensity, 12.0});
+          return ref::standard::shadeTube(
+              e, px, {center - axis * halfLength, center + axis * halfLength, radius, kIntensity, 12.0});
         });
       };
-      INFO(name << " config " << i << " n.c " << dot(in.frame.n, ref::normalize(center)) << " radius " << radius << " sphere " << sphere.x);
+      INFO(name << " config " << i << " n.c " << dot(in.frame.n, ref::normalize(center)) << " radius " << radius
+                << " sphere " << sphere.x);
       CHECK(close(tube(0.0), sphere, 1e-9));
       // A tiny segment: the line normalization alpha / (alpha + length / 2d) and the moved
       // representative point differ by O(length / (d alpha)).
@@ -163,8 +165,7 @@ TEST_CASE("lights: a fully open spot is the point light; the cone is Filament's 
   }
 }
 
-TEST_CASE("lights: a far point light is a directional light of illuminance I falloff(d) -> I / d^2",
-          "[model-lights]") {
+TEST_CASE("lights: a far point light is a directional light of illuminance I falloff(d) -> I / d^2", "[model-lights]") {
   MaterialDesc m = shippedMaterial("filament_plastic");
   auto model = ref::ModelRegistry::instance().find("standard");
   REQUIRE(model);
@@ -234,13 +235,13 @@ TEST_CASE("lights: a sphere light's diffuse is the irradiance of a uniform spher
   }
 }
 
-TEST_CASE("lights: a thin tube's diffuse is the exact line irradiance where Karis's form is exact",
-          "[model-lights]") {
+TEST_CASE("lights: a thin tube's diffuse is the exact line irradiance where Karis's form is exact", "[model-lights]") {
   // Karis's line irradiance (the tube's diffuse, docs/models/lights.md) is exact for a
   // segment above the horizon seen end-on, and for a segment symmetric about the foot of the
   // perpendicular from the shading point (any n). Brute force: (I / length) Int n.P / |P|^3 ds.
   MaterialDesc m = shippedMaterial("filament_plastic");
-  ref::ModelEvalInput in = referenceInput(m, {{"light_falloff", "falloff_inverse_square"}, {"diffuse", "diffuse_lambert"}});
+  ref::ModelEvalInput in =
+      referenceInput(m, {{"light_falloff", "falloff_inverse_square"}, {"diffuse", "diffuse_lambert"}});
   in.inputs["metallic"] = {0.0};
   Configs c(67);
   for (int i = 0; i < 40; ++i) {
@@ -289,15 +290,42 @@ TEST_CASE("lights: area lights stay finite below the horizon, inside the light a
     const Vec3 axis = c.unit();
     std::vector<std::pair<const char*, std::function<Vec3(const ref::ModelEvalInput&, const ref::standard::Pixel&)>>>
         cases = {
-            {"sphere inside", [&](auto& e, auto& px) { return ref::standard::shadeSphere(e, px, {l * d, d * 1.5 + 0.01, kIntensity, 4.0}); }},
-            {"sphere at the point", [&](auto& e, auto& px) { return ref::standard::shadeSphere(e, px, {Vec3{}, 0.2, kIntensity, 4.0}); }},
-            {"sphere of radius 0 at the point", [&](auto& e, auto& px) { return ref::standard::shadeSphere(e, px, {Vec3{}, 0.0, kIntensity, 4.0}); }},
-            {"sphere below", [&](auto& e, auto& px) { return ref::standard::shadeSphere(e, px, {n * -(d + 0.1), 0.05, kIntensity, 4.0}); }},
-            {"tube of length 0", [&](auto& e, auto& px) { return ref::standard::shadeTube(e, px, {l * d, l * d, 0.1, kIntensity, 4.0}); }},
-            {"tube inside", [&](auto& e, auto& px) { return ref::standard::shadeTube(e, px, {l * d - axis, l * d + axis, d + 0.1, kIntensity, 4.0}); }},
-            {"tube through the point", [&](auto& e, auto& px) { return ref::standard::shadeTube(e, px, {l * -1.0, l * 2.0, 0.1, kIntensity, 4.0}); }},
-            {"tube ending at the point", [&](auto& e, auto& px) { return ref::standard::shadeTube(e, px, {Vec3{}, l, 0.0, kIntensity, 4.0}); }},
-            {"tube below", [&](auto& e, auto& px) { return ref::standard::shadeTube(e, px, {n * -0.5 - axis, n * -0.5 + axis, 0.1, kIntensity, 4.0}); }},
+            {"sphere inside",
+             [&](auto& e, auto& px) {
+               return ref::standard::shadeSphere(e, px, {l * d, d * 1.5 + 0.01, kIntensity, 4.0});
+             }},
+            {"sphere at the point",
+             [&](auto& e, auto& px) {
+               return ref::standard::shadeSphere(e, px, {Vec3{}, 0.2, kIntensity, 4.0});
+             }},
+            {"sphere of radius 0 at the point",
+             [&](auto& e, auto& px) {
+               return ref::standard::shadeSphere(e, px, {Vec3{}, 0.0, kIntensity, 4.0});
+             }},
+            {"sphere below",
+             [&](auto& e, auto& px) {
+               return ref::standard::shadeSphere(e, px, {n * -(d + 0.1), 0.05, kIntensity, 4.0});
+             }},
+            {"tube of length 0",
+             [&](auto& e, auto& px) {
+               return ref::standard::shadeTube(e, px, {l * d, l * d, 0.1, kIntensity, 4.0});
+             }},
+            {"tube inside",
+             [&](auto& e, auto& px) {
+               return ref::standard::shadeTube(e, px, {l * d - axis, l * d + axis, d + 0.1, kIntensity, 4.0});
+             }},
+            {"tube through the point",
+             [&](auto& e, auto& px) {
+               return ref::standard::shadeTube(e, px, {l * -1.0, l * 2.0, 0.1, kIntensity, 4.0});
+             }},
+            {"tube ending at the point",
+             [&](auto& e, auto& px) {
+               return ref::standard::shadeTube(e, px, {Vec3{}, l, 0.0, kIntensity, 4.0});
+             }},
+            {"tube below",
+             [&](auto& e, auto& px) {
+               return ref::standard::shadeTube(e, px, {n * -0.5 - axis, n * -0.5 + axis, 0.1, kIntensity, 4.0});
+             }},
         };
     for (const auto& [what, shade] : cases) {
       Vec3 r = shadeWith(in, roughness, shade);
@@ -319,7 +347,8 @@ TEST_CASE("lights: shipped materials with the five light types validate on lavap
   test::requireNoValidationLayerMessages(gpu);
 }
 
-TEST_CASE("lights: degenerate area lights stay finite on lavapipe and agree with the reference", "[model-lights][gpu][vulkan]") {
+TEST_CASE("lights: degenerate area lights stay finite on lavapipe and agree with the reference",
+          "[model-lights][gpu][vulkan]") {
   // The probe's ranges keep the lights outside and the tube off the shading point; records are
   // edited here to put the shading point inside the sphere and the tube, to shrink the tube to
   // zero length, and (finiteness only: the direction is then undefined) to run the tube through
@@ -333,7 +362,8 @@ TEST_CASE("lights: degenerate area lights stay finite on lavapipe and agree with
   auto set = [&](std::vector<float>& records, const std::string& column, const std::function<float(uint64_t)>& value) {
     const ProbeInput* in = layout.find(column);
     REQUIRE(in);
-    for (uint64_t i = 0; i * layout.inStride < records.size(); ++i) records[i * layout.inStride + in->offset] = value(i);
+    for (uint64_t i = 0; i * layout.inStride < records.size(); ++i)
+      records[i * layout.inStride + in->offset] = value(i);
   };
   harness::VulkanHarness gpu(harness::testDeviceOptions());
 
@@ -349,8 +379,8 @@ TEST_CASE("lights: degenerate area lights stay finite on lavapipe and agree with
   for (const auto& col : layout.inputs)
     for (int k = 0; k < componentCount(col.type); ++k)
       worst += col.name + "=" + std::to_string(inside[stats.worstRecord * layout.inStride + col.offset + k]) + " ";
-  INFO("inside / zero length: max_abs " << stats.maxAbs << " max_rel " << stats.maxRel << " failures "
-                                        << stats.failures << " worst " << worst);
+  INFO("inside / zero length: max_abs " << stats.maxAbs << " max_rel " << stats.maxRel << " failures " << stats.failures
+                                        << " worst " << worst);
   CHECK(stats.nanCount == 0);
   CHECK(stats.infCount == 0);
   CHECK(stats.referenceInvalid == 0);
@@ -358,7 +388,7 @@ TEST_CASE("lights: degenerate area lights stay finite on lavapipe and agree with
 
   std::vector<float> through = generateSamples(layout, probe.domain, 1024, 4);
   set(through, "sphereDistance", [](uint64_t) { return 0.0f; });
-  set(through, "tubeAxisTilt", [](uint64_t) { return 1e6f; });  // the axis along l
+  set(through, "tubeAxisTilt", [](uint64_t) { return 1e6f; });                             // the axis along l
   set(through, "tubeHalfLengthFraction", [](uint64_t i) { return i % 2 ? 1.0f : 2.0f; });  // an end on, or through
   run = runProbe(gpu, probe, through, false);
   for (size_t k = 0; k < run.gpu.size(); ++k) {

@@ -49,7 +49,8 @@ fs::path makeProject(const fs::path& root) {
 std::vector<std::string> temporariesIn(const fs::path& dir) {
   std::vector<std::string> left;
   for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().filename().string().find(".matbricks-") != std::string::npos) left.push_back(e.path().filename().string());
+    if (e.path().filename().string().find(".matbricks-") != std::string::npos)
+      left.push_back(e.path().filename().string());
   return left;
 }
 
@@ -88,7 +89,8 @@ TEST_CASE("compile -o . in a project directory refuses and leaves every file byt
   fs::remove_all(root);
 }
 
-TEST_CASE("a package directory is created, filled when empty, and replaced atomically when it is ours", "[cli][outputs][package]") {
+TEST_CASE("a package directory is created, filled when empty, and replaced atomically when it is ours",
+          "[cli][outputs][package]") {
   const fs::path root = test::freshTempDir("outputs", "replace");
   const auto [refA, refB] = referencePackages(root);
   CHECK(refA.count(".matbricks-package") == 1);
@@ -110,7 +112,9 @@ TEST_CASE("a package directory is created, filled when empty, and replaced atomi
   fs::remove_all(root);
 }
 
-TEST_CASE("outputs that are, contain or lie inside an input are refused through symlinks, .., hard links and bind mounts", "[cli][outputs]") {
+TEST_CASE(
+    "outputs that are, contain or lie inside an input are refused through symlinks, .., hard links and bind mounts",
+    "[cli][outputs]") {
   const fs::path root = test::freshTempDir("outputs", "overlap");
   const fs::path project = makeProject(root);
   const fs::path material = project / "filament_plastic.json";
@@ -129,9 +133,9 @@ TEST_CASE("outputs that are, contain or lie inside an input are refused through 
   };
   refused("-o " + q(root / "out") + " --depfile " + q(root / "alias/filament_plastic.json"));  // symlinked directory
   refused("-o " + q(root / "out") + " --depfile " + q(project / "src/../filament_plastic.json"));  // ..
-  refused("-o " + q(root / "out") + " --depfile " + q(root / "links/hard.json"));  // hard link
-  refused("-o " + q(root / "alias/src/../pkg") + " --depfile " + q(root / "alias/pkg/deps.d"));  // depfile inside -o
-  refused("-o " + q(root / "cache/pkg") + " --cache-dir " + q(root / "cache"));  // inside the cache
+  refused("-o " + q(root / "out") + " --depfile " + q(root / "links/hard.json"));                  // hard link
+  refused("-o " + q(root / "alias/src/../pkg") + " --depfile " + q(root / "alias/pkg/deps.d"));    // depfile inside -o
+  refused("-o " + q(root / "cache/pkg") + " --cache-dir " + q(root / "cache"));                    // inside the cache
   refused("-o " + q(root / "alias"), "E-OUTPUT-NOT-PACKAGE");  // a symlink to the project directory
 
   // A bind mount shows the project under a second path with the same device and inode. It
@@ -146,7 +150,8 @@ TEST_CASE("outputs that are, contain or lie inside an input are refused through 
   fs::remove_all(root);
 }
 
-TEST_CASE("single-file outputs go through a symlink to its target and never replace a directory or device", "[cli][outputs][vulkan]") {
+TEST_CASE("single-file outputs go through a symlink to its target and never replace a directory or device",
+          "[cli][outputs][vulkan]") {
   const fs::path root = test::freshTempDir("outputs", "files");
   writeText(root / "notes/real.md", "old\n");
   fs::create_symlink(root / "notes/real.md", root / "link.md");
@@ -174,7 +179,8 @@ TEST_CASE("leftovers of a killed run are removed only when they are ours and the
   writeText(root / (".pkg.matbricks-new." + dead + ".0") / ".matbricks-package", marker);
   writeText(root / (".pkg.matbricks-new." + dead + ".0") / "manifest.json", "{}");
   writeText(root / (".pkg.matbricks-new." + dead + ".1") / "mine.txt", "not matbricks'\n");  // no marker
-  writeText(root / (".pkg.matbricks-old." + std::to_string(::getpid()) + ".0") / ".matbricks-package", marker);  // alive
+  writeText(root / (".pkg.matbricks-old." + std::to_string(::getpid()) + ".0") / ".matbricks-package",
+            marker);  // alive
   REQUIRE(compileTo(kSetA, root / "pkg").exitCode == 0);
   CHECK_FALSE(fs::exists(root / (".pkg.matbricks-new." + dead + ".0")));
   CHECK(test::readFile(root / (".pkg.matbricks-new." + dead + ".1") / "mine.txt") == "not matbricks'\n");
@@ -185,7 +191,7 @@ TEST_CASE("leftovers of a killed run are removed only when they are ours and the
 TEST_CASE("a compile killed at any moment leaves the old package or the new one, complete", "[cli][outputs][kill]") {
   const fs::path root = test::freshTempDir("outputs", "kill");
   const ReferencePackages refs = referencePackages(root);  // a struct, not a structured binding:
-  const fs::path pkg = root / "work/pkg";                   // clang 14 cannot capture those
+  const fs::path pkg = root / "work/pkg";                  // clang 14 cannot capture those
   fs::create_directories(pkg.parent_path());
   REQUIRE(compileTo(kSetA, pkg).exitCode == 0);
   auto state = [&] {

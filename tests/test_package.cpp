@@ -73,23 +73,28 @@ std::string engineShader(const nlohmann::json& perm, const std::string& include,
   s += include;
   std::string body;
   if (withHooks && perm["needs_fetch_hooks"].get<bool>())
-    body += "vec3 mb_fetch_prefiltered(vec3 r, float lod) { return vec3(io[4]) + r * lod; }\n"
-            "vec3 mb_fetch_dfg(float NoV, float perceptualRoughness) { return vec3(io[5], io[6], NoV * perceptualRoughness); }\n";
+    body +=
+        "vec3 mb_fetch_prefiltered(vec3 r, float lod) { return vec3(io[4]) + r * lod; }\n"
+        "vec3 mb_fetch_dfg(float NoV, float perceptualRoughness) { return vec3(io[5], io[6], NoV * perceptualRoughness); }\n";
   std::string args;
   for (const auto& p : perm["parameters"])
     if (!p["constant"].get<bool>()) args += std::string(args.empty() ? "" : ", ") + shaderTypeOf(p["type"]) + "(io[3])";
-  body += "void main() {\n"
-          "    ShadingFrame f;\n"
-          "    f.n = normalize(vec3(io[0], io[1], io[2]));\n"
-          "    f.v = normalize(vec3(io[1], io[0], io[2]));\n"
-          "    f.ng = f.n;\n"
-          "    f.t = normalize(vec3(io[2], 0.0, -io[0]));\n"
-          "    ShadingPixel px = preparePixel(materialInputs(" + args + "), f);\n"
-          "    vec3 r = emittedRadiance(px);\n";
+  body +=
+      "void main() {\n"
+      "    ShadingFrame f;\n"
+      "    f.n = normalize(vec3(io[0], io[1], io[2]));\n"
+      "    f.v = normalize(vec3(io[1], io[0], io[2]));\n"
+      "    f.ng = f.n;\n"
+      "    f.t = normalize(vec3(io[2], 0.0, -io[0]));\n"
+      "    ShadingPixel px = preparePixel(materialInputs(" +
+      args +
+      "), f);\n"
+      "    vec3 r = emittedRadiance(px);\n";
   std::set<std::string> lights;
   for (const auto& l : perm["lights"]) lights.insert(l.get<std::string>());
   if (lights.count("dir"))
-    body += "    r += shadeDirectionalLight(px, f, DirectionalLight(normalize(vec3(io[7], io[8], 1.0)), vec3(io[9])));\n";
+    body +=
+        "    r += shadeDirectionalLight(px, f, DirectionalLight(normalize(vec3(io[7], io[8], 1.0)), vec3(io[9])));\n";
   if (lights.count("point")) body += "    PointLight pl;\n    r += shadePointLight(px, f, pl);\n";
   if (lights.count("spot")) body += "    SpotLight sl;\n    r += shadeSpotLight(px, f, sl);\n";
   if (perm["environment"] != "none") body += "    Environment env;\n    r += shadeEnvironment(px, f, env);\n";
@@ -157,8 +162,8 @@ TEST_CASE("package manifest: keys, hashes, deduplicated files per target, determ
 
 TEST_CASE("each include is self-contained: hooks + include + calls compile", "[package]") {
   fs::path dir = tempDir("include");
-  const std::string mats = material("velvet_green.json") + " " + material("worn_car_paint.json") + " " +
-                           material("brushed_metal.json");
+  const std::string mats =
+      material("velvet_green.json") + " " + material("worn_car_paint.json") + " " + material("brushed_metal.json");
   auto ibl = compilePackage(mats + " --lights dir,point,spot --environment ibl_lut", dir / "ibl");
   auto half = compilePackage(material("filament_plastic.json") + " --precision fp16", dir / "half");
   size_t checked = 0;
@@ -176,7 +181,8 @@ TEST_CASE("each include is self-contained: hooks + include + calls compile", "[p
       const std::string name = p["key"].get<std::string>() + ".engine.comp";
       CHECK_NOTHROW(compileComputeGlsl(engineShader(p, include), name));
       // The hooks really are the engine's to define: without them an IBL shader does not link.
-      if (ibl) CHECK_THROWS_WITH(compileComputeGlsl(engineShader(p, include, false), name), Catch::Contains("mb_fetch_"));
+      if (ibl)
+        CHECK_THROWS_WITH(compileComputeGlsl(engineShader(p, include, false), name), Catch::Contains("mb_fetch_"));
       ++checked;
     }
   CHECK(checked == 4);
@@ -185,9 +191,9 @@ TEST_CASE("each include is self-contained: hooks + include + calls compile", "[p
 
 TEST_CASE("the C++ header compiles, finds every key, and its std140 asserts can fail", "[package]") {
   fs::path dir = tempDir("header");
-  auto manifest = compilePackage(material("worn_car_paint.json") + " " + material("ue4_metal.json") +
-                                     " --namespace test_pkg --header pkg.hpp",
-                                 dir / "pkg");
+  auto manifest = compilePackage(
+      material("worn_car_paint.json") + " " + material("ue4_metal.json") + " --namespace test_pkg --header pkg.hpp",
+      dir / "pkg");
   std::string tu = "#include \"pkg.hpp\"\n";
   for (const auto& p : manifest["permutations"])
     tu += "static_assert(test_pkg::findPermutation(\"" + p["key"].get<std::string>() + "\") != nullptr);\n";
@@ -197,8 +203,11 @@ TEST_CASE("the C++ header compiles, finds every key, and its std140 asserts can 
   tu += "int main() { return 0; }\n";
   std::ofstream(dir / "pkg" / "use.cpp") << tu;
   auto compile = [&](const std::string& file) {
-    return std::system(("cd " + (dir / "pkg").string() + " && " MB_CXX_COMPILER " -std=c++17 -Wall -Wextra -Werror "
-                        "-fsyntax-only " + file + " > compile.log 2>&1").c_str());
+    return std::system(("cd " + (dir / "pkg").string() +
+                        " && " MB_CXX_COMPILER " -std=c++17 -Wall -Wextra -Werror "
+                        "-fsyntax-only " +
+                        file + " > compile.log 2>&1")
+                           .c_str());
   };
   const int clean = compile("use.cpp");
   INFO(test::readFile(dir / "pkg" / "compile.log"));

@@ -39,8 +39,8 @@ TEST_CASE("every brick of the manifest validates against its reference on lavapi
   REQUIRE(!lib.bricks().empty());
   for (const auto& brick : lib.bricks()) {
     ValidationRecord r = validateProbe(gpu, buildBrickProbe(lib, brick), "brick", 4096, 7);
-    INFO(brick.id << ": max_abs " << r.stats.maxAbs << " max_rel " << r.stats.maxRel << " failures "
-                  << r.stats.failures << " worst " << r.worstInput);
+    INFO(brick.id << ": max_abs " << r.stats.maxAbs << " max_rel " << r.stats.maxRel << " failures " << r.stats.failures
+                  << " worst " << r.worstInput);
     CHECK(r.stats.nanCount == 0);
     CHECK(r.stats.infCount == 0);
     CHECK(r.stats.referenceInvalid == 0);
@@ -110,8 +110,8 @@ TEST_CASE("a permutation contains only the bricks it reaches", "[pipeline][emit]
   CHECK(s.glsl.find("diffuse_disney_renormalized") == std::string::npos);
   CHECK(s.glsl.find("vec3 evaluateMaterial(") != std::string::npos);
   // One bound brick per slot, in model slot order.
-  CHECK(s.bricks == std::vector<std::string>{"roughness_squared", "diffuse_lambert", "d_ggx",
-                                             "v_schlick_ggx_ue4", "f_schlick_sg_ue4"});
+  CHECK(s.bricks == std::vector<std::string>{"roughness_squared", "diffuse_lambert", "d_ggx", "v_schlick_ggx_ue4",
+                                             "f_schlick_sg_ue4"});
 }
 
 TEST_CASE("a GLSL error inside a brick points at the brick's own file and line", "[pipeline][diagnostics]") {
@@ -138,7 +138,8 @@ TEST_CASE("a GLSL error inside a brick points at the brick's own file and line",
     CHECK(d.code == "E-GLSL");
     CHECK(d.where.file == "shaderlib/specular_d/d_ggx.glsl");
     CHECK(d.where.line == line);
-    CHECK(d.where.column == static_cast<int>(src.find("undefinedSymbol") - src.rfind('\n', src.find("undefinedSymbol"))));
+    CHECK(d.where.column ==
+          static_cast<int>(src.find("undefinedSymbol") - src.rfind('\n', src.find("undefinedSymbol"))));
     CHECK_THAT(d.message, Catch::Contains("undefinedSymbol"));
   }
   fs::remove_all(root);
@@ -161,7 +162,8 @@ TEST_CASE("max_noh_decima_newton holds its derived tolerance down to n.v = 1e-3"
   requireNoLayerMessages(gpu);
 }
 
-TEST_CASE("each stability fix is shown: the naive form fails where the shipped brick passes", "[pipeline][stability][vulkan]") {
+TEST_CASE("each stability fix is shown: the naive form fails where the shipped brick passes",
+          "[pipeline][stability][vulkan]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   harness::VulkanHarness gpu(harness::testDeviceOptions());
   size_t variants = 0;
@@ -172,8 +174,8 @@ TEST_CASE("each stability fix is shown: the naive form fails where the shipped b
     ValidationRecord naive = validateProbe(gpu, buildBrickProbe(lib, brick, true), "unstable_variant", 16384, 11);
     INFO(brick.id << ": stable max_rel " << stable.stats.maxRel << ", naive max_rel " << naive.stats.maxRel
                   << ", naive NaN " << naive.stats.nanCount << ", worst error/allowed: stable "
-                  << stable.stats.worstRatio << ", naive " << naive.stats.worstRatio << " ("
-                  << brick.unstableProblem << ")");
+                  << stable.stats.worstRatio << ", naive " << naive.stats.worstRatio << " (" << brick.unstableProblem
+                  << ")");
     CHECK(stable.passed());
     CHECK_FALSE(naive.passed());
     // The naive form is clearly worse: NaN/Inf where the stable form has none, or a worst

@@ -77,8 +77,10 @@ void mapRecords(const ProbeLayout& from, const ProbeLayout& to, const std::vecto
     std::optional<double> v = useValue(use, toCols[k]);
     for (uint64_t r = 0; r < count; ++r) {
       float& dst = out[r * to.inStride + k];
-      if (it != fromCols.end()) dst = in[r * from.inStride + (it - fromCols.begin())];
-      else if (v) dst = static_cast<float>(*v);
+      if (it != fromCols.end())
+        dst = in[r * from.inStride + (it - fromCols.begin())];
+      else if (v)
+        dst = static_cast<float>(*v);
     }
   }
 }
@@ -104,7 +106,8 @@ PairStats comparePrunedFull(harness::VulkanHarness& gpu, const ShaderLibrary& li
       double gp = rp.gpu[ip], gf = rf.gpu[jf], refP = rp.reference[ip], refF = rf.reference[jf];
       double scale = std::max(std::abs(refF), kRelativeErrorFloor);
       double diff = std::abs(gp - gf);
-      double allowed = allowance(p.tolerance, refP, rp.conditioning[ip]) + allowance(f.tolerance, refF, rf.conditioning[jf]);
+      double allowed =
+          allowance(p.tolerance, refP, rp.conditioning[ip]) + allowance(f.tolerance, refF, rf.conditioning[jf]);
       double refRel = std::abs(refP - refF) / scale;
       ++s.values;
       if (!(diff <= allowed)) ++s.failures;  // NaN counts as a failure
@@ -181,7 +184,8 @@ TEST_CASE("pruned permutations of a constructed scene equal their feature-comple
   scene.file = "constructed.scene.json";
   scene.lights = {{"dir", "sun", {}}, {"point", "lamp", {}}};
   scene.materials.push_back({test::shippedMaterial("clearcoat_metal"), {test::useWith({{"clearCoat", {0.0}}})}, {}});
-  scene.materials.push_back({test::shippedMaterial("satin_sheen"), {test::useWith({{"sheenColor", {0.0, 0.0, 0.0}}})}, {}});
+  scene.materials.push_back(
+      {test::shippedMaterial("satin_sheen"), {test::useWith({{"sheenColor", {0.0, 0.0, 0.0}}})}, {}});
   scene.materials.push_back({test::shippedMaterial("filament_plastic"), {MaterialUse{}}, {}});
   size_t pairs = checkScene(gpu, lib, scene);
   CHECK(pairs == 3);

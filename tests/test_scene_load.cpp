@@ -36,7 +36,8 @@ const std::string kClearcoat = R"("../../materials/clearcoat_metal.json")";
 TEST_CASE("scene JSON: axes, lights and uses are read", "[scene]") {
   SceneDesc s = parseSceneJson(R"({"name": "t", "lights": [{"type": "point"}, {"type": "dir", "name": "sun"}],
     "environment": ["ibl_lut", "sh"], "precision": "fp16", "quality": ["high", "low"], "targets": ["spirv", "glsl450"],
-    "materials": [{"file": )" + kClearcoat + R"(, "uses": [{"clearCoat": 0.25}]}]})",
+    "materials": [{"file": )" + kClearcoat +
+                                   R"(, "uses": [{"clearCoat": 0.25}]}]})",
                                sceneFile(), test::shippedLibrary());
   CHECK(s.name == "t");
   CHECK(s.lightTypes() == std::vector<std::string>{"dir", "point"});
@@ -61,7 +62,8 @@ TEST_CASE("scene JSON: a material listed twice is merged, its uses appended", "[
 TEST_CASE("scene JSON errors carry codes and positions", "[scene]") {
   auto ds = errorsOf(R"({"lights": [{"type": "spher"}], "environment": "ibl",
  "precision": ["fp32", "fp64"], "quality": "ultra", "targets": ["spirv", "dxil"], "ligths": [],
- "materials": [{"file": )" + kClearcoat + R"(, "uses": [{"clearcoat": 0}, {"roughnes": 0.2},
+ "materials": [{"file": )" +
+                     kClearcoat + R"(, "uses": [{"clearcoat": 0}, {"roughnes": 0.2},
    {"clearCoat": 2.0}, {"baseColor": [1, 1]}, {"metallic": 0.5}]},
   {"file": "nope.json"}]})");
   auto expect = [&](const std::string& code, int line, const std::string& suggestion) {

@@ -80,8 +80,7 @@ TEST_CASE("valid combination counts equal a brute-force enumeration of the produ
       for (const auto& ls : subsets(allLightTypes()))
         for (const auto& e : allEnvironmentModes())
           for (const auto& pr : allPrecisions())
-            for (const auto& q : allQualityLevels())
-              brute += !invalidReason(m, AxisPoint{fs, ls, e, pr, q});
+            for (const auto& q : allQualityLevels()) brute += !invalidReason(m, AxisPoint{fs, ls, e, pr, q});
     INFO(m.name);
     CHECK(validCombinationCount(m) == brute);
     CHECK(brute <= product);
@@ -142,8 +141,9 @@ std::vector<std::string> libraryCodesAfterEdit(const std::string& modelFile, con
 }  // namespace
 
 TEST_CASE("the quality table is checked at load: unknown level, role, brick of another slot", "[scene]") {
-  auto codes = libraryCodesAfterEdit("cloth.json", R"("medium": {})",
-                                     R"("medium": {"sh_irradianse": "sh9_irradiance", "mip_mapping": "d_ggx"}, "ultra": {})");
+  auto codes =
+      libraryCodesAfterEdit("cloth.json", R"("medium": {})",
+                            R"("medium": {"sh_irradianse": "sh9_irradiance", "mip_mapping": "d_ggx"}, "ultra": {})");
   CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-FIELD") == 1);  // "ultra"
   CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-ROLE") == 1);
   CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-BRICK") == 1);
@@ -282,8 +282,8 @@ TEST_CASE("example scenes: required counts, far below possible, sorted keys, det
   };
   // showroom: 5 materials (one listed twice) x precision x2; mobile: 3 x quality x2;
   // gallery: 4 used glTF materials + 1 x environment x2; gallery.gltf: its 4 used materials.
-  for (const auto& e : std::vector<Expect>{{"showroom.json", 10}, {"mobile.json", 6}, {"gallery.json", 10},
-                                           {"gallery.gltf", 4}}) {
+  for (const auto& e :
+       std::vector<Expect>{{"showroom.json", 10}, {"mobile.json", 6}, {"gallery.json", 10}, {"gallery.gltf", 4}}) {
     INFO(e.file);
     ScenePlan plan = planScene(exampleScene(e.file), lib);
     CHECK(plan.required.size() == e.required);
@@ -298,7 +298,8 @@ TEST_CASE("example scenes: required counts, far below possible, sorted keys, det
   CHECK(showroom.requiredAxes.size() == 1);
   CHECK(showroom.requiredAxes[0].axis == "precision");
   auto keys = keysOf(showroom);
-  CHECK(std::count(keys.begin(), keys.end(), "clearcoat_metal.standard.dir+point+sphere.ibl_lut.fp16.without-clearcoat") == 1);
+  CHECK(std::count(keys.begin(), keys.end(),
+                   "clearcoat_metal.standard.dir+point+sphere.ibl_lut.fp16.without-clearcoat") == 1);
   CHECK(std::count(keys.begin(), keys.end(), "satin_sheen.standard.dir+point+sphere.ibl_lut.fp32.without-sheen") == 1);
   CHECK(std::count(keys.begin(), keys.end(), "brushed_metal.standard.dir+point+sphere.ibl_lut.fp32") == 1);
   CHECK(std::count(keys.begin(), keys.end(), "worn_car_paint.standard.dir+point+sphere.ibl_lut.fp32") == 1);
@@ -341,7 +342,8 @@ TEST_CASE("diffKeys lists missing and extra keys, empty when nothing is missing"
   CHECK(diffKeys({"a", "b"}, {"b", "c"}) == "- a\n+ c\n");
 }
 
-TEST_CASE("verify: a package missing one required permutation fails with the key; a bad manifest is bad input", "[scene][cli][vulkan]") {
+TEST_CASE("verify: a package missing one required permutation fails with the key; a bad manifest is bad input",
+          "[scene][cli][vulkan]") {
   namespace fs = std::filesystem;
   fs::path dir = fs::temp_directory_path() / ("mb_scene_verify_" + std::to_string(::getpid()));
   fs::remove_all(dir);

@@ -41,8 +41,8 @@ Value evalBrick(harness::VulkanHarness& gpu, const std::string& id, const std::m
 }
 
 std::map<std::string, double> geometry() {
-  return {{"n.x", 0}, {"n.y", 0}, {"n.z", 1}, {"v.x", 0.6}, {"v.y", 0}, {"v.z", 0.8},
-          {"l.x", -0.6}, {"l.y", 0}, {"l.z", 0.8}};
+  return {{"n.x", 0},   {"n.y", 0},    {"n.z", 1}, {"v.x", 0.6}, {"v.y", 0},
+          {"v.z", 0.8}, {"l.x", -0.6}, {"l.y", 0}, {"l.z", 0.8}};
 }
 
 }  // namespace

@@ -59,7 +59,8 @@ TEST_CASE("the stress set has exact n.h = 1, v = -l, zero and scaled vectors, ta
     if (unitN && at("v.x") == -at("l.x") && at("v.y") == at("l.y") && at("v.z") == at("l.z") && at("v.z") > 0) ++mirror;
     if (at("v.x") == -at("l.x") && at("v.y") == -at("l.y") && at("v.z") == -at("l.z") && at("v.x") != 0) ++opposite;
     bool zero = (at("v.x") == 0 && at("v.y") == 0 && at("v.z") == 0);
-    double vlen = std::sqrt(double(at("v.x")) * at("v.x") + double(at("v.y")) * at("v.y") + double(at("v.z")) * at("v.z"));
+    double vlen =
+        std::sqrt(double(at("v.x")) * at("v.x") + double(at("v.y")) * at("v.y") + double(at("v.z")) * at("v.z"));
     inDomain += in.inDomain[i];
     zeroIn += zero && in.inDomain[i];
     grazingIn += unitN && vlen > 0 && at("v.z") / vlen < 1e-3 * 0.99 && in.inDomain[i];
@@ -68,10 +69,10 @@ TEST_CASE("the stress set has exact n.h = 1, v = -l, zero and scaled vectors, ta
   }
   CHECK(mirror > 0);
   CHECK(opposite > 0);
-  CHECK(zeroIn == 0);                  // zero-length vectors are out of domain
-  CHECK(grazingIn == 0);               // n.v below d_ggx's declared 1e-3 is out of domain
-  CHECK(scaledIn > 0);                 // at fp32 scaled vectors are in domain
-  CHECK(alphaZeroIn == 0);             // alpha = 0 is below d_ggx's declared 0.002025
+  CHECK(zeroIn == 0);       // zero-length vectors are out of domain
+  CHECK(grazingIn == 0);    // n.v below d_ggx's declared 1e-3 is out of domain
+  CHECK(scaledIn > 0);      // at fp32 scaled vectors are in domain
+  CHECK(alphaZeroIn == 0);  // alpha = 0 is below d_ggx's declared 0.002025
   CHECK(inDomain > 0);
   CHECK(inDomain < in.count());
   // At fp16 only unit-length vectors are in domain.
@@ -162,7 +163,7 @@ TEST_CASE("stress over the whole library: no in-domain NaN/Inf at fp32; fp16 rep
     }
   }
   WARN("fp16 (report only):\n" << formatStressTable(fp16));
-  WARN("whole-library stress took "
-       << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s");
+  WARN("whole-library stress took " << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()
+                                    << " s");
   CHECK(gpu.validationMessages().empty());
 }

@@ -22,8 +22,11 @@ MaterialDesc tintedMaterial(const std::string& surfaceGlsl) {
   m.name = "tinted";
   m.model = "standard";
   m.sourceFile = "user/tinted.mat";
-  m.bricks = {{"roughness", "roughness_clamped"}, {"diffuse", "diffuse_lambert"}, {"specular_d", "d_ggx"},
-              {"specular_v", "v_smith_ggx_correlated"}, {"fresnel", "f_schlick"}};
+  m.bricks = {{"roughness", "roughness_clamped"},
+              {"diffuse", "diffuse_lambert"},
+              {"specular_d", "d_ggx"},
+              {"specular_v", "v_smith_ggx_correlated"},
+              {"fresnel", "f_schlick"}};
   const ShadingModel* model = lib.findModel("standard");
   for (const auto& in : model->inputs) {
     if (!in.feature.empty()) continue;
@@ -109,7 +112,7 @@ TEST_CASE("a GLSL error in surface code is reported at the user's file and line"
     INFO(formatDiagnostic(d));
     CHECK(d.code == "E-GLSL");
     CHECK(d.where.file == "user/tinted.mat");
-    CHECK(d.where.line == 14);  // the snippet's third line
+    CHECK(d.where.line == 14);    // the snippet's third line
     CHECK(d.where.column == 21);  // where 'wearr' starts on that line
   }
 }

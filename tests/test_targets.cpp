@@ -46,17 +46,19 @@ TEST_CASE("fp32 permutations cross-compile to every target and pass its check", 
     // OpenGL has no push constants: the block became a uniform block at the first binding no
     // uniform block uses.
     unsigned binding = 0;
-    for (const auto& u : b.artifacts.reflection["uniform_buffers"]) binding = std::max(binding, u["binding"].get<unsigned>() + 1);
+    for (const auto& u : b.artifacts.reflection["uniform_buffers"])
+      binding = std::max(binding, u["binding"].get<unsigned>() + 1);
     const std::string push = "layout(binding = " + std::to_string(binding) + ", std140) uniform MbPush";
     CHECK(b.artifacts.targets.at("glsl450").find(push) != std::string::npos);
     CHECK(b.artifacts.targets.at("essl310").find(push) != std::string::npos);
   }
 }
 
-TEST_CASE("fp16: GLSL 450, HLSL (min16float) and MSL from the half module, ESSL 3.10 from the mediump form", "[targets][fp16]") {
+TEST_CASE("fp16: GLSL 450, HLSL (min16float) and MSL from the half module, ESSL 3.10 from the mediump form",
+          "[targets][fp16]") {
   const ShaderLibrary& lib = test::shippedLibrary();
-  auto perms = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic", "clearcoat_metal"}), {"dir", "point"},
-                                    "ibl_lut", "fp16");
+  auto perms = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic", "clearcoat_metal"}),
+                                    {"dir", "point"}, "ibl_lut", "fp16");
   BuildOptions o;
   o.targets = allTargets();
   auto built = buildPermutations(lib, perms, o);
@@ -101,12 +103,14 @@ TEST_CASE("fp16: GLSL 450, HLSL (min16float) and MSL from the half module, ESSL 
   };
   CHECK(relaxedCount(compileComputeGlsl(mediump.glsl, mediump.fileName).spirv) > 100);
   auto fp32 = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir", "point"}, "ibl_lut");
-  CHECK(relaxedCount(compileComputeGlsl(emitPermutation(lib, fp32[0], false, EmitMode::Engine, true).glsl, "fp32").spirv) == 0);
+  CHECK(relaxedCount(
+            compileComputeGlsl(emitPermutation(lib, fp32[0], false, EmitMode::Engine, true).glsl, "fp32").spirv) == 0);
 }
 
 TEST_CASE("each target's check rejects a broken output", "[targets]") {
-  const std::string ok = "#version 450\nlayout(local_size_x = 1) in;\nlayout(binding = 0, std430) buffer B { float x[]; } b;\n"
-                         "void main() { b.x[gl_GlobalInvocationID.x] = 1.0; }\n";
+  const std::string ok =
+      "#version 450\nlayout(local_size_x = 1) in;\nlayout(binding = 0, std430) buffer B { float x[]; } b;\n"
+      "void main() { b.x[gl_GlobalInvocationID.x] = 1.0; }\n";
   CHECK(checkGlsl(ok, false).empty());
   CHECK(checkGlsl(ok, true).find("#version 310 es") != std::string::npos);  // not the ES target's
   std::string es = ok;
@@ -116,8 +120,9 @@ TEST_CASE("each target's check rejects a broken output", "[targets]") {
   CHECK(!checkGlsl("#version 450\nlayout(local_size_x = 1) in;\nuniform float u;\nvoid main() {}\n", false).empty());
   CHECK(!checkGlsl("#version 450\nvoid main() { undefined(); }\n", false).empty());
 
-  const std::string hlsl = "RWByteAddressBuffer o : register(u0);\n[numthreads(64, 1, 1)]\n"
-                           "void main(uint3 id : SV_DispatchThreadID) { o.Store(id.x * 4, asuint(1.0f)); }\n";
+  const std::string hlsl =
+      "RWByteAddressBuffer o : register(u0);\n[numthreads(64, 1, 1)]\n"
+      "void main(uint3 id : SV_DispatchThreadID) { o.Store(id.x * 4, asuint(1.0f)); }\n";
   CHECK(checkHlsl(hlsl).empty());
   CHECK(checkHlsl("[numthreads(64, 1, 1)]\nvoid notMain() {}\n").find("no entry point 'main'") != std::string::npos);
   CHECK(!checkHlsl("[numthreads(64, 1, 1)]\nvoid main() { float3 x = undefined; }\n").empty());
@@ -139,7 +144,8 @@ TEST_CASE("each target's check rejects a broken output", "[targets]") {
   CHECK(checkMsl(wrongIndex, m).find("[[buffer(0)]]") != std::string::npos);
 }
 
-TEST_CASE("reflection gives exact std140 offsets of a uniform block, and the buffers of a permutation", "[targets][reflection]") {
+TEST_CASE("reflection gives exact std140 offsets of a uniform block, and the buffers of a permutation",
+          "[targets][reflection]") {
   const std::string glsl = R"(#version 450
 layout(local_size_x = 32, local_size_y = 2) in;
 layout(std140, set = 0, binding = 2) uniform Params { vec3 tint; float wear; vec2 uv; float rough[2]; mat3 m; } params;
@@ -185,7 +191,8 @@ void main() {
   REQUIRE(r["push_constants"].size() == 1);
   CHECK(r["push_constants"][0]["name"] == "Push");
   CHECK(r["push_constants"][0]["size"] == 8);
-  CHECK(r["push_constants"][0]["members"][1] == nlohmann::json({{"name", "scale"}, {"type", "float"}, {"offset", 4}, {"size", 4}}));
+  CHECK(r["push_constants"][0]["members"][1] ==
+        nlohmann::json({{"name", "scale"}, {"type", "float"}, {"offset", 4}, {"size", 4}}));
   CHECK(!r["push_constants"][0].contains("binding"));
 
   // A permutation's kernel (docs/package.md "Kernel ABI"): records in, results out, a count.
@@ -201,7 +208,8 @@ void main() {
   CHECK((*mbIn)["readonly"] == true);
   CHECK((*mbOut)["writeonly"] == true);
   REQUIRE(pr["push_constants"].size() == 1);
-  CHECK(pr["push_constants"][0]["members"][0] == nlohmann::json({{"name", "count"}, {"type", "uint"}, {"offset", 0}, {"size", 4}}));
+  CHECK(pr["push_constants"][0]["members"][0] ==
+        nlohmann::json({{"name", "count"}, {"type", "uint"}, {"offset", 0}, {"size", 4}}));
 }
 
 TEST_CASE("crossCompile names the permutation and the target when SPIRV-Cross cannot read the module", "[targets]") {

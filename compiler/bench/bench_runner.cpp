@@ -25,7 +25,8 @@ bool selected(const std::vector<std::string>& filter, const std::string& name) {
 ErrorSummary errorAgainst(const ProbeRun& run, const ProbeLayout& layout, const Yardstick& y) {
   std::vector<double> truth(run.count * layout.outStride);
   parallelFor(run.count, [&](size_t i) {
-    std::vector<double> record(run.inputs.begin() + i * layout.inStride, run.inputs.begin() + (i + 1) * layout.inStride);
+    std::vector<double> record(run.inputs.begin() + i * layout.inStride,
+                               run.inputs.begin() + (i + 1) * layout.inStride);
     y.eval(record.data(), truth.data() + i * layout.outStride);
   });
   ErrorSummary e;
@@ -39,9 +40,9 @@ BenchItem measure(harness::VulkanHarness& gpu, const ProbeProgram& probe, const 
   BenchItem item;
   item.id = probe.shader.key;
   item.spirvInstructions = spirvInstructionCount(probe.compiled.spirv);
-  item.cost = measureCost(gpu, compileComputeGlsl(timed.glsl, timed.fileName),
-                          compileComputeGlsl(baseline.glsl, baseline.fileName), probe.shader.layout,
-                          probe.domain, o.cost);
+  item.cost =
+      measureCost(gpu, compileComputeGlsl(timed.glsl, timed.fileName),
+                  compileComputeGlsl(baseline.glsl, baseline.fileName), probe.shader.layout, probe.domain, o.cost);
   ProbeRun run = runProbe(gpu, probe, generateSamples(probe.shader.layout, probe.domain, o.samples, o.seed));
   item.vsReference = compare(run, probe);
   item.yardstick = yardstick.kind;
@@ -53,11 +54,12 @@ BenchItem measure(harness::VulkanHarness& gpu, const ProbeProgram& probe, const 
 void report(std::ostream* progress, const std::string& group, const BenchItem& it, Clock::time_point t0) {
   if (!progress) return;
   char line[320];
-  std::snprintf(line, sizeof line,
-                "bench: %-18s %-40s %8.2f ns/eval (min %.2f, raw %.2f, loop %.2f) %5zu instr  max err %.3g vs %s  [%.1f s]\n",
-                group.c_str(), it.id.c_str(), it.cost.nsPerEval, it.cost.nsPerEvalMin, it.cost.nsRaw, it.cost.nsBaseline,
-                it.spirvInstructions, it.error.maxScaled(), it.yardstick.c_str(),
-                std::chrono::duration<double>(Clock::now() - t0).count());
+  std::snprintf(
+      line, sizeof line,
+      "bench: %-18s %-40s %8.2f ns/eval (min %.2f, raw %.2f, loop %.2f) %5zu instr  max err %.3g vs %s  [%.1f s]\n",
+      group.c_str(), it.id.c_str(), it.cost.nsPerEval, it.cost.nsPerEvalMin, it.cost.nsRaw, it.cost.nsBaseline,
+      it.spirvInstructions, it.error.maxScaled(), it.yardstick.c_str(),
+      std::chrono::duration<double>(Clock::now() - t0).count());
   *progress << line << std::flush;
 }
 
@@ -76,9 +78,8 @@ void markFrontier(BenchGroup& group) {
   for (size_t i : paretoFrontier(points)) group.items[i].onFrontier = true;
 }
 
-BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
-                     const std::vector<MaterialDesc>& materials, const BenchOptions& o,
-                     std::ostream* progress) {
+BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, const std::vector<MaterialDesc>& materials,
+                     const BenchOptions& o, std::ostream* progress) {
   BenchReport rep;
   rep.device = gpu.deviceName();
   rep.toolchain = toolchainVersion();

@@ -23,18 +23,18 @@ struct BenchOptions {
   uint64_t samples = 4096;          // error samples per brick / permutation / LUT
   uint64_t seed = 1;
   CostOptions cost;
-  std::vector<uint32_t> lutSizes;   // DFG LUT sizes for the IBL table (empty: none)
+  std::vector<uint32_t> lutSizes;  // DFG LUT sizes for the IBL table (empty: none)
 };
 
 struct BenchItem {
   std::string id;    // brick id, or permutation key
   std::string kind;  // "brick" or "permutation"
   CostMeasurement cost;
-  size_t spirvInstructions = 0;  // the probe's, after spirv-opt (as validate reports it)
-  std::string yardstick;         // "ground_truth" or "reference"
+  size_t spirvInstructions = 0;                // the probe's, after spirv-opt (as validate reports it)
+  std::string yardstick;                       // "ground_truth" or "reference"
   std::vector<std::string> groundTruthBricks;  // permutations: bricks replaced by their truth
-  ErrorSummary error;    // GPU output against the yardstick
-  ErrorStats vsReference;  // GPU output against the brick's own reference (fp32 error)
+  ErrorSummary error;                          // GPU output against the yardstick
+  ErrorStats vsReference;                      // GPU output against the brick's own reference (fp32 error)
   bool onFrontier = false;
 };
 
@@ -71,8 +71,7 @@ struct BenchReport {
 void markFrontier(BenchGroup& group);
 
 // `progress` (may be null) gets one line per measured item.
-BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
-                     const std::vector<MaterialDesc>& materials, const BenchOptions& options,
-                     std::ostream* progress);
+BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, const std::vector<MaterialDesc>& materials,
+                     const BenchOptions& options, std::ostream* progress);
 
 }  // namespace mb::bench

@@ -22,9 +22,8 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-CostMeasurement measureCost(harness::VulkanHarness& gpu, const CompileResult& timed,
-                            const CompileResult& baseline, const ProbeLayout& layout,
-                            const SampleDomain& domain, const CostOptions& o) {
+CostMeasurement measureCost(harness::VulkanHarness& gpu, const CompileResult& timed, const CompileResult& baseline,
+                            const ProbeLayout& layout, const SampleDomain& domain, const CostOptions& o) {
   auto timedKernel = gpu.createKernel(timed.spirv);
   auto baseKernel = gpu.createKernel(baseline.spirv);
   CostMeasurement m;
@@ -35,7 +34,7 @@ CostMeasurement measureCost(harness::VulkanHarness& gpu, const CompileResult& ti
     m.gpuTimestamps = m.gpuTimestamps && r.gpuTimestamps;
     return r.gpuMs;
   };
-  run(*baseKernel);  // JIT warm-up
+  run(*baseKernel);                        // JIT warm-up
   double calibration = run(*timedKernel);  // JIT warm-up
   if (o.records == 0) {
     calibration = run(*timedKernel);
@@ -58,8 +57,8 @@ CostMeasurement measureCost(harness::VulkanHarness& gpu, const CompileResult& ti
   m.nsRaw = median(timedMs) * toNs;
   m.nsBaseline = median(baseMs) * toNs;
   m.nsPerEval = median(netMs) * toNs;
-  m.nsPerEvalMin = (*std::min_element(timedMs.begin(), timedMs.end()) -
-                    *std::min_element(baseMs.begin(), baseMs.end())) * toNs;
+  m.nsPerEvalMin =
+      (*std::min_element(timedMs.begin(), timedMs.end()) - *std::min_element(baseMs.begin(), baseMs.end())) * toNs;
   return m;
 }
 

@@ -9,8 +9,7 @@
 
 namespace mb::bench {
 
-bool measureDfgLuts(const ShaderLibrary& lib, const BenchOptions& o, IblSection& out,
-                    std::ostream* progress) {
+bool measureDfgLuts(const ShaderLibrary& lib, const BenchOptions& o, IblSection& out, std::ostream* progress) {
   std::vector<std::string> envBricks = lib.bricksOfSlot("env_brdf");
   if (envBricks.empty()) return false;
   // The samples of the first env_brdf brick: validate and bench draw the same ones for it.
@@ -46,13 +45,12 @@ bool measureDfgLuts(const ShaderLibrary& lib, const BenchOptions& o, IblSection&
       for (const Point& p : points) {
         DfgSample d = sampleBilinear(lut, p.NoV, p.roughness);
         // Split sum with Schlick's F: f0 Int Gv + (1 - f0) Int Gv Fc (ibl_reference.hpp).
-        for (double f : p.f0)
-          item.error.add(f * d.y + (1.0 - f) * d.x, f * p.truth.gv + (1.0 - f) * p.truth.gvFc);
+        for (double f : p.f0) item.error.add(f * d.y + (1.0 - f) * d.x, f * p.truth.gv + (1.0 - f) * p.truth.gvFc);
       }
       if (progress) {
         char line[200];
-        std::snprintf(line, sizeof line, "bench: %-18s dfg_lut %3ux%-3u %s %8llu bytes  max err %.3g\n", "ibl",
-                      size, size, lutFormatName(format).c_str(), static_cast<unsigned long long>(item.bytes),
+        std::snprintf(line, sizeof line, "bench: %-18s dfg_lut %3ux%-3u %s %8llu bytes  max err %.3g\n", "ibl", size,
+                      size, lutFormatName(format).c_str(), static_cast<unsigned long long>(item.bytes),
                       item.error.maxScaled());
         *progress << line << std::flush;
       }

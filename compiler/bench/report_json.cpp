@@ -11,9 +11,15 @@ nlohmann::json number(double v) {
 }
 
 nlohmann::json toJson(const ErrorSummary& e) {
-  return {{"values", e.values()},         {"max", number(e.maxScaled())}, {"mean", number(e.meanScaled())},
-          {"max_abs", number(e.maxAbs())}, {"mean_abs", number(e.meanAbs())}, {"max_rel", number(e.maxRel())},
-          {"mean_rel", number(e.meanRel())}, {"non_finite", e.nonFinite()}, {"truth_invalid", e.truthInvalid()}};
+  return {{"values", e.values()},
+          {"max", number(e.maxScaled())},
+          {"mean", number(e.meanScaled())},
+          {"max_abs", number(e.maxAbs())},
+          {"mean_abs", number(e.meanAbs())},
+          {"max_rel", number(e.maxRel())},
+          {"mean_rel", number(e.meanRel())},
+          {"non_finite", e.nonFinite()},
+          {"truth_invalid", e.truthInvalid()}};
 }
 
 nlohmann::json toJson(const BenchItem& it) {
@@ -43,20 +49,19 @@ nlohmann::json toJson(const BenchItem& it) {
 
 nlohmann::json toJson(const BenchReport& r) {
   const BenchOptions& o = r.options;
-  nlohmann::json out{
-      {"tool", "matbricks bench " MB_VERSION},
-      {"device", r.device},
-      {"toolchain", r.toolchain},
-      {"options",
-       {{"repeats", o.cost.repeats},
-        {"samples", o.samples},
-        {"seed", o.seed},
-        {"records", o.cost.records},
-        {"iterations", o.cost.iterations},
-        {"target_dispatch_ms", o.cost.targetDispatchMs},
-        {"lut_sizes", o.lutSizes}}},
-      {"error_metric", "|x - truth| / max(1, |truth|) over every output value of every sample"},
-      {"groups", nlohmann::json::array()}};
+  nlohmann::json out{{"tool", "matbricks bench " MB_VERSION},
+                     {"device", r.device},
+                     {"toolchain", r.toolchain},
+                     {"options",
+                      {{"repeats", o.cost.repeats},
+                       {"samples", o.samples},
+                       {"seed", o.seed},
+                       {"records", o.cost.records},
+                       {"iterations", o.cost.iterations},
+                       {"target_dispatch_ms", o.cost.targetDispatchMs},
+                       {"lut_sizes", o.lutSizes}}},
+                     {"error_metric", "|x - truth| / max(1, |truth|) over every output value of every sample"},
+                     {"groups", nlohmann::json::array()}};
   for (const auto& g : r.groups) {
     nlohmann::json items = nlohmann::json::array(), frontier = nlohmann::json::array();
     for (const auto& it : g.items) items.push_back(toJson(it));
@@ -67,12 +72,14 @@ nlohmann::json toJson(const BenchReport& r) {
   if (r.hasIbl) {
     nlohmann::json luts = nlohmann::json::array();
     for (const auto& l : r.ibl.luts)
-      luts.push_back({{"size", l.size}, {"format", lutFormatName(l.format)}, {"bytes", l.bytes}, {"error", toJson(l.error)}});
-    out["ibl"] = {{"samples_from", r.ibl.samplesFrom},
-                  {"samples", r.ibl.samples},
-                  {"ground_truth", "split-sum integral f0 Int Gv + (1 - f0) Int Gv Fc, GGX, exact correlated Smith (quadrature)"},
-                  {"filtering", "bilinear, clamp-to-edge, texel centres (i + 0.5)/size, emulated on the CPU in double"},
-                  {"luts", luts}};
+      luts.push_back(
+          {{"size", l.size}, {"format", lutFormatName(l.format)}, {"bytes", l.bytes}, {"error", toJson(l.error)}});
+    out["ibl"] = {
+        {"samples_from", r.ibl.samplesFrom},
+        {"samples", r.ibl.samples},
+        {"ground_truth", "split-sum integral f0 Int Gv + (1 - f0) Int Gv Fc, GGX, exact correlated Smith (quadrature)"},
+        {"filtering", "bilinear, clamp-to-edge, texel centres (i + 0.5)/size, emulated on the CPU in double"},
+        {"luts", luts}};
   }
   return out;
 }

@@ -39,8 +39,8 @@ void writeGroup(std::ostringstream& s, const BenchGroup& grp) {
     double ratio = b.error.maxScaled() > 0 ? a.error.maxScaled() / b.error.maxScaled() : 0;
     long dInstr = long(b.spirvInstructions) - long(a.spirvInstructions);
     s << "; then `" << b.id << "`: +" << ns(b.cost.nsPerEval - a.cost.nsPerEval) << " ns and "
-      << (dInstr >= 0 ? "+" : "") << dInstr << " instructions buy max error " << g3(a.error.maxScaled())
-      << " → " << g3(b.error.maxScaled()) << (ratio > 0 ? " (" + g3(ratio) + "x smaller)" : "");
+      << (dInstr >= 0 ? "+" : "") << dInstr << " instructions buy max error " << g3(a.error.maxScaled()) << " → "
+      << g3(b.error.maxScaled()) << (ratio > 0 ? " (" + g3(ratio) + "x smaller)" : "");
   }
   s << ".\n\n";
 }
@@ -61,8 +61,8 @@ void writeIbl(std::ostringstream& s, const BenchReport& r) {
           << ") | " << ns(it.cost.nsPerEval) << " ns/eval, " << it.spirvInstructions << " instructions | "
           << g3(it.error.maxScaled()) << " | " << g3(it.error.meanScaled()) << " |\n";
   for (const auto& l : r.ibl.luts)
-    s << "| DFG LUT " << l.size << "×" << l.size << " " << lutFormatName(l.format) << " | " << l.bytes
-      << " bytes | " << g3(l.error.maxScaled()) << " | " << g3(l.error.meanScaled()) << " |\n";
+    s << "| DFG LUT " << l.size << "×" << l.size << " " << lutFormatName(l.format) << " | " << l.bytes << " bytes | "
+      << g3(l.error.maxScaled()) << " | " << g3(l.error.meanScaled()) << " |\n";
   s << "\n";
 }
 

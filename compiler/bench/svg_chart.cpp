@@ -13,7 +13,6 @@ constexpr double kWidth = 820, kHeight = 540;
 constexpr double kLeft = 90, kRight = 200, kTop = 64, kBottom = 72;  // margins
 constexpr double kErrorFloor = 1e-12;  // an exact 0 is drawn here (log axis), labelled "= 0"
 
-
 // 1, 2 or 5 times a power of ten, about range/5.
 double niceStep(double range) {
   double p = std::pow(10.0, std::floor(std::log10(range / 5.0)));
@@ -23,8 +22,8 @@ double niceStep(double range) {
 }
 
 struct Axes {
-  double x0, x1;   // cost range
-  int y0, y1;      // log10 error range (decades)
+  double x0, x1;  // cost range
+  int y0, y1;     // log10 error range (decades)
   double px(double cost) const { return kLeft + (cost - x0) / (x1 - x0) * (kWidth - kLeft - kRight); }
   double py(double err) const {
     double e = std::log10(std::max(err, kErrorFloor));
@@ -59,17 +58,17 @@ void drawAxes(std::ostringstream& s, const Axes& a) {
   for (double x = std::ceil(a.x0 / step) * step; x <= a.x1 + 1e-9 * step; x += step) {
     double X = a.px(x);
     s << "<line x1=\"" << X << "\" y1=\"" << top << "\" x2=\"" << X << "\" y2=\"" << bottom
-      << "\" stroke=\"#e6e6e6\"/>\n<text x=\"" << X << "\" y=\"" << bottom + 18
-      << "\" text-anchor=\"middle\">" << printfDouble("%g", std::abs(x) < 1e-9 * step ? 0.0 : x) << "</text>\n";
+      << "\" stroke=\"#e6e6e6\"/>\n<text x=\"" << X << "\" y=\"" << bottom + 18 << "\" text-anchor=\"middle\">"
+      << printfDouble("%g", std::abs(x) < 1e-9 * step ? 0.0 : x) << "</text>\n";
   }
   for (int d = a.y0; d <= a.y1; ++d) {
     double Y = a.py(std::pow(10.0, d));
     s << "<line x1=\"" << left << "\" y1=\"" << Y << "\" x2=\"" << right << "\" y2=\"" << Y
-      << "\" stroke=\"#e6e6e6\"/>\n<text x=\"" << left - 8 << "\" y=\"" << Y + 4
-      << "\" text-anchor=\"end\">1e" << d << "</text>\n";
+      << "\" stroke=\"#e6e6e6\"/>\n<text x=\"" << left - 8 << "\" y=\"" << Y + 4 << "\" text-anchor=\"end\">1e" << d
+      << "</text>\n";
   }
-  s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << right - left << "\" height=\""
-    << bottom - top << "\" fill=\"none\" stroke=\"#333333\"/>\n";
+  s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << right - left << "\" height=\"" << bottom - top
+    << "\" fill=\"none\" stroke=\"#333333\"/>\n";
   s << "<text x=\"" << (left + right) / 2 << "\" y=\"" << kHeight - 24
     << "\" text-anchor=\"middle\">cost: ns per evaluation (net of the empty-loop baseline)</text>\n";
   s << "<text transform=\"translate(22 " << (top + bottom) / 2
@@ -101,7 +100,8 @@ Placement placeLabel(double X, double Y, size_t chars, const std::vector<Box>& t
       p.x = left ? X - 8 : X + 8;
       p.box = {left ? p.x - w : p.x, Y + dy - 10, left ? p.x : p.x + w, Y + dy + 3};
       if (!haveFirst) first = p, haveFirst = true;
-      bool inside = p.box.x0 >= 2 && p.box.x1 <= kWidth - 2 && p.box.y0 >= kTop - 12 && p.box.y1 <= kHeight - kBottom + 12;
+      bool inside =
+          p.box.x0 >= 2 && p.box.x1 <= kWidth - 2 && p.box.y0 >= kTop - 12 && p.box.y1 <= kHeight - kBottom + 12;
       bool free = inside && std::none_of(taken.begin(), taken.end(), [&](const Box& b) {
                     return p.box.x0 < b.x1 && b.x0 < p.box.x1 && p.box.y0 < b.y1 && b.y0 < p.box.y1;
                   });
@@ -116,11 +116,20 @@ std::string xmlEscape(const std::string& in) {
   std::string out;
   for (char c : in) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -150,9 +159,8 @@ std::string paretoSvg(const BenchGroup& g, const std::string& subtitle) {
   // Points first, then labels placed greedily (in cost order) at the first spot that
   // overlaps no point and no earlier label, with a leader line when moved away.
   bool anyTruth = std::any_of(order.begin(), order.end(), [](auto* it) { return it->yardstick == "ground_truth"; });
-  bool anyOffFrontierByYardstick = anyTruth && std::any_of(order.begin(), order.end(), [](auto* it) {
-    return it->yardstick != "ground_truth";
-  });
+  bool anyOffFrontierByYardstick =
+      anyTruth && std::any_of(order.begin(), order.end(), [](auto* it) { return it->yardstick != "ground_truth"; });
   const double lx = kWidth - kRight + 14, ly = kTop + 10;
   std::vector<Box> taken{{lx - 6, ly - 8, kWidth, ly + (anyOffFrontierByYardstick ? 62 : 28)}};  // the legend
   std::vector<std::pair<double, double>> at;
@@ -162,15 +170,15 @@ std::string paretoSvg(const BenchGroup& g, const std::string& subtitle) {
     double X = a.px(it->cost.nsPerEval), Y = std::isfinite(e) ? a.py(e) : kTop + 6;
     at.push_back({X, Y});
     taken.push_back({X - 5, Y - 5, X + 5, Y + 5});
-    std::string tip = "<title>" + xmlEscape(it->id) + ": " + printfDouble("%.3g", it->cost.nsPerEval) + " ns, max error " +
-                      printfDouble("%.3g", e) + "</title>";
+    std::string tip = "<title>" + xmlEscape(it->id) + ": " + printfDouble("%.3g", it->cost.nsPerEval) +
+                      " ns, max error " + printfDouble("%.3g", e) + "</title>";
     if (anyTruth && it->yardstick != "ground_truth") {
-      s << "<rect x=\"" << X - 4 << "\" y=\"" << Y - 4 << "\" width=\"8\" height=\"8\" fill=\"#bbbbbb\" stroke=\"#777777\">"
-        << tip << "</rect>\n";
+      s << "<rect x=\"" << X - 4 << "\" y=\"" << Y - 4
+        << "\" width=\"8\" height=\"8\" fill=\"#bbbbbb\" stroke=\"#777777\">" << tip << "</rect>\n";
     } else {
       s << "<circle cx=\"" << X << "\" cy=\"" << Y << "\" r=\"4.5\" stroke-width=\"1.5\" "
-        << (it->onFrontier ? "fill=\"#d62728\" stroke=\"#d62728\"" : "fill=\"white\" stroke=\"#555555\"") << ">"
-        << tip << "</circle>\n";
+        << (it->onFrontier ? "fill=\"#d62728\" stroke=\"#d62728\"" : "fill=\"white\" stroke=\"#555555\"") << ">" << tip
+        << "</circle>\n";
     }
   }
   s << "</g>\n<g font-size=\"11\">\n";
@@ -192,10 +200,12 @@ std::string paretoSvg(const BenchGroup& g, const std::string& subtitle) {
   // Legend.
   s << "<g font-size=\"11\"><circle cx=\"" << lx << "\" cy=\"" << ly << "\" r=\"4.5\" fill=\"#d62728\"/>"
     << "<text x=\"" << lx + 10 << "\" y=\"" << ly + 4 << "\">Pareto frontier</text>"
-    << "<circle cx=\"" << lx << "\" cy=\"" << ly + 20 << "\" r=\"4.5\" fill=\"white\" stroke=\"#555555\" stroke-width=\"1.5\"/>"
+    << "<circle cx=\"" << lx << "\" cy=\"" << ly + 20
+    << "\" r=\"4.5\" fill=\"white\" stroke=\"#555555\" stroke-width=\"1.5\"/>"
     << "<text x=\"" << lx + 10 << "\" y=\"" << ly + 24 << "\">dominated</text>";
   if (anyOffFrontierByYardstick)
-    s << "<rect x=\"" << lx - 4 << "\" y=\"" << ly + 36 << "\" width=\"8\" height=\"8\" fill=\"#bbbbbb\" stroke=\"#777777\"/>"
+    s << "<rect x=\"" << lx - 4 << "\" y=\"" << ly + 36
+      << "\" width=\"8\" height=\"8\" fill=\"#bbbbbb\" stroke=\"#777777\"/>"
       << "<text x=\"" << lx + 10 << "\" y=\"" << ly + 44 << "\">no ground truth: fp32</text>"
       << "<text x=\"" << lx + 10 << "\" y=\"" << ly + 58 << "\">error only, off frontier</text>";
   s << "</g>\n";

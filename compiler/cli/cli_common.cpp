@@ -10,8 +10,7 @@
 namespace mb::cli {
 
 ShaderLibrary loadLibrary(const GlobalOptions& g) {
-  return ShaderLibrary::load(g.shaderlib.empty() ? ShaderLibrary::defaultRoot()
-                                                 : std::filesystem::path(g.shaderlib));
+  return ShaderLibrary::load(g.shaderlib.empty() ? ShaderLibrary::defaultRoot() : std::filesystem::path(g.shaderlib));
 }
 
 std::vector<MaterialDesc> loadMaterials(const std::vector<std::string>& paths, const ShaderLibrary& lib,

@@ -25,9 +25,9 @@ enum ExitCode : int {
 };
 
 struct GlobalOptions {
-  std::string shaderlib;         // --shaderlib; empty = default root
-  std::string device;            // --device substring
-  bool vulkanValidation = false; // --vk-validation or MATBRICKS_VALIDATION=1
+  std::string shaderlib;                   // --shaderlib; empty = default root
+  std::string device;                      // --device substring
+  bool vulkanValidation = false;           // --vk-validation or MATBRICKS_VALIDATION=1
   std::string diagnosticsFormat = "text";  // --diagnostics-format text|json
 };
 

@@ -35,7 +35,10 @@ void checkKnown(const std::vector<std::string>& names, const std::vector<std::st
   std::vector<Diagnostic> errors;
   for (const auto& n : names)
     if (std::find(known.begin(), known.end(), n) == known.end())
-      errors.push_back({Severity::Error, code, {"<command line>", 0, 0}, std::string("unknown ") + what + " '" + n + "'",
+      errors.push_back({Severity::Error,
+                        code,
+                        {"<command line>", 0, 0},
+                        std::string("unknown ") + what + " '" + n + "'",
                         didYouMean(n, known)});
   if (!errors.empty()) throw DiagnosticError(errors);
 }
@@ -85,8 +88,8 @@ void refuseUnsafeOutputs(const BenchArgs& a, const ShaderLibrary& lib, const std
 }
 
 void printTable(const bench::BenchReport& r) {
-  std::printf("device: %s\n%-18s %-44s %9s %9s %7s %10s %10s  %-12s %s\n", r.device.c_str(), "group", "id",
-              "ns/eval", "loop ns", "instr", "max err", "mean err", "vs", "frontier");
+  std::printf("device: %s\n%-18s %-44s %9s %9s %7s %10s %10s  %-12s %s\n", r.device.c_str(), "group", "id", "ns/eval",
+              "loop ns", "instr", "max err", "mean err", "vs", "frontier");
   for (const auto& g : r.groups)
     for (const auto& it : g.items)
       std::printf("%-18s %-44s %9.2f %9.2f %7zu %10.3g %10.3g  %-12s %s\n", g.name.c_str(), it.id.c_str(),
@@ -141,16 +144,20 @@ int runBench(const BenchArgs& a, const GlobalOptions& g) {
 
 Command addBenchCommand(CLI::App& app, GlobalOptions& g) {
   auto a = std::make_shared<BenchArgs>();
-  CLI::App* cmd = app.add_subcommand("bench", "Run time against error: every brick per slot, material permutations, DFG LUTs");
+  CLI::App* cmd =
+      app.add_subcommand("bench", "Run time against error: every brick per slot, material permutations, DFG LUTs");
   cmd->add_option("materials", a->materials,
                   std::string(kMaterialFilesHelp) + " (default with no --slot/--brick: the shipped materials/*.json)");
   cmd->add_option("--slot", a->slots, "Only the bricks of this slot (repeatable)");
   cmd->add_option("--brick", a->bricks, "Only this brick (repeatable)");
   cmd->add_flag("--ibl", a->ibl, "Also measure the DFG LUTs (implied when nothing is narrowed)");
-  cmd->add_option("--lut-sizes", a->lutSizes, "DFG LUT sizes for the IBL table")->delimiter(',')
+  cmd->add_option("--lut-sizes", a->lutSizes, "DFG LUT sizes for the IBL table")
+      ->delimiter(',')
       ->check(CLI::Range(2u, 1024u));
-  cmd->add_option("--repeats", a->options.cost.repeats, "Timed dispatches per item (median)")->check(CLI::Range(1u, 1000u));
-  cmd->add_option("--samples", a->options.samples, "Error samples per item")->check(CLI::Range(uint64_t{1}, uint64_t{10000000}));
+  cmd->add_option("--repeats", a->options.cost.repeats, "Timed dispatches per item (median)")
+      ->check(CLI::Range(1u, 1000u));
+  cmd->add_option("--samples", a->options.samples, "Error samples per item")
+      ->check(CLI::Range(uint64_t{1}, uint64_t{10000000}));
   cmd->add_option("--records", a->options.cost.records, "Records per timed dispatch (0: calibrate to --target-ms)")
       ->check(CLI::Range(uint64_t{0}, uint64_t{1} << 20));
   cmd->add_option("--iterations", a->options.cost.iterations, "Evaluations per record in the bench probe")
@@ -160,8 +167,11 @@ Command addBenchCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--seed", a->options.seed, "Sampler seed");
   cmd->add_option("--json", a->json, "Write the full results as JSON");
   cmd->add_option("--csv", a->csv, "Write one CSV row per brick, permutation and LUT");
-  cmd->add_option("-o,--output-dir", a->outDir, "Write bench.json, bench.csv, bench.md and one SVG chart per group to this directory (new, empty or a matbricks output)");
-  cmd->add_option("--markdown", a->markdown, "Write the Markdown tables (replacing the generated part of an existing file)");
+  cmd->add_option(
+      "-o,--output-dir", a->outDir,
+      "Write bench.json, bench.csv, bench.md and one SVG chart per group to this directory (new, empty or a matbricks output)");
+  cmd->add_option("--markdown", a->markdown,
+                  "Write the Markdown tables (replacing the generated part of an existing file)");
   return {cmd, [a, &g] { return runBench(*a, g); }};
 }
 

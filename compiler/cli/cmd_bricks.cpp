@@ -24,21 +24,21 @@ nlohmann::json brickJson(const ShaderLibrary& lib, const Brick& b) {
   const Slot& s = *lib.findSlot(b.slot);
   nlohmann::json domain = nlohmann::json::object();
   for (const auto& [k, r] : b.domain) domain[k] = {r.lo, r.hi};
-  return {{"id", b.id},
-          {"slot", b.slot},
-          {"name", b.name},
-          {"function", b.function},
-          {"signature", brickSignature(b, s)},
-          {"file", ShaderLibrary::displayPath(b.file)},
-          {"citation", b.citation},
-          {"inputs", emitBrickProbe(lib, b).layout.columns()},
-          {"domain", domain},
-          {"geometry", {{"NoV", {b.geometry.NoV.lo, b.geometry.NoV.hi}},
-                        {"NoL", {b.geometry.NoL.lo, b.geometry.NoL.hi}}}},
-          {"tolerance", {{"abs", b.tolerance.abs}, {"rel", b.tolerance.rel}, {"reason", b.tolerance.reason}}},
-          {"has_reference", ref::Registry::references().find(b.id) != nullptr},
-          {"has_ground_truth", ref::Registry::groundTruths().find(b.id) != nullptr},
-          {"notes", b.notes}};
+  return {
+      {"id", b.id},
+      {"slot", b.slot},
+      {"name", b.name},
+      {"function", b.function},
+      {"signature", brickSignature(b, s)},
+      {"file", ShaderLibrary::displayPath(b.file)},
+      {"citation", b.citation},
+      {"inputs", emitBrickProbe(lib, b).layout.columns()},
+      {"domain", domain},
+      {"geometry", {{"NoV", {b.geometry.NoV.lo, b.geometry.NoV.hi}}, {"NoL", {b.geometry.NoL.lo, b.geometry.NoL.hi}}}},
+      {"tolerance", {{"abs", b.tolerance.abs}, {"rel", b.tolerance.rel}, {"reason", b.tolerance.reason}}},
+      {"has_reference", ref::Registry::references().find(b.id) != nullptr},
+      {"has_ground_truth", ref::Registry::groundTruths().find(b.id) != nullptr},
+      {"notes", b.notes}};
 }
 
 int runBricks(const BricksArgs& a, const GlobalOptions& g) {
@@ -46,8 +46,11 @@ int runBricks(const BricksArgs& a, const GlobalOptions& g) {
   if (!a.slot.empty() && !lib.findSlot(a.slot)) {
     std::vector<std::string> names;
     for (const auto& s : lib.slots()) names.push_back(s.name);
-    throw DiagnosticError({{Severity::Error, "E-UNKNOWN-SLOT", {"<command line>", 0, 0},
-                            "unknown slot '" + a.slot + "'", didYouMean(a.slot, names)}});
+    throw DiagnosticError({{Severity::Error,
+                            "E-UNKNOWN-SLOT",
+                            {"<command line>", 0, 0},
+                            "unknown slot '" + a.slot + "'",
+                            didYouMean(a.slot, names)}});
   }
   if (a.markdown) {
     if (!a.output.empty()) checkFileOutput(a.output, "catalogue", libraryInputs(lib));
@@ -89,7 +92,8 @@ Command addBricksCommand(CLI::App& app, GlobalOptions& g) {
   CLI::App* cmd = app.add_subcommand("bricks", "List the brick catalogue");
   cmd->add_flag("--json", args->json, "Machine-readable catalogue");
   cmd->add_option("--slot", args->slot, "Only this slot");
-  cmd->add_flag("--markdown", args->markdown, "The catalogue as Markdown with errors measured on the GPU (docs/bricks.md)");
+  cmd->add_flag("--markdown", args->markdown,
+                "The catalogue as Markdown with errors measured on the GPU (docs/bricks.md)");
   cmd->add_option("-o,--output", args->output, "With --markdown: write to this file (atomically) instead of stdout");
   return {cmd, [args, &g] { return runBricks(*args, g); }};
 }

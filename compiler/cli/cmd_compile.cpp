@@ -45,7 +45,9 @@ void refuseDuplicateKeys(const std::vector<Permutation>& perms, const std::vecto
   for (size_t i = 0; i < perms.size(); ++i) {
     auto [it, fresh] = byKey.emplace(perms[i].key(), i);
     if (!fresh)
-      duplicates.push_back({Severity::Error, "E-DUPLICATE-MATERIAL", {sources[i]->sourceFile, 1, 1},
+      duplicates.push_back({Severity::Error,
+                            "E-DUPLICATE-MATERIAL",
+                            {sources[i]->sourceFile, 1, 1},
                             "material '" + sources[i]->name + "' is also defined in " +
                                 sources[it->second]->sourceFile + ": permutation '" + perms[i].key() +
                                 "' would be written twice",
@@ -78,10 +80,11 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
   if (!a.scene.empty())
     for (const CLI::Option* o : a.axisOptions)
       if (o && o->count() > 0)
-        throw CLI::ValidationError(o->get_name() + " conflicts with --scene: the scene file sets that axis (docs/scenes.md)");
-  if (a.out.empty() && !a.explain)
-    throw CLI::ValidationError("compile needs -o DIR (or --explain, which only counts)");
-  if (!a.depfile.empty() && a.out.empty()) throw CLI::ValidationError("--depfile needs -o DIR (its target is DIR/manifest.json)");
+        throw CLI::ValidationError(o->get_name() +
+                                   " conflicts with --scene: the scene file sets that axis (docs/scenes.md)");
+  if (a.out.empty() && !a.explain) throw CLI::ValidationError("compile needs -o DIR (or --explain, which only counts)");
+  if (!a.depfile.empty() && a.out.empty())
+    throw CLI::ValidationError("--depfile needs -o DIR (its target is DIR/manifest.json)");
 
   ShaderLibrary lib = loadLibrary(g);
   SceneDesc scene;
@@ -110,8 +113,8 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
   BuildOptions options;
   options.jobs = a.jobs;
   options.targets = targets;
-  options.cacheDir = a.noCache ? std::filesystem::path() : (a.cacheDir.empty() ? ShaderCache::defaultDir()
-                                                                               : std::filesystem::path(a.cacheDir));
+  options.cacheDir = a.noCache ? std::filesystem::path()
+                               : (a.cacheDir.empty() ? ShaderCache::defaultDir() : std::filesystem::path(a.cacheDir));
   refuseUnsafeOutputs(a, lib, scene, materials, options.cacheDir);
   BuildStats stats;
   std::vector<BuiltPermutation> built = buildPermutations(lib, plan.required, options, &stats);
@@ -124,7 +127,8 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
     // Every required permutation is in `built`; say how many glslang built now and how many
     // the cache or an identical emitted GLSL supplied.
     const size_t sharedGlsl = stats.permutations - stats.compiled - stats.cacheHits;
-    std::string how = std::to_string(stats.compiled) + " built now, " + std::to_string(stats.cacheHits) + " from the cache" +
+    std::string how = std::to_string(stats.compiled) + " built now, " + std::to_string(stats.cacheHits) +
+                      " from the cache" +
                       (sharedGlsl ? ", " + std::to_string(sharedGlsl) + " sharing another's identical GLSL" : "");
     std::fputs(explainText(plan, built.size(), stats.uniqueSpirv, how).c_str(), stdout);
   }
@@ -152,7 +156,9 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
   if (!a.quiet)
     std::printf("%s %zu permutation(s) (%zu unique SPIR-V, %zu compiled, %zu cached%s) in %.0f ms with %u job(s)%s\n",
                 a.out.empty() ? "built" : "wrote", built.size(), stats.uniqueSpirv, stats.compiled, stats.cacheHits,
-                stats.cacheCorrupt ? (", " + std::to_string(stats.cacheCorrupt) + " corrupt cache entries rebuilt").c_str() : "",
+                stats.cacheCorrupt
+                    ? (", " + std::to_string(stats.cacheCorrupt) + " corrupt cache entries rebuilt").c_str()
+                    : "",
                 stats.wallMs, options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency()),
                 a.out.empty() ? "" : (" to " + a.out).c_str());
   return kExitOk;
@@ -165,32 +171,45 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
   CLI::App* cmd = app.add_subcommand("compile", "Compile materials, or exactly what a scene needs, into a package");
   cmd->add_option("materials", args->materials, kMaterialFilesHelp);
   cmd->add_option("--scene", args->scene, std::string(kSceneFileHelp) + "; compile exactly the permutations it needs");
-  cmd->add_option("-o,--output", args->out,
-                  "Package directory: created, filled when empty, or replaced atomically when it is a matbricks package; "
-                  "anything else is refused");
+  cmd->add_option(
+      "-o,--output", args->out,
+      "Package directory: created, filled when empty, or replaced atomically when it is a matbricks package; "
+      "anything else is refused");
   cmd->add_flag("--explain", args->explain,
                 "Print possible / required / compiled / unique counts and which axis multiplied them");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
-  args->axisOptions[0] = cmd->add_option("--lights", args->lights, "Light types every permutation shades (default: dir)")
-                             ->delimiter(',')
-                             ->check(CLI::IsMember(allLightTypes()));
+  args->axisOptions[0] =
+      cmd->add_option("--lights", args->lights, "Light types every permutation shades (default: dir)")
+          ->delimiter(',')
+          ->check(CLI::IsMember(allLightTypes()));
   args->axisOptions[1] = cmd->add_option("--environment", args->environment, "Environment mode (default: none)")
                              ->check(CLI::IsMember(allEnvironmentModes()));
-  args->axisOptions[2] = cmd->add_option("--precision", args->precision, "fp32 or fp16")
-                             ->check(CLI::IsMember(allPrecisions()));
+  args->axisOptions[2] =
+      cmd->add_option("--precision", args->precision, "fp32 or fp16")->check(CLI::IsMember(allPrecisions()));
   args->axisOptions[3] = cmd->add_option("--quality", args->quality, "low, medium or high (default: high)")
                              ->check(CLI::IsMember(allQualityLevels()));
-  cmd->add_option("--targets", args->targets, "Output languages (default: the scene's, else spirv): " +
-                                                  [] { std::string s; for (const auto& t : allTargets()) s += (s.empty() ? "" : ",") + t; return s; }())
+  cmd->add_option(
+         "--targets", args->targets,
+         "Output languages (default: the scene's, else spirv): " +
+             [] {
+               std::string s;
+               for (const auto& t : allTargets()) s += (s.empty() ? "" : ",") + t;
+               return s;
+             }())
       ->delimiter(',')
       ->check(CLI::IsMember(allTargets()));
-  cmd->add_option("-j,--jobs", args->jobs, "Parallel compile jobs (default: every core); output is identical at every -j");
-  cmd->add_option("--cache-dir", args->cacheDir, "Compile cache directory (default: $MATBRICKS_CACHE_DIR, $XDG_CACHE_HOME/matbricks or ~/.cache/matbricks)");
+  cmd->add_option("-j,--jobs", args->jobs,
+                  "Parallel compile jobs (default: every core); output is identical at every -j");
+  cmd->add_option(
+      "--cache-dir", args->cacheDir,
+      "Compile cache directory (default: $MATBRICKS_CACHE_DIR, $XDG_CACHE_HOME/matbricks or ~/.cache/matbricks)");
   cmd->add_flag("--no-cache", args->noCache, "Neither read nor write the compile cache");
   cmd->add_option("--header", args->headerName, "Name of the generated C++ header (default: matbricks_materials.hpp)");
-  cmd->add_option("--namespace", args->cppNamespace, "C++ namespace of the generated header (default: matbricks_materials)");
-  cmd->add_option("--depfile", args->depfile,
-                  "Also write every file the compile read, in Makefile syntax, with the package's manifest.json as target");
+  cmd->add_option("--namespace", args->cppNamespace,
+                  "C++ namespace of the generated header (default: matbricks_materials)");
+  cmd->add_option(
+      "--depfile", args->depfile,
+      "Also write every file the compile read, in Makefile syntax, with the package's manifest.json as target");
   return {cmd, [args, &g] { return runCompile(*args, g); }};
 }
 

@@ -48,7 +48,8 @@ int runEnergy(const EnergyArgs& a, const GlobalOptions& g) {
 
 Command addEnergyCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<EnergyArgs>();
-  CLI::App* cmd = app.add_subcommand("energy", "White furnace, multiscatter compensation and reciprocity of every lobe (GPU vs reference)");
+  CLI::App* cmd = app.add_subcommand(
+      "energy", "White furnace, multiscatter compensation and reciprocity of every lobe (GPU vs reference)");
   cmd->add_flag("--json", args->json, "Everything, per grid cell, as JSON");
   cmd->add_flag("--markdown", args->markdown, "The report as Markdown (docs/energy.md)");
   cmd->add_option("-o,--output", args->output, "With --markdown or --json: write to this file (atomically)");

@@ -31,8 +31,11 @@ MaterialDesc pickMaterial(const std::vector<MaterialDesc>& materials, const Eval
     if (m.name == a.name) return m;
     names.push_back(m.name);
   }
-  throw DiagnosticError({{Severity::Error, "E-UNKNOWN-MATERIAL", {a.material, 0, 0},
-                          "no material named '" + a.name + "' in this file", didYouMean(a.name, names)}});
+  throw DiagnosticError({{Severity::Error,
+                          "E-UNKNOWN-MATERIAL",
+                          {a.material, 0, 0},
+                          "no material named '" + a.name + "' in this file",
+                          didYouMean(a.name, names)}});
 }
 
 int runEval(const EvalArgs& a, const GlobalOptions& g) {
@@ -45,8 +48,11 @@ int runEval(const EvalArgs& a, const GlobalOptions& g) {
   if (!a.brick.empty()) {
     const Brick* b = lib.findBrick(a.brick);
     if (!b) {
-      throw DiagnosticError({{Severity::Error, "E-UNKNOWN-BRICK", {"<command line>", 0, 0},
-                              "unknown brick '" + a.brick + "'", didYouMean(a.brick, lib.brickIds())}});
+      throw DiagnosticError({{Severity::Error,
+                              "E-UNKNOWN-BRICK",
+                              {"<command line>", 0, 0},
+                              "unknown brick '" + a.brick + "'",
+                              didYouMean(a.brick, lib.brickIds())}});
     }
     program = buildBrickProbe(lib, *b, false, *parsePrecision(a.precision));
   } else {
@@ -56,7 +62,8 @@ int runEval(const EvalArgs& a, const GlobalOptions& g) {
     perm.precision = a.precision;
     // An illuminance column (illuminance.x, .y, .z) is optional; without it the light has
     // unit illuminance. `stress` prints such columns in its replay rows.
-    program = buildPermutationProbe(lib, perm, std::find(table.header.begin(), table.header.end(), "illuminance.x") != table.header.end());
+    program = buildPermutationProbe(
+        lib, perm, std::find(table.header.begin(), table.header.end(), "illuminance.x") != table.header.end());
   }
   const ProbeLayout& layout = program.shader.layout;
   std::vector<std::vector<double>> rows = selectColumns(table, layout.columns());
@@ -80,7 +87,8 @@ int runEval(const EvalArgs& a, const GlobalOptions& g) {
         double gv = run.gpu[i * os + k], rv = run.reference[i * os + k];
         row["gpu"][outCols[k]] = std::isfinite(gv) ? nlohmann::json(gv) : nlohmann::json(std::to_string(gv));
         row["reference"][outCols[k]] = std::isfinite(rv) ? nlohmann::json(rv) : nlohmann::json(std::to_string(rv));
-        row["abs_error"][outCols[k]] = std::isfinite(gv - rv) ? nlohmann::json(std::abs(gv - rv)) : nlohmann::json("nan");
+        row["abs_error"][outCols[k]] =
+            std::isfinite(gv - rv) ? nlohmann::json(std::abs(gv - rv)) : nlohmann::json("nan");
       }
       out["rows"].push_back(row);
     }
@@ -94,9 +102,8 @@ int runEval(const EvalArgs& a, const GlobalOptions& g) {
       std::printf("\n");
       for (uint32_t k = 0; k < os; ++k) {
         double gv = run.gpu[i * os + k], rv = run.reference[i * os + k];
-        std::printf("  %-6s gpu=%-16.9g reference=%-22.17g abs_err=%-12.4g rel_err=%.4g\n",
-                    outCols[k].c_str(), gv, rv, std::abs(gv - rv),
-                    std::abs(gv - rv) / std::max(std::abs(rv), kRelativeErrorFloor));
+        std::printf("  %-6s gpu=%-16.9g reference=%-22.17g abs_err=%-12.4g rel_err=%.4g\n", outCols[k].c_str(), gv, rv,
+                    std::abs(gv - rv), std::abs(gv - rv) / std::max(std::abs(rv), kRelativeErrorFloor));
       }
     }
     std::printf("%s: max_abs=%.4g max_rel=%.4g nan=%llu inf=%llu (tolerance abs %.3g + rel %.3g)\n",
@@ -112,11 +119,13 @@ int runEval(const EvalArgs& a, const GlobalOptions& g) {
 
 Command addEvalCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<EvalArgs>();
-  CLI::App* cmd = app.add_subcommand("eval", "Evaluate a brick or a material at inputs from a CSV file, on the GPU and with the reference");
+  CLI::App* cmd = app.add_subcommand(
+      "eval", "Evaluate a brick or a material at inputs from a CSV file, on the GPU and with the reference");
   cmd->add_option("--brick", args->brick, "Brick id (see `matbricks bricks`)");
   cmd->add_option("--material", args->material, std::string(kMaterialFilesHelp) + "; one file");
   cmd->add_option("--name", args->name, "With --material: the material of that name in the file (default: its first)");
-  cmd->add_option("--input", args->input, "CSV file; header = the probe's input names (see `bricks --json`)")->required();
+  cmd->add_option("--input", args->input, "CSV file; header = the probe's input names (see `bricks --json`)")
+      ->required();
   cmd->add_flag("--json", args->json, "JSON output");
   cmd->add_option("--precision", args->precision, "fp32, or fp16 (true half arithmetic; only NaN/Inf fail)")
       ->check(CLI::IsMember({"fp32", "fp16"}));

@@ -25,7 +25,6 @@ struct LutArgs {
   bool json = false;
 };
 
-
 // The output format, decided before any GPU work so that a bad command line costs nothing.
 lut::OutputFormat resolveFormat(const LutArgs& a) {
   if (a.output.empty()) {
@@ -51,8 +50,8 @@ nlohmann::json channelJson(const std::array<lut::ChannelError, lut::kChannels>& 
 void printChannels(const char* title, const std::array<lut::ChannelError, lut::kChannels>& e) {
   std::printf("%s\n", title);
   for (uint32_t c = 0; c < lut::kChannels; ++c)
-    std::printf("  channel %u %-10s max_abs=%-12.4g mean_abs=%-12.4g max_rel=%.4g\n", c, lut::kChannelNames[c], e[c].maxAbs,
-                e[c].meanAbs, e[c].maxRel);
+    std::printf("  channel %u %-10s max_abs=%-12.4g mean_abs=%-12.4g max_rel=%.4g\n", c, lut::kChannelNames[c],
+                e[c].maxAbs, e[c].meanAbs, e[c].maxRel);
 }
 
 int runLut(const LutArgs& a, const GlobalOptions& g) {
@@ -89,35 +88,42 @@ int runLut(const LutArgs& a, const GlobalOptions& g) {
         {"checked_texels", check.texels},
         {"check_cpu_ms", check.cpuMs},
         {"judged_against", a.samples ? "same_sum" : "exact"},
-        {"check", {{"max_bound", check.maxBound},
-                   {"max_error_over_bound", check.maxBoundRatio},
-                   {"worst_texel", {{"i", worstI}, {"j", worstJ}}},
-                   {"failures", check.failures},
-                   {"non_finite", check.nonFinite}}},
+        {"check",
+         {{"max_bound", check.maxBound},
+          {"max_error_over_bound", check.maxBoundRatio},
+          {"worst_texel", {{"i", worstI}, {"j", worstJ}}},
+          {"failures", check.failures},
+          {"non_finite", check.nonFinite}}},
         {"vs_same_sum", a.samples ? nlohmann::json{{"channels", channelJson(check.sameSum)}} : nlohmann::json(nullptr)},
         {"vs_quadrature", {{"channels", channelJson(check.quadrature)}}},
         {"passed", ok}};
     std::cout << out.dump(2) << "\n";
   } else {
     if (a.samples)
-      std::printf("DFG LUT %ux%u, %u Hammersley samples per texel, on %s\n", a.size, a.size, a.samples, gpu->deviceName().c_str());
+      std::printf("DFG LUT %ux%u, %u Hammersley samples per texel, on %s\n", a.size, a.size, a.samples,
+                  gpu->deviceName().c_str());
     else
       std::printf("DFG LUT %ux%u, deterministic quadrature, on %s\n", a.size, a.size, gpu->deviceName().c_str());
     std::printf("compile %.1f ms; GPU %.1f ms (%s; warm-up dispatch %.1f ms)\n", generated.compileMs, generated.gpuMs,
                 generated.gpuTimestamps ? "timestamps" : "host time, no timestamps", generated.warmupGpuMs);
-    std::printf("checked %llu texels on the CPU in %.0f ms\n", static_cast<unsigned long long>(check.texels), check.cpuMs);
+    std::printf("checked %llu texels on the CPU in %.0f ms\n", static_cast<unsigned long long>(check.texels),
+                check.cpuMs);
     if (a.samples) printChannels("vs CPU evaluation of the identical sum:", check.sameSum);
     std::printf("  max |error| / %s = %.3g at texel (i=%u, j=%u); %llu outside the bound, %llu NaN/Inf\n",
                 a.samples ? "fp32 bound of the identical sum" : "promised accuracy vs the exact integrals",
                 check.maxBoundRatio, worstI, worstJ, static_cast<unsigned long long>(check.failures),
                 static_cast<unsigned long long>(check.nonFinite));
-    printChannels(a.samples ? "vs the exact integrals (Monte-Carlo error of the sample count):"
-                            : "vs the exact integrals (judged: 1e-4 absolute in channels 0, 1; 1e-3 relative + 1e-7 in channel 2):",
-                  check.quadrature);
+    printChannels(
+        a.samples
+            ? "vs the exact integrals (Monte-Carlo error of the sample count):"
+            : "vs the exact integrals (judged: 1e-4 absolute in channels 0, 1; 1e-3 relative + 1e-7 in channel 2):",
+        check.quadrature);
     if (!a.output.empty())
-      std::printf("%s %s (%s, %s)\n", ok ? "wrote" : "NOT written:", a.output.c_str(), lut::formatName(format), a.precision.c_str());
-    std::printf("%s\n", ok ? "passed" : (a.samples ? "FAILED: GPU LUT outside the fp32 bound of the identical sum"
-                                                  : "FAILED: GPU LUT outside its promised accuracy"));
+      std::printf("%s %s (%s, %s)\n", ok ? "wrote" : "NOT written:", a.output.c_str(), lut::formatName(format),
+                  a.precision.c_str());
+    std::printf("%s\n", ok ? "passed"
+                           : (a.samples ? "FAILED: GPU LUT outside the fp32 bound of the identical sum"
+                                        : "FAILED: GPU LUT outside its promised accuracy"));
   }
   return ok ? kExitOk : kExitCheckFailed;
 }
@@ -127,18 +133,19 @@ int runLut(const LutArgs& a, const GlobalOptions& g) {
 Command addLutCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<LutArgs>();
   CLI::App* cmd = app.add_subcommand("lut", "Generate the split-sum DFG LUT on the GPU and check it against the CPU");
-  cmd->add_option("--size", args->size, "Texels per side (default 128)")
-      ->check(CLI::Range(1u, lut::kMaxSize));
-  cmd->add_option("--samples", args->samples,
-                  "0 (default): deterministic quadrature; N > 0: Filament's Hammersley estimators with N samples per texel")
+  cmd->add_option("--size", args->size, "Texels per side (default 128)")->check(CLI::Range(1u, lut::kMaxSize));
+  cmd->add_option(
+         "--samples", args->samples,
+         "0 (default): deterministic quadrature; N > 0: Filament's Hammersley estimators with N samples per texel")
       ->check(CLI::Range(0u, lut::kMaxSamples));
   cmd->add_option("--format", args->precision, "Stored precision: fp32 (default) or fp16")
       ->check(CLI::IsMember({"fp32", "fp16"}));
   cmd->add_option("-o,--output", args->output, "Output file, written atomically (format from the extension)");
   cmd->add_option("--output-format", args->outputFormat, "raw, ktx2, csv or header (default: from the -o extension)")
       ->check(CLI::IsMember({"raw", "ktx2", "csv", "header"}));
-  cmd->add_option("--check-grid", args->checkGrid,
-                  "Texels per axis checked on the CPU (default 16, evenly spread, first and last included; 0 = every texel)");
+  cmd->add_option(
+      "--check-grid", args->checkGrid,
+      "Texels per axis checked on the CPU (default 16, evenly spread, first and last included; 0 = every texel)");
   cmd->add_flag("--json", args->json, "JSON report");
   return {cmd, [args, &g] { return runLut(*args, g); }};
 }

@@ -57,8 +57,11 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
   for (const auto& id : a.bricks) {
     const Brick* b = lib.findBrick(id);
     if (!b)
-      throw DiagnosticError({{Severity::Error, "E-UNKNOWN-BRICK", {"<command line>", 0, 0},
-                              "unknown brick '" + id + "'", didYouMean(id, lib.brickIds())}});
+      throw DiagnosticError({{Severity::Error,
+                              "E-UNKNOWN-BRICK",
+                              {"<command line>", 0, 0},
+                              "unknown brick '" + id + "'",
+                              didYouMean(id, lib.brickIds())}});
     bricks.push_back(b);
   }
   if (!a.output.empty()) {
@@ -79,7 +82,8 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
       failed.key = "brick." + b->id + (p == ShaderPrecision::Fp16 ? ".fp16" : "");
       failed.kind = "brick";
       failed.id = b->id;
-      if (tryBuild(p, [&] { return buildBrickProbe(lib, *b, false, p); }, program, failed)) {
+      if (tryBuild(
+              p, [&] { return buildBrickProbe(lib, *b, false, p); }, program, failed)) {
         results.push_back(stressProbe(*gpu, program, "brick", b->id, options));
       } else {
         results.push_back(failed);
@@ -97,7 +101,8 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
       failed.key = perm.key();
       failed.kind = "permutation";
       failed.id = material.sourceFile;
-      if (tryBuild(p, [&] { return buildPermutationProbe(lib, perm, /*illuminanceInput=*/true); }, program, failed))
+      if (tryBuild(
+              p, [&] { return buildPermutationProbe(lib, perm, /*illuminanceInput=*/true); }, program, failed))
         results.push_back(stressProbe(*gpu, program, "permutation", material.sourceFile, options));
       else
         results.push_back(failed);
@@ -113,10 +118,12 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
     for (const auto& m : a.materials) command += " " + m;
     for (const auto& id : a.bricks) command += " --brick " + id;
     command += std::string(a.allBricks ? " --all-bricks" : "") + " --precision " + a.precision + " --markdown";
-    std::string md = formatStressMarkdown(results, command + (a.output.empty() ? "" : " -o " + a.output),
-                                          gpu->deviceName());
-    if (a.output.empty()) std::cout << md;
-    else PackageWriter::writeFileAtomically(a.output, md);
+    std::string md =
+        formatStressMarkdown(results, command + (a.output.empty() ? "" : " -o " + a.output), gpu->deviceName());
+    if (a.output.empty())
+      std::cout << md;
+    else
+      PackageWriter::writeFileAtomically(a.output, md);
   } else if (a.json) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& r : results) out.push_back(toJson(r, cli));
@@ -125,7 +132,8 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
     std::cout << "device: " << gpu->deviceName() << "\n" << formatStressTable(results);
     for (const auto& r : results) {
       if (r.passed() || !r.compileError.empty()) continue;
-      std::cout << "\n" << r.key << ": NaN/Inf in the declared domain; worst input:\n"
+      std::cout << "\n"
+                << r.key << ": NaN/Inf in the declared domain; worst input:\n"
                 << csvRow(r.columns, r.worstInDomainRow) << "replay: " << replayCommand(r, cli, true) << "\n";
     }
   }
@@ -137,7 +145,8 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
 
 Command addStressCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<StressArgs>();
-  CLI::App* cmd = app.add_subcommand("stress", "Run bricks and materials over adversarial inputs; fail on NaN/Inf in their domain");
+  CLI::App* cmd =
+      app.add_subcommand("stress", "Run bricks and materials over adversarial inputs; fail on NaN/Inf in their domain");
   cmd->add_option("materials", args->materials, kMaterialFilesHelp);
   cmd->add_option("--brick", args->bricks, "Stress this brick (repeatable)");
   cmd->add_flag("--all-bricks", args->allBricks, "Stress every brick of the library");

@@ -20,8 +20,8 @@ struct ValidateArgs {
   uint64_t seed = 1;
   bool json = false;
   std::string precision = "fp32";
-  std::vector<std::string> lights;       // empty: every light type the model shades
-  std::vector<std::string> environments; // empty: every environment mode it supports
+  std::vector<std::string> lights;        // empty: every light type the model shades
+  std::vector<std::string> environments;  // empty: every environment mode it supports
 };
 
 // The permutations validated for one material: the model's light types together, once per
@@ -39,8 +39,8 @@ std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const Sha
     perm.precision = a.precision;
     if (a.environments.empty())
       if (auto broken = brokenBrickRule(*lib.findModel(m.model), perm)) {
-        std::fprintf(stderr, "%s: note: skipping environment '%s': %s\n", m.sourceFile.c_str(), perm.environment.c_str(),
-                     broken->message.c_str());
+        std::fprintf(stderr, "%s: note: skipping environment '%s': %s\n", m.sourceFile.c_str(),
+                     perm.environment.c_str(), broken->message.c_str());
         continue;
       }
     out.push_back(perm);
@@ -60,8 +60,11 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
   for (const auto& id : a.bricks) {
     const Brick* b = lib.findBrick(id);
     if (!b) {
-      throw DiagnosticError({{Severity::Error, "E-UNKNOWN-BRICK", {"<command line>", 0, 0},
-                              "unknown brick '" + id + "'", didYouMean(id, lib.brickIds())}});
+      throw DiagnosticError({{Severity::Error,
+                              "E-UNKNOWN-BRICK",
+                              {"<command line>", 0, 0},
+                              "unknown brick '" + id + "'",
+                              didYouMean(id, lib.brickIds())}});
     }
     bricks.push_back(b);
   }
@@ -73,8 +76,8 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
     records.push_back(validateProbe(*gpu, buildBrickProbe(lib, *b, false, precision), "brick", a.samples, a.seed));
     if (a.unstable && !b->unstableFile.empty()) {
       // Expected to fail: it shows the problem the shipped form fixes. Reported, not judged.
-      unstableRecords.push_back(validateProbe(*gpu, buildBrickProbe(lib, *b, true, precision),
-                                              "unstable_variant", a.samples, a.seed));
+      unstableRecords.push_back(
+          validateProbe(*gpu, buildBrickProbe(lib, *b, true, precision), "unstable_variant", a.samples, a.seed));
     }
   }
   for (const auto& m : materials)
@@ -91,8 +94,7 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
   } else {
     std::cout << "device: " << gpu->deviceName() << "\n" << formatValidationTable(records);
     for (const auto& r : records)
-      if (!r.passed())
-        std::cout << "worst input of " << r.key << ": " << r.worstInput << "\n";
+      if (!r.passed()) std::cout << "worst input of " << r.key << ": " << r.worstInput << "\n";
     if (!unstableRecords.empty()) {
       std::cout << "\nunstable variants (the naive forms the shipped bricks replace; not judged):\n"
                 << formatValidationTable(unstableRecords);
@@ -106,16 +108,20 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
 
 Command addValidateCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<ValidateArgs>();
-  CLI::App* cmd = app.add_subcommand("validate", "Run permutations and bricks on the GPU and compare with the double-precision references");
+  CLI::App* cmd = app.add_subcommand(
+      "validate", "Run permutations and bricks on the GPU and compare with the double-precision references");
   cmd->add_option("materials", args->materials, kMaterialFilesHelp);
   cmd->add_option("--brick", args->bricks, "Validate this brick (repeatable)");
   cmd->add_flag("--all-bricks", args->allBricks, "Validate every brick of the library");
-  cmd->add_flag("--unstable-variants", args->unstable, "Also run each brick's naive form (if it has one) to show the problem its stable form fixes");
-  cmd->add_option("--samples", args->samples, "Samples per permutation or brick")->check(CLI::Range(uint64_t{1}, uint64_t{50000000}));
+  cmd->add_flag("--unstable-variants", args->unstable,
+                "Also run each brick's naive form (if it has one) to show the problem its stable form fixes");
+  cmd->add_option("--samples", args->samples, "Samples per permutation or brick")
+      ->check(CLI::Range(uint64_t{1}, uint64_t{50000000}));
   cmd->add_option("--seed", args->seed, "Sampler seed");
   cmd->add_flag("--json", args->json, "One JSON record per permutation or brick");
-  cmd->add_option("--precision", args->precision,
-                  "fp32, or fp16: true half arithmetic on the fp16 domain; errors are reported, only NaN/Inf fail (docs/fp16.md)")
+  cmd->add_option(
+         "--precision", args->precision,
+         "fp32, or fp16: true half arithmetic on the fp16 domain; errors are reported, only NaN/Inf fail (docs/fp16.md)")
       ->check(CLI::IsMember({"fp32", "fp16"}));
   cmd->add_option("--lights", args->lights,
                   "Light types shaded together in each material permutation (default: all the model shades)")

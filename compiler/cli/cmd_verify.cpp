@@ -56,8 +56,10 @@ int runVerify(const VerifyArgs& a, const GlobalOptions& g) {
   }
   size_t missing = 0;
   for (size_t i = 0; i < diff.size(); i = diff.find('\n', i) + 1) missing += diff[i] == '-';
-  std::fprintf(stderr, "%s: error[E-PACKAGE-MISSING-PERMUTATION]: package %s lacks %zu of the %zu permutations scene '%s' requires (- required but missing, + present but not required)\n",
-               a.scene.c_str(), a.package.c_str(), missing, required.size(), scene.name.c_str());
+  std::fprintf(
+      stderr,
+      "%s: error[E-PACKAGE-MISSING-PERMUTATION]: package %s lacks %zu of the %zu permutations scene '%s' requires (- required but missing, + present but not required)\n",
+      a.scene.c_str(), a.package.c_str(), missing, required.size(), scene.name.c_str());
   std::fputs(diff.c_str(), stdout);
   return kExitCheckFailed;
 }

@@ -11,16 +11,19 @@ using namespace mb::cli;
 int main(int argc, char** argv) {
   CLI::App app{"matbricks " MB_VERSION ": PBR brick library, material compiler and validator"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("matbricks " MB_VERSION " (") + toolchainVersion() + "; " + spirvCrossVersion() + ")");
+  app.set_version_flag(
+      "--version", std::string("matbricks " MB_VERSION " (") + toolchainVersion() + "; " + spirvCrossVersion() + ")");
   GlobalOptions g;
-  app.add_option("--shaderlib", g.shaderlib, "Brick library root (default: $MATBRICKS_SHADERLIB, else the installed share/matbricks/shaderlib beside the program, else the source tree's)");
+  app.add_option(
+      "--shaderlib", g.shaderlib,
+      "Brick library root (default: $MATBRICKS_SHADERLIB, else the installed share/matbricks/shaderlib beside the program, else the source tree's)");
   app.add_option("--device", g.device, "Vulkan device: case-insensitive substring of its name (default: lavapipe)");
   app.add_flag("--vk-validation", g.vulkanValidation, "Enable the Khronos validation layer; any message fails the run");
   app.add_option("--diagnostics-format", g.diagnosticsFormat, "How errors are printed")
       ->check(CLI::IsMember({"text", "json"}));
 
-  std::vector<Command> commands{addCompileCommand(app, g), addValidateCommand(app, g),
-                                addBricksCommand(app, g), addEvalCommand(app, g)};
+  std::vector<Command> commands{addCompileCommand(app, g), addValidateCommand(app, g), addBricksCommand(app, g),
+                                addEvalCommand(app, g)};
   commands.push_back(addBenchCommand(app, g));
   commands.push_back(addLutCommand(app, g));
   commands.push_back(addEnergyCommand(app, g));

@@ -54,8 +54,12 @@ std::vector<std::string> crossTargets(const std::vector<std::string>& requested)
 // Everything that affects a unit's output (shader_cache.hpp).
 std::string unitKey(const ShaderLibrary& lib, const EmittedShader& shader, const CompileOptions& co,
                     const std::vector<std::string>& targets, const std::string& mediumpGlsl = "") {
-  std::vector<std::string> parts{ShaderCache::kFormatVersion, MB_VERSION, toolchainVersion(), spirvCrossVersion(),
-                                 co.optimize ? "optimize" : "no-optimize", co.validate ? "validate" : "no-validate"};
+  std::vector<std::string> parts{ShaderCache::kFormatVersion,
+                                 MB_VERSION,
+                                 toolchainVersion(),
+                                 spirvCrossVersion(),
+                                 co.optimize ? "optimize" : "no-optimize",
+                                 co.validate ? "validate" : "no-validate"};
   for (const auto& t : crossTargets(targets)) parts.push_back(t + ": " + targetOptions(t));
   parts.push_back(shader.glsl);
   parts.push_back(mediumpGlsl);

@@ -21,20 +21,20 @@ struct BuildOptions {
 };
 
 struct BuiltPermutation {
-  EmittedShader shader;          // key, GLSL, layout, bricks
+  EmittedShader shader;  // key, GLSL, layout, bricks
   CompiledArtifacts artifacts;
-  std::string spirvHash;         // contentHash() of the SPIR-V words (16 hex digits)
+  std::string spirvHash;  // contentHash() of the SPIR-V words (16 hex digits)
   bool fromCache = false;
-  double compileMs = 0;          // 0 for a cache hit, and for a permutation whose GLSL an
-                                 // earlier one already emitted (compiled once, reported once)
+  double compileMs = 0;  // 0 for a cache hit, and for a permutation whose GLSL an
+                         // earlier one already emitted (compiled once, reported once)
 };
 
 struct BuildStats {
   size_t permutations = 0;
-  size_t compiled = 0;        // glslang actually ran (misses, after GLSL dedup)
+  size_t compiled = 0;  // glslang actually ran (misses, after GLSL dedup)
   size_t cacheHits = 0;
-  size_t cacheCorrupt = 0;    // entries found corrupt and rebuilt
-  size_t uniqueSpirv = 0;     // distinct SPIR-V hashes
+  size_t cacheCorrupt = 0;  // entries found corrupt and rebuilt
+  size_t uniqueSpirv = 0;   // distinct SPIR-V hashes
   double wallMs = 0;
 };
 

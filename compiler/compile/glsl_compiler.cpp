@@ -17,9 +17,7 @@ namespace mb {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 constexpr auto kTargetEnv = SPV_ENV_VULKAN_1_1;
 
@@ -53,8 +51,7 @@ class LineMap {
 };
 
 // Turns glslang's info log ("ERROR: file:line: 'tok' : message") into diagnostics.
-std::vector<Diagnostic> parseInfoLog(const std::string& log, const LineMap& lines,
-                                     const std::string& displayName) {
+std::vector<Diagnostic> parseInfoLog(const std::string& log, const LineMap& lines, const std::string& displayName) {
   std::vector<Diagnostic> out;
   std::istringstream in(log);
   std::string text;
@@ -108,8 +105,8 @@ std::vector<uint32_t> frontEnd(const std::string& source, const std::string& dis
   glslang::TProgram program;
   program.addShader(&shader);
   if (!program.link(messages)) {
-    throw DiagnosticError({{Severity::Error, "E-GLSL-LINK", {displayName, 0, 0},
-                            std::string("GLSL link: ") + program.getInfoLog(), ""}});
+    throw DiagnosticError(
+        {{Severity::Error, "E-GLSL-LINK", {displayName, 0, 0}, std::string("GLSL link: ") + program.getInfoLog(), ""}});
   }
   glslang::SpvOptions options;
   options.disableOptimizer = true;  // spirv-opt runs below, with the performance recipe
@@ -120,16 +117,16 @@ std::vector<uint32_t> frontEnd(const std::string& source, const std::string& dis
   return spirv;
 }
 
-void validateSpirv(const std::vector<uint32_t>& spirv, const std::string& displayName,
-                   const char* stage) {
+void validateSpirv(const std::vector<uint32_t>& spirv, const std::string& displayName, const char* stage) {
   spvtools::SpirvTools tools(kTargetEnv);
   std::string messages;
-  tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t& pos,
-                               const char* msg) {
+  tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t& pos, const char* msg) {
     messages += "[word " + std::to_string(pos.index) + "] " + msg + "; ";
   });
   if (!tools.Validate(spirv)) {
-    throw DiagnosticError({{Severity::Error, "E-SPIRV-VAL", {displayName, 0, 0},
+    throw DiagnosticError({{Severity::Error,
+                            "E-SPIRV-VAL",
+                            {displayName, 0, 0},
                             std::string("spirv-val rejected the module ") + stage + ": " + messages,
                             ""}});
   }
@@ -160,15 +157,14 @@ CompileResult compileComputeGlsl(const std::string& source, const std::string& d
     // spvtools::Optimizer is single-use: one per compile.
     spvtools::Optimizer optimizer(kTargetEnv);
     std::string messages;
-    optimizer.SetMessageConsumer([&](spv_message_level_t level, const char*, const spv_position_t&,
-                                     const char* msg) {
+    optimizer.SetMessageConsumer([&](spv_message_level_t level, const char*, const spv_position_t&, const char* msg) {
       if (level <= SPV_MSG_ERROR) messages += std::string(msg) + "; ";
     });
     optimizer.RegisterPerformancePasses();
     std::vector<uint32_t> optimized;
     if (!optimizer.Run(spirv.data(), spirv.size(), &optimized)) {
-      throw DiagnosticError({{Severity::Error, "E-SPIRV-OPT", {displayName, 0, 0},
-                              "spirv-opt failed: " + messages, ""}});
+      throw DiagnosticError(
+          {{Severity::Error, "E-SPIRV-OPT", {displayName, 0, 0}, "spirv-opt failed: " + messages, ""}});
     }
     spirv = std::move(optimized);
     if (options.validate) validateSpirv(spirv, displayName, "after spirv-opt");
@@ -180,8 +176,8 @@ CompileResult compileComputeGlsl(const std::string& source, const std::string& d
 
 std::string toolchainVersion() {
   std::ostringstream s;
-  s << "glslang " << GLSLANG_VERSION_MAJOR << "." << GLSLANG_VERSION_MINOR << "."
-    << GLSLANG_VERSION_PATCH << GLSLANG_VERSION_FLAVOR << "; " << spvSoftwareVersionString();
+  s << "glslang " << GLSLANG_VERSION_MAJOR << "." << GLSLANG_VERSION_MINOR << "." << GLSLANG_VERSION_PATCH
+    << GLSLANG_VERSION_FLAVOR << "; " << spvSoftwareVersionString();
   return s.str();
 }
 

@@ -13,25 +13,38 @@ namespace {
 
 std::string scalarName(spvc_basetype base) {
   switch (base) {
-    case SPVC_BASETYPE_BOOLEAN: return "bool";
-    case SPVC_BASETYPE_INT32: return "int";
-    case SPVC_BASETYPE_UINT32: return "uint";
-    case SPVC_BASETYPE_FP16: return "float16_t";
-    case SPVC_BASETYPE_FP32: return "float";
-    case SPVC_BASETYPE_FP64: return "double";
-    default: return "";
+    case SPVC_BASETYPE_BOOLEAN:
+      return "bool";
+    case SPVC_BASETYPE_INT32:
+      return "int";
+    case SPVC_BASETYPE_UINT32:
+      return "uint";
+    case SPVC_BASETYPE_FP16:
+      return "float16_t";
+    case SPVC_BASETYPE_FP32:
+      return "float";
+    case SPVC_BASETYPE_FP64:
+      return "double";
+    default:
+      return "";
   }
 }
 
 // GLSL's spelling of a vector prefix: vec, ivec, uvec, bvec, dvec, f16vec.
 std::string vectorPrefix(spvc_basetype base) {
   switch (base) {
-    case SPVC_BASETYPE_BOOLEAN: return "b";
-    case SPVC_BASETYPE_INT32: return "i";
-    case SPVC_BASETYPE_UINT32: return "u";
-    case SPVC_BASETYPE_FP16: return "f16";
-    case SPVC_BASETYPE_FP64: return "d";
-    default: return "";
+    case SPVC_BASETYPE_BOOLEAN:
+      return "b";
+    case SPVC_BASETYPE_INT32:
+      return "i";
+    case SPVC_BASETYPE_UINT32:
+      return "u";
+    case SPVC_BASETYPE_FP16:
+      return "f16";
+    case SPVC_BASETYPE_FP64:
+      return "d";
+    default:
+      return "";
   }
 }
 
@@ -98,7 +111,9 @@ nlohmann::json blockJson(const SpvcModule& m, const spvc_reflected_resource& r, 
 nlohmann::json reflectSpirv(const std::vector<uint32_t>& spirv) {
   SpvcModule m(spirv, SPVC_BACKEND_NONE);
   if (!m.ok())
-    throw DiagnosticError({{Severity::Error, "E-TARGET-FAILED", {"<spirv>", 0, 0},
+    throw DiagnosticError({{Severity::Error,
+                            "E-TARGET-FAILED",
+                            {"<spirv>", 0, 0},
                             "SPIRV-Cross cannot reflect the module: " + m.error()}});
   spvc_compiler c = m.compiler();
   nlohmann::json j;
@@ -109,8 +124,7 @@ nlohmann::json reflectSpirv(const std::vector<uint32_t>& spirv) {
   j["workgroup_size"] = {spvc_compiler_get_execution_mode_argument_by_index(c, SpvExecutionModeLocalSize, 0),
                          spvc_compiler_get_execution_mode_argument_by_index(c, SpvExecutionModeLocalSize, 1),
                          spvc_compiler_get_execution_mode_argument_by_index(c, SpvExecutionModeLocalSize, 2)};
-  nlohmann::json storage = nlohmann::json::array(), uniform = nlohmann::json::array(),
-                 push = nlohmann::json::array();
+  nlohmann::json storage = nlohmann::json::array(), uniform = nlohmann::json::array(), push = nlohmann::json::array();
   for (const auto& r : m.resources(SPVC_RESOURCE_TYPE_STORAGE_BUFFER)) {
     nlohmann::json b = blockJson(m, r, true);
     // Access qualifiers: on the variable or on every member (get_buffer_block_flags).

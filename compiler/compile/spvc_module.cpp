@@ -10,8 +10,7 @@ SpvcModule::SpvcModule(const std::vector<uint32_t>& spirv, spvc_backend backend)
   spvc_parsed_ir ir = nullptr;
   if (spvc_context_parse_spirv(context_, spirv.data(), spirv.size(), &ir) != SPVC_SUCCESS) return;
   spvc_compiler compiler = nullptr;
-  if (spvc_context_create_compiler(context_, backend, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler) !=
-      SPVC_SUCCESS)
+  if (spvc_context_create_compiler(context_, backend, ir, SPVC_CAPTURE_MODE_TAKE_OWNERSHIP, &compiler) != SPVC_SUCCESS)
     return;
   if (spvc_compiler_create_shader_resources(compiler, &resources_) != SPVC_SUCCESS) return;
   compiler_ = compiler;

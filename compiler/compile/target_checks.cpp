@@ -71,7 +71,8 @@ std::string reparse(const std::string& text, const Reparse& r) {
 std::string checkGlsl(const std::string& source, bool es) {
   // The #version line decides how glslang parses: check that it is the target's.
   const std::string version = es ? "#version 310 es\n" : "#version 450\n";
-  if (source.rfind(version, 0) != 0) return "expected the source to start with '" + version.substr(0, version.size() - 1) + "'";
+  if (source.rfind(version, 0) != 0)
+    return "expected the source to start with '" + version.substr(0, version.size() - 1) + "'";
   // Plain (non-Vulkan) GLSL: compiled as for OpenGL's ARB_gl_spirv, the closest glslang gets
   // to what a GL/GLES driver's compiler accepts.
   return reparse(source, {glslang::EShSourceGlsl, glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450,
@@ -89,8 +90,8 @@ std::string checkMsl(const std::string& source, const SpvcModule& module) {
   const char* entry = spvc_compiler_get_cleansed_entry_point_name(c, "main", SpvExecutionModelGLCompute);
   const std::string kernel = std::string("kernel void ") + (entry ? entry : "main0") + "(";
   if (source.find(kernel) == std::string::npos) return "MSL: no '" + kernel + "' in the output";
-  for (spvc_resource_type type : {SPVC_RESOURCE_TYPE_STORAGE_BUFFER, SPVC_RESOURCE_TYPE_UNIFORM_BUFFER,
-                                  SPVC_RESOURCE_TYPE_PUSH_CONSTANT})
+  for (spvc_resource_type type :
+       {SPVC_RESOURCE_TYPE_STORAGE_BUFFER, SPVC_RESOURCE_TYPE_UNIFORM_BUFFER, SPVC_RESOURCE_TYPE_PUSH_CONSTANT})
     for (const auto& r : module.resources(type)) {
       const unsigned index = spvc_compiler_msl_get_automatic_resource_binding(c, r.id);
       const std::string attr = "[[buffer(" + std::to_string(index) + ")]]";

@@ -33,8 +33,7 @@ nlohmann::json reflectSpirv(const std::vector<uint32_t>& spirv);
 // Cross-compiles one module to `target` (not "spirv") and checks the result as above.
 // Throws DiagnosticError (E-TARGET-FAILED naming `displayName`, the target and the checker's
 // first message) when SPIRV-Cross or the check fails.
-std::string crossCompile(const std::vector<uint32_t>& spirv, const std::string& target,
-                         const std::string& displayName);
+std::string crossCompile(const std::vector<uint32_t>& spirv, const std::string& target, const std::string& displayName);
 
 // The options `target` is cross-compiled with (version, dialect, bindings), as one line, so
 // that the cache key changes when they do.

@@ -59,21 +59,16 @@ static std::string joinDiagnostics(const std::vector<Diagnostic>& ds) {
 DiagnosticError::DiagnosticError(std::vector<Diagnostic> diags)
     : std::runtime_error(joinDiagnostics(diags)), diags_(std::move(diags)) {}
 
-void DiagnosticSink::error(std::string code, SourceLocation where, std::string message,
-                           std::string suggestion) {
-  diags_.push_back({Severity::Error, std::move(code), std::move(where), std::move(message),
-                    std::move(suggestion)});
+void DiagnosticSink::error(std::string code, SourceLocation where, std::string message, std::string suggestion) {
+  diags_.push_back({Severity::Error, std::move(code), std::move(where), std::move(message), std::move(suggestion)});
 }
 
-void DiagnosticSink::warning(std::string code, SourceLocation where, std::string message,
-                             std::string suggestion) {
-  diags_.push_back({Severity::Warning, std::move(code), std::move(where), std::move(message),
-                    std::move(suggestion)});
+void DiagnosticSink::warning(std::string code, SourceLocation where, std::string message, std::string suggestion) {
+  diags_.push_back({Severity::Warning, std::move(code), std::move(where), std::move(message), std::move(suggestion)});
 }
 
 bool DiagnosticSink::hasErrors() const {
-  return std::any_of(diags_.begin(), diags_.end(),
-                     [](const Diagnostic& d) { return d.severity == Severity::Error; });
+  return std::any_of(diags_.begin(), diags_.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
 }
 
 void DiagnosticSink::throwIfErrors() const {
@@ -94,8 +89,7 @@ static size_t editDistance(const std::string& a, const std::string& b) {
   return prev[b.size()];
 }
 
-std::vector<std::string> closestMatches(const std::string& word,
-                                        const std::vector<std::string>& candidates,
+std::vector<std::string> closestMatches(const std::string& word, const std::vector<std::string>& candidates,
                                         size_t maxCount) {
   std::vector<std::pair<size_t, std::string>> scored;
   for (const auto& c : candidates) {

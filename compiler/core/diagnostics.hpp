@@ -24,9 +24,9 @@ struct Diagnostic {
   Diagnostic(Severity severity, std::string code, SourceLocation where, std::string message,
              std::string suggestion = {});
   Severity severity = Severity::Error;
-  std::string code;     // stable id, e.g. "E-JSON-SYNTAX", "E-UNKNOWN-BRICK"
+  std::string code;  // stable id, e.g. "E-JSON-SYNTAX", "E-UNKNOWN-BRICK"
   SourceLocation where;
-  std::string message;  // what is wrong and what was expected
+  std::string message;     // what is wrong and what was expected
   std::string suggestion;  // "did you mean 'd_ggx'?" or empty
 };
 
@@ -49,10 +49,8 @@ class DiagnosticError : public std::runtime_error {
 
 class DiagnosticSink {
  public:
-  void error(std::string code, SourceLocation where, std::string message,
-             std::string suggestion = {});
-  void warning(std::string code, SourceLocation where, std::string message,
-               std::string suggestion = {});
+  void error(std::string code, SourceLocation where, std::string message, std::string suggestion = {});
+  void warning(std::string code, SourceLocation where, std::string message, std::string suggestion = {});
   bool hasErrors() const;
   const std::vector<Diagnostic>& all() const { return diags_; }
   // Throws DiagnosticError if any error was collected.
@@ -64,8 +62,7 @@ class DiagnosticSink {
 
 // Closest candidates to `word` by edit distance (at most `maxCount`, only reasonably close
 // ones), for "did you mean" suggestions.
-std::vector<std::string> closestMatches(const std::string& word,
-                                        const std::vector<std::string>& candidates,
+std::vector<std::string> closestMatches(const std::string& word, const std::vector<std::string>& candidates,
                                         size_t maxCount = 3);
 // "did you mean 'a', 'b'?" or empty.
 std::string didYouMean(const std::string& word, const std::vector<std::string>& candidates);

@@ -23,9 +23,12 @@ SourceLocation locationOfOffset(const std::string& text, size_t offset, const st
 std::string JsonDocument::escape(const std::string& token) {
   std::string out;
   for (char c : token) {
-    if (c == '~') out += "~0";
-    else if (c == '/') out += "~1";
-    else out += c;
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
   }
   return out;
 }
@@ -36,8 +39,7 @@ namespace {
 // nlohmann has already accepted the text.
 class PositionScanner {
  public:
-  PositionScanner(const std::string& text, std::map<std::string, size_t>& values,
-                  std::map<std::string, size_t>& keys)
+  PositionScanner(const std::string& text, std::map<std::string, size_t>& values, std::map<std::string, size_t>& keys)
       : t_(text), values_(values), keys_(keys) {}
 
   void run() {
@@ -47,8 +49,7 @@ class PositionScanner {
 
  private:
   void skipSpace() {
-    while (i_ < t_.size() && (t_[i_] == ' ' || t_[i_] == '\t' || t_[i_] == '\n' || t_[i_] == '\r'))
-      ++i_;
+    while (i_ < t_.size() && (t_[i_] == ' ' || t_[i_] == '\t' || t_[i_] == '\n' || t_[i_] == '\r')) ++i_;
   }
   std::string stringToken() {  // at the opening quote; returns the decoded-enough key
     std::string s;
@@ -103,8 +104,7 @@ class PositionScanner {
     } else if (c == '"') {
       stringToken();
     } else {
-      while (i_ < t_.size() && std::string_view(",]} \t\r\n").find(t_[i_]) == std::string_view::npos)
-        ++i_;
+      while (i_ < t_.size() && std::string_view(",]} \t\r\n").find(t_[i_]) == std::string_view::npos) ++i_;
     }
   }
 
@@ -124,7 +124,9 @@ size_t tokenStart(const std::string& text, size_t last) {
     }
     return last;
   }
-  auto wordChar = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+'; };
+  auto wordChar = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+';
+  };
   size_t i = last;
   while (i > 0 && wordChar(text[i]) && wordChar(text[i - 1])) --i;
   return i;
@@ -141,8 +143,10 @@ static void checkNestingDepth(const std::string& text, const std::string& file, 
   for (size_t i = 0; i < text.size(); ++i) {
     char c = text[i];
     if (inString) {
-      if (c == '\\') ++i;
-      else if (c == '"') inString = false;
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        inString = false;
     } else if (c == '"') {
       inString = true;
     } else if (c == '[' || c == '{') {
@@ -169,8 +173,8 @@ JsonDocument JsonDocument::parse(const std::string& text, const std::string& fil
     // syntax error while parsing object - unexpected '}'; expected string literal"
     auto pos = what.find("syntax error");
     std::string msg = pos != std::string::npos ? what.substr(pos) : what;
-    throw DiagnosticError({{Severity::Error, "E-JSON-SYNTAX", locationOfOffset(text, offset, file),
-                            "invalid JSON: " + msg, ""}});
+    throw DiagnosticError(
+        {{Severity::Error, "E-JSON-SYNTAX", locationOfOffset(text, offset, file), "invalid JSON: " + msg, ""}});
   } catch (const nlohmann::json::out_of_range& e) {
     // A number literal beyond a double (e.g. 1e999): nlohmann reports it without a position;
     // the literal it quotes is found in the text.
@@ -178,11 +182,12 @@ JsonDocument JsonDocument::parse(const std::string& text, const std::string& fil
     size_t q0 = what.find('\''), q1 = q0 == std::string::npos ? q0 : what.find('\'', q0 + 1);
     std::string literal = q1 == std::string::npos ? "" : what.substr(q0 + 1, q1 - q0 - 1);
     size_t offset = literal.empty() ? std::string::npos : text.find(literal);
-    throw DiagnosticError({{Severity::Error, "E-JSON-SYNTAX",
-                            offset == std::string::npos ? SourceLocation{file, 1, 1} : locationOfOffset(text, offset, file),
-                            "invalid JSON: number " + (literal.empty() ? std::string("literal") : "'" + literal + "'") +
-                                " is out of the range of a double",
-                            ""}});
+    throw DiagnosticError(
+        {{Severity::Error, "E-JSON-SYNTAX",
+          offset == std::string::npos ? SourceLocation{file, 1, 1} : locationOfOffset(text, offset, file),
+          "invalid JSON: number " + (literal.empty() ? std::string("literal") : "'" + literal + "'") +
+              " is out of the range of a double",
+          ""}});
   }
   std::map<std::string, size_t> values, keys;
   PositionScanner(text, values, keys).run();
@@ -202,8 +207,8 @@ JsonDocument JsonDocument::parse(const std::string& text, const std::string& fil
 JsonDocument JsonDocument::load(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    throw DiagnosticError({{Severity::Error, "E-FILE-NOT-FOUND", {path, 0, 0},
-                            "cannot open file: expected a readable JSON file", ""}});
+    throw DiagnosticError(
+        {{Severity::Error, "E-FILE-NOT-FOUND", {path, 0, 0}, "cannot open file: expected a readable JSON file", ""}});
   }
   std::stringstream ss;
   ss << in.rdbuf();

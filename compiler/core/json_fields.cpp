@@ -12,9 +12,7 @@ std::string JsonFields::member(const std::string& ptr, const std::string& key) {
   return ptr + "/" + JsonDocument::escape(key);
 }
 
-std::string JsonFields::element(const std::string& ptr, size_t index) {
-  return ptr + "/" + std::to_string(index);
-}
+std::string JsonFields::element(const std::string& ptr, size_t index) { return ptr + "/" + std::to_string(index); }
 
 static std::string unescapeToken(const std::string& t) {
   std::string out;
@@ -38,11 +36,12 @@ std::string JsonFields::describe(const std::string& ptr) {
     if (next == std::string::npos) next = ptr.size();
     std::string token = unescapeToken(ptr.substr(pos, next - pos));
     // Pointers do not say whether a token is an index; all-digit tokens are, in our formats.
-    bool index = !token.empty() && std::all_of(token.begin(), token.end(), [](char c) {
-      return std::isdigit(static_cast<unsigned char>(c)) != 0;
-    });
-    if (index) out += "[" + token + "]";
-    else out += (out.empty() ? "" : ".") + token;
+    bool index = !token.empty() && std::all_of(token.begin(), token.end(),
+                                               [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+    if (index)
+      out += "[" + token + "]";
+    else
+      out += (out.empty() ? "" : ".") + token;
     pos = next + 1;
   }
   return out;
@@ -62,8 +61,7 @@ const json* JsonFields::find(const std::string& ptr) const {
 void JsonFields::typeError(const std::string& ptr, const std::string& expected) {
   const json* j = find(ptr);
   std::string found = j ? kindOf(*j) : "nothing";
-  error("E-FIELD-TYPE", valueAt(ptr),
-        "'" + describe(ptr) + "' must be " + expected + ", found " + found);
+  error("E-FIELD-TYPE", valueAt(ptr), "'" + describe(ptr) + "' must be " + expected + ", found " + found);
 }
 
 bool JsonFields::object(const std::string& ptr, const std::vector<std::string>& required,
@@ -71,8 +69,7 @@ bool JsonFields::object(const std::string& ptr, const std::vector<std::string>& 
   if (!isObject(ptr)) return false;
   const json& obj = *find(ptr);
   for (const auto& key : required) {
-    if (!obj.contains(key))
-      error("E-MISSING-FIELD", valueAt(ptr), what + " is missing required field '" + key + "'");
+    if (!obj.contains(key)) error("E-MISSING-FIELD", valueAt(ptr), what + " is missing required field '" + key + "'");
   }
   std::vector<std::string> allowed = required;
   allowed.insert(allowed.end(), optional.begin(), optional.end());
@@ -142,8 +139,10 @@ std::optional<std::vector<std::string>> JsonFields::strings(const std::string& p
   const json& arr = *find(ptr);
   for (size_t i = 0; i < arr.size(); ++i) {
     auto s = string(element(ptr, i));
-    if (s) out.push_back(*s);
-    else ok = false;
+    if (s)
+      out.push_back(*s);
+    else
+      ok = false;
   }
   if (!ok) return std::nullopt;
   return out;
@@ -159,8 +158,7 @@ std::optional<std::pair<double, double>> JsonFields::range(const std::string& pt
   double lo = (*j)[0].get<double>(), hi = (*j)[1].get<double>();
   if (!(lo <= hi)) {
     error("E-PARAM-RANGE", valueAt(ptr),
-          "'" + describe(ptr) + "' is an empty range: lo " + (*j)[0].dump() + " > hi " +
-              (*j)[1].dump());
+          "'" + describe(ptr) + "' is an empty range: lo " + (*j)[0].dump() + " > hi " + (*j)[1].dump());
     return std::nullopt;
   }
   return std::make_pair(lo, hi);
@@ -175,9 +173,8 @@ std::string quotedList(const std::vector<std::string>& names) {
 
 bool isIdentifier(const std::string& s) {
   if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
-  return std::all_of(s.begin(), s.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-  });
+  return std::all_of(s.begin(), s.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
 }  // namespace mb

@@ -52,8 +52,7 @@ class JsonFields {
   std::optional<std::pair<double, double>> range(const std::string& ptr);
 
   void typeError(const std::string& ptr, const std::string& expected);
-  void error(std::string code, const SourceLocation& where, std::string message,
-             std::string suggestion = {}) {
+  void error(std::string code, const SourceLocation& where, std::string message, std::string suggestion = {}) {
     sink_.error(std::move(code), where, std::move(message), std::move(suggestion));
   }
 

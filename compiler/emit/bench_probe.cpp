@@ -9,10 +9,14 @@ namespace {
 
 const char* glslTypeName(ValueType t) {
   switch (t) {
-    case ValueType::Float: return "float";
-    case ValueType::Vec2: return "vec2";
-    case ValueType::Vec3: return "vec3";
-    case ValueType::Geometry: break;  // never a record input: n, v, l are
+    case ValueType::Float:
+      return "float";
+    case ValueType::Vec2:
+      return "vec2";
+    case ValueType::Vec3:
+      return "vec3";
+    case ValueType::Geometry:
+      break;  // never a record input: n, v, l are
   }
   throw std::logic_error("bench probe: a record input cannot be a Geometry");
 }
@@ -44,8 +48,8 @@ EmittedShader withBenchEntry(EmittedShader s, const std::string& callExpr, const
   const std::string iterations = std::to_string(o.iterations) + "u";
   std::string body = withProbeEntryRenamed(s.glsl);
   GlslWriter w(s.fileName);
-  w.line(std::string("// Bench entry point (") + (o.baseline ? "baseline: empty loop" : "timed call") +
-         "), " + iterations + " evaluations per record; see compiler/emit/bench_probe.hpp.");
+  w.line(std::string("// Bench entry point (") + (o.baseline ? "baseline: empty loop" : "timed call") + "), " +
+         iterations + " evaluations per record; see compiler/emit/bench_probe.hpp.");
   w.line("#undef main");
   w.line("void main() {");
   w.line("    uint i = gl_GlobalInvocationID.x;");

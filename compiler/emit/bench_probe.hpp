@@ -19,8 +19,7 @@ struct BenchProbeOptions {
   bool baseline = false;     // the empty loop instead of the call
 };
 
-EmittedShader emitBrickBenchProbe(const ShaderLibrary& lib, const Brick& brick,
-                                  const BenchProbeOptions& options);
+EmittedShader emitBrickBenchProbe(const ShaderLibrary& lib, const Brick& brick, const BenchProbeOptions& options);
 EmittedShader emitPermutationBenchProbe(const ShaderLibrary& lib, const Permutation& perm,
                                         const BenchProbeOptions& options);
 

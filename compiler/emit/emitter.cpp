@@ -14,10 +14,14 @@ namespace {
 
 const char* glslType(ValueType t) {
   switch (t) {
-    case ValueType::Float: return "float";
-    case ValueType::Vec2: return "vec2";
-    case ValueType::Vec3: return "vec3";
-    case ValueType::Geometry: return "Geometry";
+    case ValueType::Float:
+      return "float";
+    case ValueType::Vec2:
+      return "vec2";
+    case ValueType::Vec3:
+      return "vec3";
+    case ValueType::Geometry:
+      return "Geometry";
   }
   return "float";
 }
@@ -50,8 +54,11 @@ class Includes {
       addBrick(*b);
       return;
     }
-    throw DiagnosticError({{Severity::Error, "E-UNKNOWN-UNIT", {"shaderlib/manifest.json", 0, 0},
-                            "'" + id + "' is required but is neither a unit nor a brick", ""}});
+    throw DiagnosticError({{Severity::Error,
+                            "E-UNKNOWN-UNIT",
+                            {"shaderlib/manifest.json", 0, 0},
+                            "'" + id + "' is required but is neither a unit nor a brick",
+                            ""}});
   }
   void addBrick(const Brick& b, bool unstableVariant = false) {
     seen_.insert(b.id);
@@ -61,8 +68,7 @@ class Includes {
     files_.push_back(unstableVariant ? b.unstableFile : b.file);
   }
   void writeTo(GlslWriter& w) const {
-    for (const auto& f : files_)
-      w.include(ShaderLibrary::displayPath(f), atPrecision(lib_.source(f), precision_));
+    for (const auto& f : files_) w.include(ShaderLibrary::displayPath(f), atPrecision(lib_.source(f), precision_));
   }
   const std::vector<std::string>& bricks() const { return bricks_; }
 
@@ -95,9 +101,12 @@ void writeHeader(GlslWriter& w, const std::string& what, ShaderPrecision p) {
 std::string readInput(const ProbeInput& in) {
   auto at = [&](uint32_t k) { return "mbIn[b + " + std::to_string(in.offset + k) + "u]"; };
   switch (in.type) {
-    case ValueType::Float: return at(0);
-    case ValueType::Vec2: return "vec2(" + at(0) + ", " + at(1) + ")";
-    default: return "vec3(" + at(0) + ", " + at(1) + ", " + at(2) + ")";
+    case ValueType::Float:
+      return at(0);
+    case ValueType::Vec2:
+      return "vec2(" + at(0) + ", " + at(1) + ")";
+    default:
+      return "vec3(" + at(0) + ", " + at(1) + ", " + at(2) + ")";
   }
 }
 
@@ -138,7 +147,8 @@ void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::vector<std:
   for (const auto& prm : params) {
     std::string type = atPrecision(glslType(prm.type), p);
     std::string value = "mbParams." + prm.name;
-    w.line("    " + type + " p_" + prm.name + " = " + (p == ShaderPrecision::Fp16 ? type + "(" + value + ")" : value) + ";");
+    w.line("    " + type + " p_" + prm.name + " = " + (p == ShaderPrecision::Fp16 ? type + "(" + value + ")" : value) +
+           ";");
   }
   for (const auto& s : body) w.line("    " + atPrecision(s, p));
   w.line("    uint o = i * " + std::to_string(layout.outStride) + "u;");
@@ -210,8 +220,8 @@ EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
                              ShaderPrecision precision) {
   const Slot* slot = lib.findSlot(brick.slot);
   EmittedShader out;
-  out.key = "brick." + brick.id + (unstableVariant ? ".unstable" : "") +
-            (precision == ShaderPrecision::Fp16 ? ".fp16" : "");
+  out.key =
+      "brick." + brick.id + (unstableVariant ? ".unstable" : "") + (precision == ShaderPrecision::Fp16 ? ".fp16" : "");
   out.fileName = out.key + ".glsl";
   out.layout.output = slot->returns;
   std::string args;
@@ -232,8 +242,8 @@ EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
   inc.addBrick(brick, unstableVariant);
   inc.writeTo(w);
   out.bricks = inc.bricks();
-  writeProbe(w, out.layout, {std::string(glslType(slot->returns)) + " r = " + brick.function + "(" + args + ");"},
-             {}, precision);
+  writeProbe(w, out.layout, {std::string(glslType(slot->returns)) + " r = " + brick.function + "(" + args + ");"}, {},
+             precision);
   out.glsl = w.str();
   return out;
 }
@@ -268,8 +278,11 @@ ProbeLayout materialProbeLayout(const Permutation& perm, bool illuminanceInput) 
 
 ShaderPrecision precisionOf(const Permutation& perm) {
   if (auto p = parsePrecision(perm.precision)) return *p;
-  throw DiagnosticError({{Severity::Error, "E-PRECISION", {perm.material->sourceFile, 0, 0},
-                          "unknown precision '" + perm.precision + "'", "one of 'fp32', 'fp16'"}});
+  throw DiagnosticError({{Severity::Error,
+                          "E-PRECISION",
+                          {perm.material->sourceFile, 0, 0},
+                          "unknown precision '" + perm.precision + "'",
+                          "one of 'fp32', 'fp16'"}});
 }
 
 std::string boundBrick(const Permutation& perm, const std::string& role) {
@@ -351,22 +364,26 @@ void writeApi(GlslWriter& w, const Permutation& perm, ShaderPrecision precision)
   line("}");
   line("ShadingPixel preparePixel(MaterialInputs m, ShadingFrame f) { return mb_prepare(m, f); }");
   line("vec3 emittedRadiance(ShadingPixel px) { return mb_emission(px); }");
-  static const std::pair<const char*, const char*> kLights[] = {
-      {"dir", "DirectionalLight"}, {"point", "PointLight"}, {"spot", "SpotLight"},
-      {"sphere", "SphereLight"},   {"tube", "TubeLight"}};
+  static const std::pair<const char*, const char*> kLights[] = {{"dir", "DirectionalLight"},
+                                                                {"point", "PointLight"},
+                                                                {"spot", "SpotLight"},
+                                                                {"sphere", "SphereLight"},
+                                                                {"tube", "TubeLight"}};
   for (const auto& [type, name] : kLights) {
     if (!perm.hasLight(type)) continue;
     std::string fn = std::string("shade") + (std::string(type) == "dir" ? "Directional" : "") + name;
     if (std::string(type) == "dir") fn = "shadeDirectionalLight";
-    line(std::string("vec3 ") + fn + "(ShadingPixel px, ShadingFrame f, " + name + " light) { return mb_shade_" +
-         type + "(px, f, light); }");
+    line(std::string("vec3 ") + fn + "(ShadingPixel px, ShadingFrame f, " + name + " light) { return mb_shade_" + type +
+         "(px, f, light); }");
   }
   if (perm.environment != "none")
-    line("vec3 shadeEnvironment(ShadingPixel px, ShadingFrame f, Environment env) { return mb_shade_environment(px, f, env); }");
+    line(
+        "vec3 shadeEnvironment(ShadingPixel px, ShadingFrame f, Environment env) { return mb_shade_environment(px, f, env); }");
   if (!perm.hasLight("dir")) return;
   line("// One directional light of the given illuminance (the vertical slice's entry point); the");
   line("// tangent is an arbitrary one around n and the geometric normal is n.");
-  line("vec3 evaluateMaterial(vec3 n, vec3 v, vec3 l, vec3 illuminance" + (params.empty() ? "" : ", " + params) + ") {");
+  line("vec3 evaluateMaterial(vec3 n, vec3 v, vec3 l, vec3 illuminance" + (params.empty() ? "" : ", " + params) +
+       ") {");
   line("    ShadingFrame f;");
   line("    f.n = normalize(n);");
   line("    f.v = normalize(v);");
@@ -378,8 +395,8 @@ void writeApi(GlslWriter& w, const Permutation& perm, ShaderPrecision precision)
   line("}");
 }
 
-void writePermutationProbe(GlslWriter& w, const ProbeLayout& layout, const Permutation& perm,
-                           const ProbeScene& scene, ShaderPrecision p, const std::vector<ProbeInput>& params) {
+void writePermutationProbe(GlslWriter& w, const ProbeLayout& layout, const Permutation& perm, const ProbeScene& scene,
+                           ShaderPrecision p, const std::vector<ProbeInput>& params) {
   std::vector<std::string> body;
   for (const auto& s : probeSceneFrame(scene)) body.push_back(s);
   std::string args;
@@ -414,8 +431,8 @@ std::vector<ProbeInput> splitEngineLayout(ProbeLayout& layout, const MaterialDes
 
 }  // namespace
 
-EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput,
-                             EmitMode mode, bool mediump) {
+EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput, EmitMode mode,
+                              bool mediump) {
   const MaterialDesc& mat = *perm.material;
   ShaderPrecision precision = precisionOf(perm);
   if (mediump && precision == ShaderPrecision::Fp16) precision = ShaderPrecision::Fp16Mediump;

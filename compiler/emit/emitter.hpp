@@ -67,7 +67,7 @@ EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
 // With `mediump`, an fp16 permutation is written as ShaderPrecision::Fp16Mediump (precision.hpp)
 // for targets without 16-bit types; an fp32 one is unchanged.
 EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput = false,
-                             EmitMode mode = EmitMode::Probe, bool mediump = false);
+                              EmitMode mode = EmitMode::Probe, bool mediump = false);
 // Permutation::precision as an enum; throws DiagnosticError for an unknown name.
 ShaderPrecision precisionOf(const Permutation& perm);
 // The brick bound to `role` in this permutation (the material's choice, adjusted for the

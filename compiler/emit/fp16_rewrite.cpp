@@ -16,8 +16,7 @@ const std::string& halfTypeOf(const std::string& ident) {
     for (const char* n : {"2", "3", "4"}) {
       m[std::string("vec") + n] = std::string("f16vec") + n;
       m[std::string("mat") + n] = std::string("f16mat") + n;
-      for (const char* k : {"2", "3", "4"})
-        m[std::string("mat") + n + "x" + k] = std::string("f16mat") + n + "x" + k;
+      for (const char* k : {"2", "3", "4"}) m[std::string("mat") + n + "x" + k] = std::string("f16mat") + n + "x" + k;
     }
     return m;
   }();
@@ -44,8 +43,10 @@ class Rewriter {
       } else {
         put(c);
         ++pos_;
-        if (c == '\n') atLineStart_ = true;
-        else if (!std::isspace(static_cast<unsigned char>(c))) atLineStart_ = false;
+        if (c == '\n')
+          atLineStart_ = true;
+        else if (!std::isspace(static_cast<unsigned char>(c)))
+          atLineStart_ = false;
       }
     }
     return out_;

@@ -67,8 +67,7 @@ std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene) {
 
 double probeSceneRadianceBound(const ProbeScene& scene) {
   double bound = 0;
-  for (const auto& type : scene.lights)
-    bound += type == "dir" ? 1.0 : kIntensity.hi / (kDistance.lo * kDistance.lo);
+  for (const auto& type : scene.lights) bound += type == "dir" ? 1.0 : kIntensity.hi / (kDistance.lo * kDistance.lo);
   if (scene.environment != "none") {
     // |E(n)| <= pi (|L00| + 2/3 sum |L1m| + 1/4 sum |L2m|) * sqrt(4 pi)-ish; 4 pi covers it.
     bound += 4.0 * std::numbers::pi * (2.0 + 8 * 0.5);
@@ -131,34 +130,38 @@ std::vector<std::string> probeSceneShading(const ProbeScene& scene) {
       s.push_back(std::string("r += shadeDirectionalLight(px, f, DirectionalLight(lu, ") +
                   (scene.illuminanceInput ? "p_illuminance" : "vec3(1.0)") + "));");
     } else if (type == "point") {
-      s.push_back("r += shadePointLight(px, f, PointLight(lu * p_pointDistance, p_pointIntensity, "
-                  "p_pointFalloffRadius));");
+      s.push_back(
+          "r += shadePointLight(px, f, PointLight(lu * p_pointDistance, p_pointIntensity, "
+          "p_pointFalloffRadius));");
     } else if (type == "spot") {
       s.push_back("{");
       s.push_back("    vec3 axis = -cos(p_spotAxisAngle) * lu + sin(p_spotAxisAngle) * lt;");
       s.push_back("    float cosInner = p_spotCosOuter + p_spotInnerFraction * (1.0 - p_spotCosOuter);");
-      s.push_back("    r += shadeSpotLight(px, f, SpotLight(lu * p_spotDistance, axis, p_spotIntensity, "
-                  "p_spotFalloffRadius, p_spotCosOuter, cosInner));");
+      s.push_back(
+          "    r += shadeSpotLight(px, f, SpotLight(lu * p_spotDistance, axis, p_spotIntensity, "
+          "p_spotFalloffRadius, p_spotCosOuter, cosInner));");
       s.push_back("}");
     } else if (type == "sphere") {
-      s.push_back("r += shadeSphereLight(px, f, SphereLight(lu * p_sphereDistance, p_sphereRadiusFraction * "
-                  "p_sphereDistance, p_sphereIntensity, p_sphereFalloffRadius));");
+      s.push_back(
+          "r += shadeSphereLight(px, f, SphereLight(lu * p_sphereDistance, p_sphereRadiusFraction * "
+          "p_sphereDistance, p_sphereIntensity, p_sphereFalloffRadius));");
     } else if (type == "tube") {
       s.push_back("{");
-      s.push_back("    vec3 axis = normalize(cos(p_tubeAxisAngle) * lt + sin(p_tubeAxisAngle) * lb + "
-                  "p_tubeAxisTilt * lu);");
+      s.push_back(
+          "    vec3 axis = normalize(cos(p_tubeAxisAngle) * lt + sin(p_tubeAxisAngle) * lb + "
+          "p_tubeAxisTilt * lu);");
       s.push_back("    vec3 center = lu * p_tubeDistance;");
       s.push_back("    vec3 halfSegment = axis * (p_tubeHalfLengthFraction * p_tubeDistance);");
-      s.push_back("    r += shadeTubeLight(px, f, TubeLight(center - halfSegment, center + halfSegment, "
-                  "p_tubeRadiusFraction * p_tubeDistance, p_tubeIntensity, p_tubeFalloffRadius));");
+      s.push_back(
+          "    r += shadeTubeLight(px, f, TubeLight(center - halfSegment, center + halfSegment, "
+          "p_tubeRadiusFraction * p_tubeDistance, p_tubeIntensity, p_tubeFalloffRadius));");
       s.push_back("}");
     }
   }
   if (scene.environment != "none") {
     s.push_back("{");
     s.push_back("    Environment env;");
-    for (int i = 0; i < 9; ++i)
-      s.push_back("    env.sh[" + std::to_string(i) + "] = p_sh" + std::to_string(i) + ";");
+    for (int i = 0; i < 9; ++i) s.push_back("    env.sh[" + std::to_string(i) + "] = p_sh" + std::to_string(i) + ";");
     s.push_back("    env.ao = p_ao;");
     s.push_back("    env.maxMip = " + std::to_string(static_cast<int>(kProbeMaxMip)) + ".0;");
     s.push_back("    r += shadeEnvironment(px, f, env);");

@@ -19,7 +19,7 @@ struct ProbeSceneInput {
 struct ProbeScene {
   std::vector<std::string> lights;  // light types present
   std::string environment = "none";
-  bool illuminanceInput = false;    // directional light's illuminance from the record
+  bool illuminanceInput = false;  // directional light's illuminance from the record
   // Geometric-normal tilt and tangent angle as inputs (else ng = n and t = basis tangent):
   // every permutation except the vertical slice's single directional light without features.
   bool fullFrame = false;

@@ -81,8 +81,7 @@ std::vector<double> breakpoints(const HalfVectorMap& map, double theta0, double 
 
 }  // namespace
 
-std::vector<AlbedoNode> albedoNodes(const ref::Vec3& v, const HalfVectorMap& map,
-                                    const QuadratureResolution& res) {
+std::vector<AlbedoNode> albedoNodes(const ref::Vec3& v, const HalfVectorMap& map, const QuadratureResolution& res) {
   std::vector<AlbedoNode> out;
   NodeSink sink{v, map, out};
   const double cosV = v.z, sinV = std::sqrt(v.x * v.x + v.y * v.y);

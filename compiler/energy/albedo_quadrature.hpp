@@ -32,12 +32,11 @@ struct QuadratureResolution {
 };
 
 struct AlbedoNode {
-  ref::Vec3 l;           // unit light direction, n.l > 0
-  double weight = 0.0;   // A(v) ~= Sum weight * f(v, l); includes n.l and the Jacobians
+  ref::Vec3 l;          // unit light direction, n.l > 0
+  double weight = 0.0;  // A(v) ~= Sum weight * f(v, l); includes n.l and the Jacobians
 };
 
 // `v`: unit, with v.y = 0 and v.z = n.v > 0.
-std::vector<AlbedoNode> albedoNodes(const ref::Vec3& v, const HalfVectorMap& map,
-                                    const QuadratureResolution& res);
+std::vector<AlbedoNode> albedoNodes(const ref::Vec3& v, const HalfVectorMap& map, const QuadratureResolution& res);
 
 }  // namespace mb::energy

@@ -12,12 +12,16 @@ void packRecord(const ProbeLayout& layout, const ProbeInputs& in, float* dst) {
     p[2] = static_cast<float>(v.z);
   };
   static const std::map<std::string, double ProbeInputs::*> scalars{
-      {"alpha", &ProbeInputs::alpha}, {"perceptualRoughness", &ProbeInputs::perceptualRoughness},
-      {"at", &ProbeInputs::at},       {"ab", &ProbeInputs::ab},
+      {"alpha", &ProbeInputs::alpha},
+      {"perceptualRoughness", &ProbeInputs::perceptualRoughness},
+      {"at", &ProbeInputs::at},
+      {"ab", &ProbeInputs::ab},
       {"dfgY", &ProbeInputs::dfgY}};
-  static const std::map<std::string, ref::Vec3 ProbeInputs::*> vectors{
-      {"n", &ProbeInputs::n}, {"v", &ProbeInputs::v}, {"l", &ProbeInputs::l},
-      {"t", &ProbeInputs::t}, {"f0", &ProbeInputs::f0}};
+  static const std::map<std::string, ref::Vec3 ProbeInputs::*> vectors{{"n", &ProbeInputs::n},
+                                                                       {"v", &ProbeInputs::v},
+                                                                       {"l", &ProbeInputs::l},
+                                                                       {"t", &ProbeInputs::t},
+                                                                       {"f0", &ProbeInputs::f0}};
   for (const auto& pi : layout.inputs) {
     if (auto s = scalars.find(pi.name); s != scalars.end() && pi.type == ValueType::Float) {
       dst[pi.offset] = static_cast<float>(in.*(s->second));

@@ -20,7 +20,7 @@ struct ProbeInputs {
   double alpha = 0, perceptualRoughness = 0;  // specular_*, diffuse
   ref::Vec3 t{1, 0, 0};                       // specular_*_aniso: tangent and roughnesses
   double at = 0, ab = 0;
-  ref::Vec3 f0{1, 1, 1};                      // energy_compensation
+  ref::Vec3 f0{1, 1, 1};  // energy_compensation
   double dfgY = 1;
 };
 
@@ -29,10 +29,10 @@ struct ProbeInputs {
 void packRecord(const ProbeLayout& layout, const ProbeInputs& in, float* dst);
 
 struct BrickValues {
-  std::vector<float> gpu;          // output component 0 per record
-  std::vector<double> reference;   // the same, in double
-  std::vector<double> tolerance;   // |gpu - reference| allowed per record
-  uint64_t outsideTolerance = 0;   // records where the brick misses its own tolerance
+  std::vector<float> gpu;         // output component 0 per record
+  std::vector<double> reference;  // the same, in double
+  std::vector<double> tolerance;  // |gpu - reference| allowed per record
+  uint64_t outsideTolerance = 0;  // records where the brick misses its own tolerance
   double gpuMs = 0;
 };
 

@@ -22,9 +22,9 @@ struct EnergyGrid {
 };
 
 struct GridCell {
-  double NoV = 0;                  // of the fp32 view vector, in double
+  double NoV = 0;  // of the fp32 view vector, in double
   double perceptualRoughness = 0;
-  ProbeInputs inputs;              // everything but l, which the quadrature node sets
+  ProbeInputs inputs;  // everything but l, which the quadrature node sets
 };
 
 // NoV-major: cell (i, j) is at i * perceptualRoughness.size() + j.

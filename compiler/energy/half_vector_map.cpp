@@ -25,11 +25,16 @@ double ashikhminGrazing(double cosTheta, double sinTheta, double alpha) {
 
 const char* mapName(HalfVectorMapKind kind) {
   switch (kind) {
-    case HalfVectorMapKind::Cosine: return "cosine";
-    case HalfVectorMapKind::Ggx: return "GGX";
-    case HalfVectorMapKind::Beckmann: return "Beckmann";
-    case HalfVectorMapKind::Charlie: return "Charlie";
-    case HalfVectorMapKind::Ashikhmin: return "Ashikhmin";
+    case HalfVectorMapKind::Cosine:
+      return "cosine";
+    case HalfVectorMapKind::Ggx:
+      return "GGX";
+    case HalfVectorMapKind::Beckmann:
+      return "Beckmann";
+    case HalfVectorMapKind::Charlie:
+      return "Charlie";
+    case HalfVectorMapKind::Ashikhmin:
+      return "Ashikhmin";
   }
   return "?";
 }
@@ -45,10 +50,14 @@ HalfVectorMap::HalfVectorMap(HalfVectorMapKind kind, double alpha) : kind_(kind)
 double HalfVectorMap::cdf(double theta) const {
   const double c = std::cos(theta), s = std::sin(theta), a2 = alpha_ * alpha_;
   switch (kind_) {
-    case HalfVectorMapKind::Cosine: return s * s;
-    case HalfVectorMapKind::Ggx: return s * s / (a2 * c * c + s * s);
-    case HalfVectorMapKind::Beckmann: return c > 0.0 ? -std::expm1(-(s * s) / (c * c * a2)) : 1.0;
-    case HalfVectorMapKind::Charlie: return std::pow(s, 2.0 + 1.0 / alpha_);
+    case HalfVectorMapKind::Cosine:
+      return s * s;
+    case HalfVectorMapKind::Ggx:
+      return s * s / (a2 * c * c + s * s);
+    case HalfVectorMapKind::Beckmann:
+      return c > 0.0 ? -std::expm1(-(s * s) / (c * c * a2)) : 1.0;
+    case HalfVectorMapKind::Charlie:
+      return std::pow(s, 2.0 + 1.0 / alpha_);
     case HalfVectorMapKind::Ashikhmin:
       return (s * s + 4.0 * a2 * ashikhminGrazing(c, s, alpha_)) / (1.0 + 4.0 * a2);
   }
@@ -59,8 +68,10 @@ HalfVectorAngle HalfVectorMap::angleAt(double u) const {
   u = std::clamp(u, 0.0, 1.0);
   const double a2 = alpha_ * alpha_;
   switch (kind_) {
-    case HalfVectorMapKind::Cosine: return fromSin2(u);
-    case HalfVectorMapKind::Ggx: return fromSin2(a2 * u / ((1.0 - u) + a2 * u));
+    case HalfVectorMapKind::Cosine:
+      return fromSin2(u);
+    case HalfVectorMapKind::Ggx:
+      return fromSin2(a2 * u / ((1.0 - u) + a2 * u));
     case HalfVectorMapKind::Beckmann: {
       double tan2 = -a2 * std::log1p(-u);
       return fromSin2(tan2 / (1.0 + tan2));
@@ -88,7 +99,8 @@ HalfVectorAngle HalfVectorMap::angleAt(double u) const {
 double HalfVectorMap::density(const HalfVectorAngle& a) const {
   const double c = a.cosTheta, s = a.sinTheta, a2 = alpha_ * alpha_;
   switch (kind_) {
-    case HalfVectorMapKind::Cosine: return c / kPi;
+    case HalfVectorMapKind::Cosine:
+      return c / kPi;
     case HalfVectorMapKind::Ggx: {
       double d = a2 * c * c + s * s;  // (n.h)^2 (alpha^2 - 1) + 1, without cancellation
       return a2 / (kPi * d * d) * c;

@@ -21,7 +21,8 @@ const std::map<std::string, Theory>& theories() {
         "exact single-scattering Smith: G2 <= G1(v), albedo <= 1 (Heitz 2014 eq. 2); the deficit is the "
         "multiple scattering it leaves out (Kulla & Conty 2017)"}},
       {"v_smith_ggx_separable",
-       {Expectation::Conserving, "G1(v) G1(l) <= G1(v): bounded like the correlated form, and darker (Heitz 2014 sec. 6)"}},
+       {Expectation::Conserving,
+        "G1(v) G1(l) <= G1(v): bounded like the correlated form, and darker (Heitz 2014 sec. 6)"}},
       {"v_smith_ggx_correlated_aniso",
        {Expectation::Conserving, "exact anisotropic Smith (Heitz 2014 eqs. 86, 99): G2 <= G1(v), albedo <= 1"}},
       {"v_smith_ggx_separable_aniso",
@@ -102,19 +103,26 @@ void addPair(std::vector<Lobe>& out, const ShaderLibrary& lib, const std::string
 
 const char* lobeKindName(LobeKind kind) {
   switch (kind) {
-    case LobeKind::Specular: return "specular";
-    case LobeKind::Sheen: return "sheen";
-    case LobeKind::Anisotropic: return "anisotropic";
-    case LobeKind::Diffuse: return "diffuse";
+    case LobeKind::Specular:
+      return "specular";
+    case LobeKind::Sheen:
+      return "sheen";
+    case LobeKind::Anisotropic:
+      return "anisotropic";
+    case LobeKind::Diffuse:
+      return "diffuse";
   }
   return "?";
 }
 
 const char* expectationName(Expectation e) {
   switch (e) {
-    case Expectation::Conserving: return "conserving";
-    case Expectation::NotConserving: return "not conserving";
-    case Expectation::Unbounded: return "no bound";
+    case Expectation::Conserving:
+      return "conserving";
+    case Expectation::NotConserving:
+      return "not conserving";
+    case Expectation::Unbounded:
+      return "no bound";
   }
   return "?";
 }
@@ -129,8 +137,7 @@ std::vector<Lobe> energyLobes(const ShaderLibrary& lib) {
   for (const auto& v : sheenVisibilities()) addPair(out, lib, "d_charlie", v, LobeKind::Sheen);
   addPair(out, lib, "d_ashikhmin", "v_ashikhmin", LobeKind::Sheen);
   // Anisotropic GGX with every anisotropic V.
-  for (const auto& v : lib.bricksOfSlot("specular_v_aniso"))
-    addPair(out, lib, "d_ggx_aniso", v, LobeKind::Anisotropic);
+  for (const auto& v : lib.bricksOfSlot("specular_v_aniso")) addPair(out, lib, "d_ggx_aniso", v, LobeKind::Anisotropic);
   for (const auto& id : lib.bricksOfSlot("diffuse")) {
     Theory t = theoryOf(id);
     out.push_back({id, LobeKind::Diffuse, {lib.findBrick(id)}, HalfVectorMapKind::Cosine, t.expectation, t.note});

@@ -24,12 +24,12 @@ enum class Expectation {
 const char* expectationName(Expectation e);
 
 struct Lobe {
-  std::string name;                   // "d_ggx * v_smith_ggx_correlated"
+  std::string name;  // "d_ggx * v_smith_ggx_correlated"
   LobeKind kind = LobeKind::Specular;
-  std::vector<const Brick*> factors;  // multiplied together: {D, V} or {diffuse}
+  std::vector<const Brick*> factors;                  // multiplied together: {D, V} or {diffuse}
   HalfVectorMapKind map = HalfVectorMapKind::Cosine;  // quadrature map, from the D brick
   Expectation expectation = Expectation::Unbounded;
-  std::string note;                   // why, with the source
+  std::string note;  // why, with the source
   const Brick* distribution() const { return factors.front(); }
   // The brick the quadrature nodes are built for: the D brick, or "diffuse".
   std::string familyKey() const { return kind == LobeKind::Diffuse ? "diffuse" : factors.front()->id; }

@@ -24,9 +24,8 @@ bool CompensationResult::passed() const {
   return !cells.empty();
 }
 
-CompensationResult multiscatterCompensation(harness::VulkanHarness& gpu, ProbeCache& probes,
-                                            const ShaderLibrary& lib, const LobeAlbedo& ggx,
-                                            const EnergyGrid& grid) {
+CompensationResult multiscatterCompensation(harness::VulkanHarness& gpu, ProbeCache& probes, const ShaderLibrary& lib,
+                                            const LobeAlbedo& ggx, const EnergyGrid& grid) {
   const Brick* brick = lib.findBrick("energy_compensation_filament");
   if (!brick) return {};
   const std::vector<GridCell> cells = gridCells(grid);
@@ -56,8 +55,8 @@ CompensationResult multiscatterCompensation(harness::VulkanHarness& gpu, ProbeCa
     m.compensated = m.albedo * m.compensation;
     // The comp term also carries the fp32 rounding of E_dfg on its way to the GPU.
     double dfgRounding = std::abs(1.0 / m.dfgY - 1.0 / dfg[c]);
-    m.margin = (a.bound + 2.0 * a.convergence) * m.compensation +
-               a.reference * (comp.tolerance[c] + dfgRounding) + 2.0 * dfgConv[c] / dfg[c];
+    m.margin = (a.bound + 2.0 * a.convergence) * m.compensation + a.reference * (comp.tolerance[c] + dfgRounding) +
+               2.0 * dfgConv[c] / dfg[c];
     m.referenceVsDfg = a.reference - dfg[c];
     r.cells.push_back(m);
   }

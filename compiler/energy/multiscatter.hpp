@@ -20,24 +20,23 @@ namespace mb::energy {
 
 struct CompensationCell {
   double NoV = 0, perceptualRoughness = 0;
-  double albedo = 0;         // E_gpu, single scattering
-  double dfgY = 0;           // E_dfg, CPU quadrature
-  double compensation = 0;   // GPU output of energy_compensation_filament
-  double compensated = 0;    // albedo * compensation
-  double margin = 0;         // derived bound on |compensated - 1|
-  double referenceVsDfg = 0; // A_ref - E_dfg: two independent quadratures of one integral
+  double albedo = 0;          // E_gpu, single scattering
+  double dfgY = 0;            // E_dfg, CPU quadrature
+  double compensation = 0;    // GPU output of energy_compensation_filament
+  double compensated = 0;     // albedo * compensation
+  double margin = 0;          // derived bound on |compensated - 1|
+  double referenceVsDfg = 0;  // A_ref - E_dfg: two independent quadratures of one integral
 };
 
 struct CompensationResult {
   std::vector<CompensationCell> cells;
   double maxDeviation() const;  // max |1 - compensated|
   double maxMargin() const;
-  bool passed() const;          // every cell within its margin
+  bool passed() const;  // every cell within its margin
 };
 
 // `ggx`: the furnace result of d_ggx * v_smith_ggx_correlated on `grid`.
-CompensationResult multiscatterCompensation(harness::VulkanHarness& gpu, ProbeCache& probes,
-                                            const ShaderLibrary& lib, const LobeAlbedo& ggx,
-                                            const EnergyGrid& grid);
+CompensationResult multiscatterCompensation(harness::VulkanHarness& gpu, ProbeCache& probes, const ShaderLibrary& lib,
+                                            const LobeAlbedo& ggx, const EnergyGrid& grid);
 
 }  // namespace mb::energy

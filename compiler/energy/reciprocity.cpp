@@ -29,8 +29,8 @@ std::vector<Pair> randomPairs(const EnergyGrid& grid) {
     Pair& p = pairs[i];
     p.grazing = i % 4 == 3;
     double a = 1e-3 + (1.0 - 1e-3) * rng.uniform();
-    double b = p.grazing ? std::exp(std::log(1e-6) + std::log(100.0) * rng.uniform())
-                         : 1e-3 + (1.0 - 1e-3) * rng.uniform();
+    double b =
+        p.grazing ? std::exp(std::log(1e-6) + std::log(100.0) * rng.uniform()) : 1e-3 + (1.0 - 1e-3) * rng.uniform();
     if (rng.uniform() < 0.5) std::swap(a, b);
     p.forward.v = direction(a, 2.0 * ref::kPi * rng.uniform());
     p.forward.l = direction(b, 2.0 * ref::kPi * rng.uniform());

@@ -22,7 +22,7 @@ struct ReciprocityResult {
   // Max relative asymmetry |f(v,l) - f(l,v)| / max(|f(v,l)|, |f(l,v)|).
   double gpuAsymmetry = 0, referenceAsymmetry = 0;                // interior pairs
   double grazingGpuAsymmetry = 0, grazingReferenceAsymmetry = 0;  // grazing pairs
-  double maxBoundRatio = 0;  // interior: |g(v,l) - g(l,v)| / allowed
+  double maxBoundRatio = 0;                                       // interior: |g(v,l) - g(l,v)| / allowed
   bool referenceReciprocal() const { return referenceAsymmetry <= kSymmetric; }
   bool grazingReciprocal() const { return grazingReferenceAsymmetry <= kSymmetric; }
   bool passed() const { return !referenceReciprocal() || maxBoundRatio <= 1.0; }

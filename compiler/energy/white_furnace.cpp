@@ -68,8 +68,8 @@ bool LobeAlbedo::exceedsOne() const {
   return false;
 }
 
-std::vector<LobeAlbedo> whiteFurnace(harness::VulkanHarness& gpu, ProbeCache& probes,
-                                     const std::vector<Lobe>& lobes, const EnergyGrid& grid) {
+std::vector<LobeAlbedo> whiteFurnace(harness::VulkanHarness& gpu, ProbeCache& probes, const std::vector<Lobe>& lobes,
+                                     const EnergyGrid& grid) {
   const std::vector<GridCell> cells = gridCells(grid);
   std::map<std::string, std::vector<size_t>> families;
   for (size_t i = 0; i < lobes.size(); ++i) families[lobes[i].familyKey()].push_back(i);

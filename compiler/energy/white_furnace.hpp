@@ -37,16 +37,16 @@ struct LobeAlbedo {
   uint64_t outsideTolerance = 0;  // node values where a brick missed its own tolerance
   double gpuMs = 0;
 
-  const AlbedoCell& maxCell() const;    // largest GPU albedo
-  double maxMismatchRatio() const;      // max |gpu - ref| / bound
+  const AlbedoCell& maxCell() const;  // largest GPU albedo
+  double maxMismatchRatio() const;    // max |gpu - ref| / bound
   double maxConvergence() const;
-  bool gpuMatchesReference() const;     // every cell within its bound, no node outside
+  bool gpuMatchesReference() const;  // every cell within its bound, no node outside
   // GPU albedo above 1 by more than the bound plus twice the quadrature estimate somewhere.
   bool exceedsOne() const;
 };
 
 // One result per lobe, in the order of `lobes`.
-std::vector<LobeAlbedo> whiteFurnace(harness::VulkanHarness& gpu, ProbeCache& probes,
-                                     const std::vector<Lobe>& lobes, const EnergyGrid& grid);
+std::vector<LobeAlbedo> whiteFurnace(harness::VulkanHarness& gpu, ProbeCache& probes, const std::vector<Lobe>& lobes,
+                                     const EnergyGrid& grid);
 
 }  // namespace mb::energy

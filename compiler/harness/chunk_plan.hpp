@@ -31,7 +31,7 @@ struct Chunk {
 struct Segment {
   uint64_t firstRecord = 0;
   uint64_t records = 0;
-  uint64_t inBytes = 0;   // buffer sizes, at least 4
+  uint64_t inBytes = 0;  // buffer sizes, at least 4
   uint64_t outBytes = 0;
 };
 
@@ -43,7 +43,6 @@ struct ChunkPlan {
 
 // Throws HarnessError when one record does not fit the limits. count 0 gives an empty plan.
 // Strides are in floats.
-ChunkPlan planChunks(uint64_t count, uint32_t inStride, uint32_t outStride,
-                     const ChunkLimits& limits);
+ChunkPlan planChunks(uint64_t count, uint32_t inStride, uint32_t outStride, const ChunkLimits& limits);
 
 }  // namespace mb::harness

@@ -14,13 +14,10 @@ namespace {
 // Host-visible and coherent, so no flushes or invalidates are needed; cached if possible
 // because the host reads every output back.
 uint32_t hostMemoryType(const DeviceContext& ctx, uint32_t allowedTypes) {
-  const VkMemoryPropertyFlags required =
-      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  const VkMemoryPropertyFlags required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
   for (VkMemoryPropertyFlags wanted : {required | VK_MEMORY_PROPERTY_HOST_CACHED_BIT, required}) {
     for (uint32_t i = 0; i < ctx.memory.memoryTypeCount; ++i) {
-      if ((allowedTypes & (1u << i)) &&
-          (ctx.memory.memoryTypes[i].propertyFlags & wanted) == wanted)
-        return i;
+      if ((allowedTypes & (1u << i)) && (ctx.memory.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
     }
   }
   throw HarnessError("the device has no host-visible, host-coherent memory for storage buffers");
@@ -48,8 +45,8 @@ void createMappedBuffer(const DeviceContext& ctx, uint64_t bytes, MappedBuffer& 
 }  // namespace
 
 // One input and one output buffer per segment; inputs are copied in at once.
-void createBuffers(const DeviceContext& ctx, const ChunkPlan& plan,
-                   const std::vector<float>& inputs, uint32_t inStride, RunResources& res) {
+void createBuffers(const DeviceContext& ctx, const ChunkPlan& plan, const std::vector<float>& inputs, uint32_t inStride,
+                   RunResources& res) {
   for (const Segment& seg : plan.segments) {
     MappedBuffer& in = res.inBuffers.emplace_back();
     createMappedBuffer(ctx, seg.inBytes, in);
@@ -64,8 +61,7 @@ void createBuffers(const DeviceContext& ctx, const ChunkPlan& plan,
 
 // One descriptor set per chunk: all chunks are recorded into one command buffer, and a set
 // must not change while a recorded command still refers to it.
-void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const ChunkPlan& plan,
-                          RunResources& res) {
+void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const ChunkPlan& plan, RunResources& res) {
   const auto setCount = static_cast<uint32_t>(plan.chunks.size());
   VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * setCount};
   VkDescriptorPoolCreateInfo poolInfo{};
@@ -100,8 +96,7 @@ void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const 
       w.pBufferInfo = &infos[2 * i + binding];
     }
   }
-  vkUpdateDescriptorSets(ctx.device, static_cast<uint32_t>(writes.size()), writes.data(), 0,
-                         nullptr);
+  vkUpdateDescriptorSets(ctx.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }
 
 }  // namespace mb::harness

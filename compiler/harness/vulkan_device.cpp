@@ -13,12 +13,10 @@ namespace mb::harness {
 namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
-constexpr const char* kNoDeviceHint =
-    "install mesa-vulkan-drivers or set VK_ICD_FILENAMES to a driver's ICD json";
+constexpr const char* kNoDeviceHint = "install mesa-vulkan-drivers or set VK_ICD_FILENAMES to a driver's ICD json";
 
 std::string toLower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
 }
 
@@ -28,10 +26,8 @@ bool containsNoCase(const std::string& haystack, const std::string& needle) {
 
 VKAPI_ATTR VkBool32 VKAPI_CALL onDebugMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                               VkDebugUtilsMessageTypeFlagsEXT /*types*/,
-                                              const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                              void* userData) {
-  std::string text =
-      (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error: " : "warning: ";
+                                              const VkDebugUtilsMessengerCallbackDataEXT* data, void* userData) {
+  std::string text = (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error: " : "warning: ";
   if (data && data->pMessageIdName) text += std::string("[") + data->pMessageIdName + "] ";
   if (data && data->pMessage) text += data->pMessage;
   static_cast<MessageLog*>(userData)->add(std::move(text));
@@ -41,10 +37,9 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onDebugMessage(VkDebugUtilsMessageSeverityFlagBit
 VkDebugUtilsMessengerCreateInfoEXT messengerInfo(MessageLog* log) {
   VkDebugUtilsMessengerCreateInfoEXT info{};
   info.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT;
-  info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                         VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                     VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+  info.messageSeverity =
+      VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                      VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
   info.pfnUserCallback = onDebugMessage;
   info.pUserData = log;
@@ -66,20 +61,17 @@ bool hasInstanceExtension(const char* name, const char* layer) {
   if (vkEnumerateInstanceExtensionProperties(layer, &count, nullptr) != VK_SUCCESS) return false;
   std::vector<VkExtensionProperties> exts(count);
   if (vkEnumerateInstanceExtensionProperties(layer, &count, exts.data()) < 0) return false;
-  return std::any_of(exts.begin(), exts.begin() + count, [&](const VkExtensionProperties& e) {
-    return std::strcmp(e.extensionName, name) == 0;
-  });
+  return std::any_of(exts.begin(), exts.begin() + count,
+                     [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
 bool hasDeviceExtension(VkPhysicalDevice device, const char* name) {
   uint32_t count = 0;
-  if (vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr) != VK_SUCCESS)
-    return false;
+  if (vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr) != VK_SUCCESS) return false;
   std::vector<VkExtensionProperties> exts(count);
   if (vkEnumerateDeviceExtensionProperties(device, nullptr, &count, exts.data()) < 0) return false;
-  return std::any_of(exts.begin(), exts.begin() + count, [&](const VkExtensionProperties& e) {
-    return std::strcmp(e.extensionName, name) == 0;
-  });
+  return std::any_of(exts.begin(), exts.begin() + count,
+                     [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
 // A physical device that can run compute, with the queue family we would use on it.
@@ -117,8 +109,7 @@ std::string joinNames(const std::vector<Candidate>& candidates) {
   return names;
 }
 
-const Candidate& chooseCandidate(const std::vector<Candidate>& candidates,
-                                 const std::string& wanted) {
+const Candidate& chooseCandidate(const std::vector<Candidate>& candidates, const std::string& wanted) {
   if (wanted.empty()) {
     for (const Candidate& c : candidates)
       if (isLavapipeName(c.props.deviceName)) return c;
@@ -126,8 +117,7 @@ const Candidate& chooseCandidate(const std::vector<Candidate>& candidates,
   }
   for (const Candidate& c : candidates)
     if (containsNoCase(c.props.deviceName, wanted)) return c;
-  throw HarnessError("no Vulkan device matches \"" + wanted +
-                     "\"; available: " + joinNames(candidates));
+  throw HarnessError("no Vulkan device matches \"" + wanted + "\"; available: " + joinNames(candidates));
 }
 
 std::vector<Candidate> computeCandidates(VkInstance instance) {
@@ -135,8 +125,7 @@ std::vector<Candidate> computeCandidates(VkInstance instance) {
   const VkResult result = vkEnumeratePhysicalDevices(instance, &count, nullptr);
   if (result < 0 || count == 0) {
     const std::string why = result < 0 ? vkResultName(result) : std::string("0 devices");
-    throw HarnessError("no Vulkan device found (vkEnumeratePhysicalDevices: " + why + "); " +
-                       kNoDeviceHint);
+    throw HarnessError("no Vulkan device found (vkEnumeratePhysicalDevices: " + why + "); " + kNoDeviceHint);
   }
   std::vector<VkPhysicalDevice> devices(count);
   MB_VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, devices.data()));
@@ -150,8 +139,8 @@ std::vector<Candidate> computeCandidates(VkInstance instance) {
     if (findComputeFamily(c)) candidates.push_back(c);
   }
   if (candidates.empty()) {
-    throw HarnessError("no Vulkan device found (none of " + std::to_string(count) +
-                       " devices has a compute queue); " + kNoDeviceHint);
+    throw HarnessError("no Vulkan device found (none of " + std::to_string(count) + " devices has a compute queue); " +
+                       kNoDeviceHint);
   }
   return candidates;
 }
@@ -228,8 +217,7 @@ void createInstance(DeviceContext& ctx, bool validation) {
   const VkResult result = vkCreateInstance(&info, nullptr, &ctx.instance);
   if (result != VK_SUCCESS) {
     ctx.instance = VK_NULL_HANDLE;
-    throw HarnessError("no Vulkan device found (vkCreateInstance: " + vkResultName(result) +
-                       "); " + kNoDeviceHint);
+    throw HarnessError("no Vulkan device found (vkCreateInstance: " + vkResultName(result) + "); " + kNoDeviceHint);
   }
   if (!validation) return;
 
@@ -262,8 +250,7 @@ void createDevice(DeviceContext& ctx, const DeviceOptions& options) {
 
   // The spec requires enabling it wherever a (portability) driver offers it.
   std::vector<const char*> extensions;
-  if (hasDeviceExtension(ctx.physical, "VK_KHR_portability_subset"))
-    extensions.push_back("VK_KHR_portability_subset");
+  if (hasDeviceExtension(ctx.physical, "VK_KHR_portability_subset")) extensions.push_back("VK_KHR_portability_subset");
   // Half arithmetic only; the probe buffers stay fp32, so no 16-bit storage feature is needed.
   VkPhysicalDeviceShaderFloat16Int8FeaturesKHR f16{};
   f16.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES_KHR;

@@ -70,8 +70,7 @@ void createPipeline(Kernel& k) {
   info.stage.module = k.module;
   info.stage.pName = "main";
   info.layout = k.pipelineLayout;
-  MB_VK_CHECK(
-      vkCreateComputePipelines(k.ctx->device, VK_NULL_HANDLE, 1, &info, nullptr, &k.pipeline));
+  MB_VK_CHECK(vkCreateComputePipelines(k.ctx->device, VK_NULL_HANDLE, 1, &info, nullptr, &k.pipeline));
 }
 
 void createQueryPool(const DeviceContext& ctx, uint32_t chunkCount, RunResources& res) {
@@ -111,24 +110,21 @@ void recordCommands(const Kernel& kernel, const ChunkPlan& plan, RunResources& r
   vkCmdBindPipeline(res.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernel.pipeline);
   for (uint32_t i = 0; i < chunkCount; ++i) {
     const uint32_t count = plan.chunks[i].records;
-    vkCmdBindDescriptorSets(res.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernel.pipelineLayout, 0, 1,
-                            &res.sets[i], 0, nullptr);
-    vkCmdPushConstants(res.cmd, kernel.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0,
-                       sizeof(count), &count);
+    vkCmdBindDescriptorSets(res.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernel.pipelineLayout, 0, 1, &res.sets[i], 0,
+                            nullptr);
+    vkCmdPushConstants(res.cmd, kernel.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(count), &count);
     // Both stamps at the compute stage: the first waits for the previous chunk's shaders,
     // so chunk intervals do not overlap and their sum does not count time twice.
-    if (res.queryPool)
-      vkCmdWriteTimestamp(res.cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, res.queryPool, 2 * i);
+    if (res.queryPool) vkCmdWriteTimestamp(res.cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, res.queryPool, 2 * i);
     vkCmdDispatch(res.cmd, (count + kLocalSizeX - 1) / kLocalSizeX, 1, 1);
-    if (res.queryPool)
-      vkCmdWriteTimestamp(res.cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, res.queryPool, 2 * i + 1);
+    if (res.queryPool) vkCmdWriteTimestamp(res.cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, res.queryPool, 2 * i + 1);
   }
   VkMemoryBarrier toHost{};
   toHost.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
   toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(res.cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT,
-                       0, 1, &toHost, 0, nullptr, 0, nullptr);
+  vkCmdPipelineBarrier(res.cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0,
+                       nullptr, 0, nullptr);
   MB_VK_CHECK(vkEndCommandBuffer(res.cmd));
 }
 
@@ -148,29 +144,24 @@ double submitAndWait(const DeviceContext& ctx, RunResources& res) {
     MB_VK_CHECK(vkQueueSubmit(ctx.queue, 1, &submit, res.fence));
   }
   res.inFlight = true;
-  const VkResult waited = vkWaitForFences(ctx.device, 1, &res.fence, VK_TRUE,
-                                         kFenceTimeoutSeconds * 1000 * 1000 * 1000);
+  const VkResult waited =
+      vkWaitForFences(ctx.device, 1, &res.fence, VK_TRUE, kFenceTimeoutSeconds * 1000 * 1000 * 1000);
   if (waited == VK_TIMEOUT) {
-    throw HarnessError("the kernel did not finish within " +
-                       std::to_string(kFenceTimeoutSeconds) + " s");
+    throw HarnessError("the kernel did not finish within " + std::to_string(kFenceTimeoutSeconds) + " s");
   }
   MB_VK_CHECK(waited);
   res.inFlight = false;
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 // Sum over chunks of (end - begin) ticks, converted with timestampPeriod (ns per tick).
 double timestampMs(const DeviceContext& ctx, uint32_t chunkCount, const RunResources& res) {
   std::vector<uint64_t> stamps(2 * size_t{chunkCount});
-  MB_VK_CHECK(vkGetQueryPoolResults(ctx.device, res.queryPool, 0, 2 * chunkCount,
-                                    stamps.size() * sizeof(uint64_t), stamps.data(),
-                                    sizeof(uint64_t),
+  MB_VK_CHECK(vkGetQueryPoolResults(ctx.device, res.queryPool, 0, 2 * chunkCount, stamps.size() * sizeof(uint64_t),
+                                    stamps.data(), sizeof(uint64_t),
                                     VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   // Only the low timestampValidBits bits count; masking the difference handles wrap-around.
-  const uint64_t mask = ctx.timestampValidBits >= 64
-                            ? ~uint64_t{0}
-                            : (uint64_t{1} << ctx.timestampValidBits) - 1;
+  const uint64_t mask = ctx.timestampValidBits >= 64 ? ~uint64_t{0} : (uint64_t{1} << ctx.timestampValidBits) - 1;
   double ns = 0;
   for (uint32_t i = 0; i < chunkCount; ++i) {
     const uint64_t ticks = (stamps[2 * i + 1] - stamps[2 * i]) & mask;
@@ -179,14 +170,12 @@ double timestampMs(const DeviceContext& ctx, uint32_t chunkCount, const RunResou
   return ns / 1e6;
 }
 
-void copyOutputs(const ChunkPlan& plan, uint32_t outStride, const RunResources& res,
-                 std::vector<float>& outputs) {
+void copyOutputs(const ChunkPlan& plan, uint32_t outStride, const RunResources& res, std::vector<float>& outputs) {
   for (size_t s = 0; s < plan.segments.size(); ++s) {
     const Segment& seg = plan.segments[s];
     const size_t floats = seg.records * outStride;
     if (floats == 0) continue;
-    std::memcpy(outputs.data() + seg.firstRecord * outStride, res.outBuffers[s].mapped,
-                floats * sizeof(float));
+    std::memcpy(outputs.data() + seg.firstRecord * outStride, res.outBuffers[s].mapped, floats * sizeof(float));
   }
 }
 
@@ -211,13 +200,9 @@ std::string VulkanHarness::deviceName() const { return impl_->ctx->props.deviceN
 
 bool VulkanHarness::isLavapipe() const { return isLavapipeName(deviceName()); }
 
-uint32_t VulkanHarness::maxWorkGroupCountX() const {
-  return impl_->ctx->props.limits.maxComputeWorkGroupCount[0];
-}
+uint32_t VulkanHarness::maxWorkGroupCountX() const { return impl_->ctx->props.limits.maxComputeWorkGroupCount[0]; }
 
-uint64_t VulkanHarness::maxStorageBufferRange() const {
-  return impl_->ctx->props.limits.maxStorageBufferRange;
-}
+uint64_t VulkanHarness::maxStorageBufferRange() const { return impl_->ctx->props.limits.maxStorageBufferRange; }
 
 bool VulkanHarness::supportsShaderFloat16() const { return impl_->ctx->shaderFloat16; }
 
@@ -229,14 +214,14 @@ std::shared_ptr<Kernel> VulkanHarness::createKernel(const std::vector<uint32_t>&
   return kernel;
 }
 
-RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride,
-                             uint32_t outStride, uint64_t count) {
+RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
+                             uint64_t count) {
   const DeviceContext& ctx = *impl_->ctx;
   if (kernel.ctx.get() != &ctx) throw HarnessError("run: the kernel belongs to another harness");
   if (inputs.size() != count * inStride) {
-    throw HarnessError("run: expected " + std::to_string(count) + " records x " +
-                       std::to_string(inStride) + " floats = " + std::to_string(count * inStride) +
-                       " inputs, got " + std::to_string(inputs.size()));
+    throw HarnessError("run: expected " + std::to_string(count) + " records x " + std::to_string(inStride) +
+                       " floats = " + std::to_string(count * inStride) + " inputs, got " +
+                       std::to_string(inputs.size()));
   }
   RunResult result;
   if (count == 0) return result;
@@ -266,9 +251,7 @@ RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, u
   return result;
 }
 
-std::vector<std::string> VulkanHarness::validationMessages() const {
-  return impl_->ctx->log.snapshot();
-}
+std::vector<std::string> VulkanHarness::validationMessages() const { return impl_->ctx->log.snapshot(); }
 
 void VulkanHarness::clearValidationMessages() { impl_->ctx->log.clear(); }
 

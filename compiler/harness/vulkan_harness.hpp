@@ -68,8 +68,8 @@ class VulkanHarness {
 
   // Runs `count` records. `inputs` holds count * inStride floats. Safe to call from
   // several threads at once (submissions to the one queue are serialized).
-  RunResult run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride,
-                uint32_t outStride, uint64_t count);
+  RunResult run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
+                uint64_t count);
 
   // Messages the validation layer emitted so far (empty when validation is off).
   std::vector<std::string> validationMessages() const;

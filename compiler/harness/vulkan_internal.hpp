@@ -150,9 +150,8 @@ void createInstance(DeviceContext& ctx, bool validation);
 void createDevice(DeviceContext& ctx, const DeviceOptions& options);
 
 // --- vulkan_buffers.cpp -----------------------------------------------------------------
-void createBuffers(const DeviceContext& ctx, const ChunkPlan& plan,
-                   const std::vector<float>& inputs, uint32_t inStride, RunResources& res);
-void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const ChunkPlan& plan,
-                          RunResources& res);
+void createBuffers(const DeviceContext& ctx, const ChunkPlan& plan, const std::vector<float>& inputs, uint32_t inStride,
+                   RunResources& res);
+void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const ChunkPlan& plan, RunResources& res);
 
 }  // namespace mb::harness

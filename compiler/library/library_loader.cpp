@@ -48,16 +48,11 @@ LibraryData LibraryLoader::run() {
   auto manifest = loadJson("manifest.json", {});
   if (!manifest) return std::move(data_);
   JsonFields f(*manifest, sink_);
-  if (!f.object("", {"schema", "units", "slots", "models"}, {}, "the library manifest"))
-    return std::move(data_);
+  if (!f.object("", {"schema", "units", "slots", "models"}, {}, "the library manifest")) return std::move(data_);
   checkSchema(f);
   readUnits(f);
-  forEachName(f, "/slots", "slot", [&](const std::string& n, const SourceLocation& at) {
-    readSlot(n, at);
-  });
-  forEachName(f, "/models", "model", [&](const std::string& n, const SourceLocation& at) {
-    readModel(n, at);
-  });
+  forEachName(f, "/slots", "slot", [&](const std::string& n, const SourceLocation& at) { readSlot(n, at); });
+  forEachName(f, "/models", "model", [&](const std::string& n, const SourceLocation& at) { readModel(n, at); });
   return std::move(data_);
 }
 
@@ -69,8 +64,7 @@ std::string LibraryLoader::diskPath(const std::string& relative) const {
 
 // Parses root/<relative>. A missing file is reported at `referencedFrom` (the manifest
 // entry that names it) when there is one.
-std::optional<JsonDocument> LibraryLoader::loadJson(const std::string& relative,
-                                                    const SourceLocation& referencedFrom) {
+std::optional<JsonDocument> LibraryLoader::loadJson(const std::string& relative, const SourceLocation& referencedFrom) {
   std::string path = diskPath(relative);
   auto text = readFile(path);
   if (!text) {
@@ -88,15 +82,13 @@ std::optional<JsonDocument> LibraryLoader::loadJson(const std::string& relative,
 
 // Resolves a GLSL path given relative to `baseDir` (a folder under the root) to a path
 // relative to the root, reads it once, and reports it at `ptr` when it is missing.
-std::optional<std::string> LibraryLoader::readGlsl(JsonFields& f, const std::string& ptr,
-                                                   const std::string& baseDir) {
+std::optional<std::string> LibraryLoader::readGlsl(JsonFields& f, const std::string& ptr, const std::string& baseDir) {
   auto file = f.string(ptr);
   if (!file) return std::nullopt;
   fs::path p = fs::path(*file);
   std::string rel = (fs::path(baseDir) / p).lexically_normal().generic_string();
   if (p.is_absolute() || rel.rfind("..", 0) == 0) {
-    f.error("E-INVALID-PATH", f.valueAt(ptr),
-            "'" + *file + "' must be a relative path inside the shader library");
+    f.error("E-INVALID-PATH", f.valueAt(ptr), "'" + *file + "' must be a relative path inside the shader library");
     return std::nullopt;
   }
   if (!data_.sources.count(rel)) {
@@ -147,8 +139,7 @@ void LibraryLoader::forEachName(JsonFields& f, const std::string& ptr, const std
     std::string at = JsonFields::element(ptr, i);
     const std::string& name = (*names)[i];
     if (!isIdentifier(name)) {
-      f.error("E-INVALID-NAME", f.valueAt(at),
-              what + " name '" + name + "' must match [A-Za-z_][A-Za-z0-9_]*");
+      f.error("E-INVALID-NAME", f.valueAt(at), what + " name '" + name + "' must match [A-Za-z_][A-Za-z0-9_]*");
       continue;
     }
     if (!seen.insert(name).second) {
@@ -161,12 +152,10 @@ void LibraryLoader::forEachName(JsonFields& f, const std::string& ptr, const std
 
 // --- shared field readers -----------------------------------------------------------
 
-std::optional<std::string> LibraryLoader::identifier(JsonFields& f, const std::string& ptr,
-                                                     const std::string& what) {
+std::optional<std::string> LibraryLoader::identifier(JsonFields& f, const std::string& ptr, const std::string& what) {
   auto s = f.string(ptr);
   if (s && !isIdentifier(*s)) {
-    f.error("E-INVALID-NAME", f.valueAt(ptr),
-            what + " '" + *s + "' must match [A-Za-z_][A-Za-z0-9_]*");
+    f.error("E-INVALID-NAME", f.valueAt(ptr), what + " '" + *s + "' must match [A-Za-z_][A-Za-z0-9_]*");
     return std::nullopt;
   }
   return s;
@@ -177,8 +166,7 @@ std::optional<std::string> LibraryLoader::identifier(JsonFields& f, const std::s
 std::optional<std::string> LibraryLoader::nonEmpty(JsonFields& f, const std::string& ptr) {
   auto s = f.string(ptr);
   if (s && s->find_first_not_of(" \t\r\n") == std::string::npos) {
-    f.error("E-EMPTY-FIELD", f.valueAt(ptr),
-            "'" + JsonFields::describe(ptr) + "' must not be empty");
+    f.error("E-EMPTY-FIELD", f.valueAt(ptr), "'" + JsonFields::describe(ptr) + "' must not be empty");
     return std::nullopt;
   }
   return s;
@@ -192,8 +180,7 @@ std::optional<ValueType> LibraryLoader::valueType(JsonFields& f, const std::stri
   auto t = parseValueType(*s);
   if (!t || (*t == ValueType::Geometry && !allowGeometry)) {
     f.error("E-UNKNOWN-TYPE", f.valueAt(ptr),
-            "unknown type '" + *s + "' for '" + JsonFields::describe(ptr) + "': expected one of " +
-                quotedList(allowed),
+            "unknown type '" + *s + "' for '" + JsonFields::describe(ptr) + "': expected one of " + quotedList(allowed),
             didYouMean(*s, allowed));
     return std::nullopt;
   }
@@ -227,23 +214,19 @@ void LibraryLoader::readSlot(const std::string& folder, const SourceLocation& li
   auto doc = loadJson(folder + "/slot.json", listedAt);
   if (!doc) return;
   JsonFields f(*doc, sink_);
-  if (!f.object("", {"name", "description", "returns", "params", "bricks"}, {},
-                "slot '" + folder + "'"))
-    return;
+  if (!f.object("", {"name", "description", "returns", "params", "bricks"}, {}, "slot '" + folder + "'")) return;
   Slot slot;
   slot.name = folder;
   auto name = f.string("/name");
   if (name && *name != folder)
     f.error("E-NAME-MISMATCH", f.valueAt("/name"),
-            "slot name '" + *name + "' differs from its folder '" + folder +
-                "': the folder name is the slot's id");
+            "slot name '" + *name + "' differs from its folder '" + folder + "': the folder name is the slot's id");
   slot.description = f.string("/description").value_or("");
   slot.returns = valueType(f, "/returns", false).value_or(ValueType::Float);
   slot.params = readSlotParams(f);
   data_.slots.push_back(slot);
   if (!f.isArray("/bricks")) return;
-  for (size_t i = 0; i < f.find("/bricks")->size(); ++i)
-    readBrick(f, JsonFields::element("/bricks", i), slot);
+  for (size_t i = 0; i < f.find("/bricks")->size(); ++i) readBrick(f, JsonFields::element("/bricks", i), slot);
 }
 
 std::vector<SlotParam> LibraryLoader::readSlotParams(JsonFields& f) {
@@ -256,8 +239,7 @@ std::vector<SlotParam> LibraryLoader::readSlotParams(JsonFields& f) {
     auto name = identifier(f, ptr + "/name", "parameter name");
     auto type = valueType(f, ptr + "/type", true);
     if (name && !seen.insert(*name).second)
-      f.error("E-DUPLICATE-NAME", f.valueAt(ptr + "/name"),
-              "parameter '" + *name + "' is listed twice");
+      f.error("E-DUPLICATE-NAME", f.valueAt(ptr + "/name"), "parameter '" + *name + "' is listed twice");
     if (name && type) params.push_back({*name, *type});
   }
   return params;
@@ -265,11 +247,8 @@ std::vector<SlotParam> LibraryLoader::readSlotParams(JsonFields& f) {
 
 void LibraryLoader::readBrick(JsonFields& f, const std::string& ptr, const Slot& slot) {
   const json* idValue = f.find(ptr + "/id");
-  std::string what = idValue && idValue->is_string()
-                         ? "brick '" + idValue->get<std::string>() + "'"
-                         : "brick";
-  if (!f.object(ptr,
-                {"id", "name", "function", "file", "citation", "requires", "domain", "tolerance"},
+  std::string what = idValue && idValue->is_string() ? "brick '" + idValue->get<std::string>() + "'" : "brick";
+  if (!f.object(ptr, {"id", "name", "function", "file", "citation", "requires", "domain", "tolerance"},
                 {"geometry", "notes", "unstable_variant"}, what))
     return;
   Brick b;
@@ -317,8 +296,8 @@ std::optional<std::string> LibraryLoader::brickId(JsonFields& f, const std::stri
   if (!inserted) {
     const SourceLocation& first = it->second;
     f.error("E-DUPLICATE-BRICK", here,
-            "duplicate brick id '" + *id + "': already defined at " + first.file + ":" +
-                std::to_string(first.line) + ":" + std::to_string(first.column));
+            "duplicate brick id '" + *id + "': already defined at " + first.file + ":" + std::to_string(first.line) +
+                ":" + std::to_string(first.column));
   }
   return id;
 }
@@ -335,8 +314,8 @@ std::map<std::string, Range> LibraryLoader::readDomain(JsonFields& f, const std:
     std::string at = JsonFields::member(ptr, key);
     if (std::find(sampled.begin(), sampled.end(), key) == sampled.end()) {
       f.error("E-UNKNOWN-PARAM", f.keyAt(at),
-              "domain names '" + key + "', which is not a float/vec2/vec3 parameter of slot '" +
-                  slot.name + "' (those are " + quotedList(sampled) + ")",
+              "domain names '" + key + "', which is not a float/vec2/vec3 parameter of slot '" + slot.name +
+                  "' (those are " + quotedList(sampled) + ")",
               didYouMean(key, sampled));
       continue;
     }
@@ -386,8 +365,7 @@ Tolerance LibraryLoader::readTolerance(JsonFields& f, const std::string& ptr) {
     auto v = f.number(at);
     if (!v) return;
     if (!(std::isfinite(*v) && *v >= 0.0))
-      f.error("E-INVALID-VALUE", f.valueAt(at),
-              "'" + JsonFields::describe(at) + "' must be a finite number >= 0");
+      f.error("E-INVALID-VALUE", f.valueAt(at), "'" + JsonFields::describe(at) + "' must be a finite number >= 0");
     else
       out = *v;
   };

@@ -31,18 +31,15 @@ std::optional<std::string> readFile(const std::filesystem::path& path);
 // caller throws once at the end, so one run reports all mistakes of a new brick.
 class LibraryLoader {
  public:
-  LibraryLoader(std::filesystem::path root, DiagnosticSink& sink)
-      : root_(std::move(root)), sink_(sink) {}
+  LibraryLoader(std::filesystem::path root, DiagnosticSink& sink) : root_(std::move(root)), sink_(sink) {}
 
   LibraryData run();
 
  private:
   // --- files (library_loader.cpp) -----------------------------------------------------
   std::string diskPath(const std::string& relative) const;
-  std::optional<JsonDocument> loadJson(const std::string& relative,
-                                       const SourceLocation& referencedFrom);
-  std::optional<std::string> readGlsl(JsonFields& f, const std::string& ptr,
-                                      const std::string& baseDir);
+  std::optional<JsonDocument> loadJson(const std::string& relative, const SourceLocation& referencedFrom);
+  std::optional<std::string> readGlsl(JsonFields& f, const std::string& ptr, const std::string& baseDir);
 
   // --- manifest (library_loader.cpp) --------------------------------------------------
   void checkSchema(JsonFields& f);
@@ -51,8 +48,7 @@ class LibraryLoader {
   void forEachName(JsonFields& f, const std::string& ptr, const std::string& what, Fn fn);
 
   // --- shared field readers (library_loader.cpp) --------------------------------------
-  std::optional<std::string> identifier(JsonFields& f, const std::string& ptr,
-                                        const std::string& what);
+  std::optional<std::string> identifier(JsonFields& f, const std::string& ptr, const std::string& what);
   std::optional<std::string> nonEmpty(JsonFields& f, const std::string& ptr);
   std::optional<ValueType> valueType(JsonFields& f, const std::string& ptr, bool allowGeometry);
   std::optional<Range> range(JsonFields& f, const std::string& ptr);
@@ -70,14 +66,11 @@ class LibraryLoader {
 
   // --- models (library_models.cpp) ----------------------------------------------------
   void readModel(const std::string& name, const SourceLocation& listedAt);
-  std::optional<std::string> roleBinding(JsonFields& f, const std::string& ptr,
-                                         const std::string& roleName, const ShadingModel& m,
-                                         const std::string& what);
-  std::map<std::string, std::map<std::string, std::string>> readQuality(JsonFields& f,
-                                                                        const ShadingModel& m);
+  std::optional<std::string> roleBinding(JsonFields& f, const std::string& ptr, const std::string& roleName,
+                                         const ShadingModel& m, const std::string& what);
+  std::map<std::string, std::map<std::string, std::string>> readQuality(JsonFields& f, const ShadingModel& m);
   std::vector<BrickRule> readIncompatible(JsonFields& f, const ShadingModel& m);
-  std::vector<std::string> namesFrom(JsonFields& f, const std::string& ptr,
-                                     const std::vector<std::string>& allowed,
+  std::vector<std::string> namesFrom(JsonFields& f, const std::string& ptr, const std::vector<std::string>& allowed,
                                      const std::string& what);
   std::vector<ModelFeature> readFeatures(JsonFields& f);
   std::vector<std::string> featureNames(const ShadingModel& m) const;

@@ -42,8 +42,9 @@ void LibraryLoader::readModel(const std::string& name, const SourceLocation& lis
 
 // One "role": "brick" member of a model table (quality levels, incompatible pairs): the
 // role must be the model's and the brick of that role's slot. `what` starts the message.
-std::optional<std::string> LibraryLoader::roleBinding(JsonFields& f, const std::string& ptr, const std::string& roleName,
-                                                      const ShadingModel& m, const std::string& what) {
+std::optional<std::string> LibraryLoader::roleBinding(JsonFields& f, const std::string& ptr,
+                                                      const std::string& roleName, const ShadingModel& m,
+                                                      const std::string& what) {
   auto id = f.string(ptr);
   const ModelRole* role = m.findRole(roleName);
   if (!role) {
@@ -57,9 +58,10 @@ std::optional<std::string> LibraryLoader::roleBinding(JsonFields& f, const std::
   if (!id) return std::nullopt;
   const Brick* b = findLoadedBrick(*id);
   if (!b || b->slot != role->slot) {
-    f.error("E-UNKNOWN-BRICK", f.valueAt(ptr),
-            what + " binds '" + *id + "' to role '" + role->role + "', but it is not a brick of slot '" + role->slot + "'",
-            didYouMean(*id, loadedBricksOf(role->slot)));
+    f.error(
+        "E-UNKNOWN-BRICK", f.valueAt(ptr),
+        what + " binds '" + *id + "' to role '" + role->role + "', but it is not a brick of slot '" + role->slot + "'",
+        didYouMean(*id, loadedBricksOf(role->slot)));
     return std::nullopt;
   }
   return id;
@@ -68,7 +70,8 @@ std::optional<std::string> LibraryLoader::roleBinding(JsonFields& f, const std::
 // "quality": {"low": {role: brick}, "medium": {...}}. "high" is the default bindings and is
 // not written (docs/scenes.md "Quality"); the level names are permute/axes.hpp's
 // allQualityLevels() minus "high" (the library does not depend on permute).
-std::map<std::string, std::map<std::string, std::string>> LibraryLoader::readQuality(JsonFields& f, const ShadingModel& m) {
+std::map<std::string, std::map<std::string, std::string>> LibraryLoader::readQuality(JsonFields& f,
+                                                                                     const ShadingModel& m) {
   static const std::vector<std::string> levels{"low", "medium"};
   std::map<std::string, std::map<std::string, std::string>> out;
   if (!f.object("/quality", {}, levels, "quality table")) return out;
@@ -95,12 +98,14 @@ std::vector<BrickRule> LibraryLoader::readIncompatible(JsonFields& f, const Shad
     rule.reason = f.string(ptr + "/reason").value_or("");
     bool complete = f.isObject(ptr + "/bricks");
     if (complete && f.find(ptr + "/bricks")->empty()) {
-      f.error("E-FIELD-TYPE", f.valueAt(ptr + "/bricks"), "an incompatible-bricks rule names no bricks: expected role: brick pairs");
+      f.error("E-FIELD-TYPE", f.valueAt(ptr + "/bricks"),
+              "an incompatible-bricks rule names no bricks: expected role: brick pairs");
       complete = false;
     }
     if (complete)
       for (const auto& item : f.find(ptr + "/bricks")->items()) {
-        auto id = roleBinding(f, JsonFields::member(ptr + "/bricks", item.key()), item.key(), m, "incompatible-bricks rule");
+        auto id =
+            roleBinding(f, JsonFields::member(ptr + "/bricks", item.key()), item.key(), m, "incompatible-bricks rule");
         if (id)
           rule.bricks.emplace_back(item.key(), *id);
         else
@@ -122,8 +127,7 @@ std::vector<std::string> LibraryLoader::namesFrom(JsonFields& f, const std::stri
     std::string at = JsonFields::element(ptr, i);
     if (std::find(allowed.begin(), allowed.end(), n) == allowed.end())
       f.error("E-UNKNOWN-NAME", f.valueAt(at),
-              "unknown " + what + " '" + n + "': expected one of " + quotedList(allowed),
-              didYouMean(n, allowed));
+              "unknown " + what + " '" + n + "': expected one of " + quotedList(allowed), didYouMean(n, allowed));
     else if (std::find(out.begin(), out.end(), n) != out.end())
       f.error("E-DUPLICATE-NAME", f.valueAt(at), what + " '" + n + "' is listed twice");
     else
@@ -181,8 +185,7 @@ std::vector<ModelRole> LibraryLoader::readRoles(JsonFields& f, const ShadingMode
   for (const auto& s : data_.slots) known.push_back(s.name);
   for (size_t i = 0; i < f.find("/roles")->size(); ++i) {
     std::string ptr = JsonFields::element("/roles", i);
-    if (!f.object(ptr, {"role", "slot", "description"}, {"default", "feature", "lights", "environments"},
-                  "model role"))
+    if (!f.object(ptr, {"role", "slot", "description"}, {"default", "feature", "lights", "environments"}, "model role"))
       continue;
     ModelRole r;
     auto role = identifier(f, ptr + "/role", "role name");
@@ -194,8 +197,7 @@ std::vector<ModelRole> LibraryLoader::readRoles(JsonFields& f, const ShadingMode
       r.environments = namesFrom(f, ptr + "/environments", m.environments, "environment mode");
     if (slot && std::find(known.begin(), known.end(), *slot) == known.end()) {
       f.error("E-UNKNOWN-SLOT", f.valueAt(ptr + "/slot"),
-              "unknown slot '" + *slot + "': the manifest's slots are " + quotedList(known),
-              didYouMean(*slot, known));
+              "unknown slot '" + *slot + "': the manifest's slots are " + quotedList(known), didYouMean(*slot, known));
       slot.reset();
     }
     if (slot && f.find(ptr + "/default")) {
@@ -203,8 +205,7 @@ std::vector<ModelRole> LibraryLoader::readRoles(JsonFields& f, const ShadingMode
       const Brick* b = id ? findLoadedBrick(*id) : nullptr;
       if (id && (!b || b->slot != *slot)) {
         f.error("E-UNKNOWN-BRICK", f.valueAt(ptr + "/default"),
-                "default '" + *id + "' is not a brick of slot '" + *slot + "'",
-                didYouMean(*id, loadedBricksOf(*slot)));
+                "default '" + *id + "' is not a brick of slot '" + *slot + "'", didYouMean(*id, loadedBricksOf(*slot)));
       } else if (id) {
         r.defaultBrick = *id;
       }
@@ -240,8 +241,7 @@ std::vector<ModelInput> LibraryLoader::readModelInputs(JsonFields& f, const Shad
   std::set<std::string> seen;
   for (size_t i = 0; i < f.find("/inputs")->size(); ++i) {
     std::string ptr = JsonFields::element("/inputs", i);
-    if (!f.object(ptr, {"name", "type", "default", "range", "description"}, {"feature", "neutral"},
-                  "model input"))
+    if (!f.object(ptr, {"name", "type", "default", "range", "description"}, {"feature", "neutral"}, "model input"))
       continue;
     ModelInput in;
     auto name = identifier(f, ptr + "/name", "input name");

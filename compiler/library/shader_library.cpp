@@ -31,8 +31,7 @@ std::mutex& sourceCacheMutex() {
 static std::vector<Diagnostic> inReadingOrder(std::vector<Diagnostic> diags) {
   std::vector<std::string> files;
   for (const auto& d : diags)
-    if (std::find(files.begin(), files.end(), d.where.file) == files.end())
-      files.push_back(d.where.file);
+    if (std::find(files.begin(), files.end(), d.where.file) == files.end()) files.push_back(d.where.file);
   auto rank = [&](const Diagnostic& d) {
     auto index = std::find(files.begin(), files.end(), d.where.file) - files.begin();
     return std::make_tuple(index, d.where.line, d.where.column);
@@ -69,21 +68,15 @@ static const T* findBy(const std::vector<T>& items, const std::string& key, Key 
   return it == items.end() ? nullptr : &*it;
 }
 
-const Slot* ShaderLibrary::findSlot(const std::string& name) const {
-  return findBy(slots_, name, &Slot::name);
-}
+const Slot* ShaderLibrary::findSlot(const std::string& name) const { return findBy(slots_, name, &Slot::name); }
 
-const Brick* ShaderLibrary::findBrick(const std::string& id) const {
-  return findBy(bricks_, id, &Brick::id);
-}
+const Brick* ShaderLibrary::findBrick(const std::string& id) const { return findBy(bricks_, id, &Brick::id); }
 
 const ShadingModel* ShaderLibrary::findModel(const std::string& name) const {
   return findBy(models_, name, &ShadingModel::name);
 }
 
-const ModelRole* ShadingModel::findRole(const std::string& role) const {
-  return findBy(roles, role, &ModelRole::role);
-}
+const ModelRole* ShadingModel::findRole(const std::string& role) const { return findBy(roles, role, &ModelRole::role); }
 
 const ModelFeature* ShadingModel::findFeature(const std::string& feature) const {
   return findBy(features, feature, &ModelFeature::name);
@@ -106,9 +99,7 @@ const std::vector<std::string>& allEnvironmentModes() {
   return modes;
 }
 
-const Unit* ShaderLibrary::findUnit(const std::string& id) const {
-  return findBy(units_, id, &Unit::id);
-}
+const Unit* ShaderLibrary::findUnit(const std::string& id) const { return findBy(units_, id, &Unit::id); }
 
 std::vector<std::string> ShaderLibrary::brickIds() const {
   std::vector<std::string> ids;
@@ -129,17 +120,16 @@ const std::string& ShaderLibrary::source(const std::string& relativeFile) const 
   if (it != sources_.end()) return it->second;
   auto text = readFile(root_ / relativeFile);
   if (!text) {
-    throw DiagnosticError({{Severity::Error, "E-FILE-NOT-FOUND", {displayPath(relativeFile), 0, 0},
-                            "cannot read shader library file '" +
-                                (root_ / relativeFile).string() + "'",
+    throw DiagnosticError({{Severity::Error,
+                            "E-FILE-NOT-FOUND",
+                            {displayPath(relativeFile), 0, 0},
+                            "cannot read shader library file '" + (root_ / relativeFile).string() + "'",
                             ""}});
   }
   // std::map never moves its nodes, so the returned reference stays valid.
   return sources_.emplace(relativeFile, std::move(*text)).first->second;
 }
 
-std::string ShaderLibrary::displayPath(const std::string& relativeFile) {
-  return "shaderlib/" + relativeFile;
-}
+std::string ShaderLibrary::displayPath(const std::string& relativeFile) { return "shaderlib/" + relativeFile; }
 
 }  // namespace mb

@@ -75,8 +75,8 @@ struct ModelInput {
   std::vector<double> defaultValue;
   Range range;
   std::string description;
-  std::string feature;                // non-empty: exists only when this feature is enabled
-  std::vector<double> neutral;        // value at which the feature changes nothing (or empty)
+  std::string feature;          // non-empty: exists only when this feature is enabled
+  std::vector<double> neutral;  // value at which the feature changes nothing (or empty)
 };
 
 // One brick call of a skeleton (docs/models.md "Roles"): MB_SLOT_<role>, filled by a brick
@@ -110,14 +110,14 @@ struct BrickRule {
 struct ShadingModel {
   std::string name;
   std::string description;
-  std::string skeleton;  // GLSL file relative to the shaderlib root
-  std::vector<std::string> parts;  // more skeleton files, included after it, in order
+  std::string skeleton;                    // GLSL file relative to the shaderlib root
+  std::vector<std::string> parts;          // more skeleton files, included after it, in order
   std::vector<std::string> requiredUnits;  // units (manifest key "requires")
   std::vector<std::string> lights;         // light types the skeleton shades
   std::vector<std::string> environments;   // environment modes it supports
   std::vector<ModelFeature> features;
   std::vector<ModelRole> roles;
-  std::vector<ModelInput> inputs;          // core inputs, then feature inputs, as listed
+  std::vector<ModelInput> inputs;  // core inputs, then feature inputs, as listed
   // Manifest "quality": level ("low", "medium") -> role -> brick that replaces the role's
   // default at that level (docs/scenes.md "Quality"). "high" is the default bindings; a level
   // absent here is not defined by the model (permute/axes.hpp invalidReason).

@@ -6,23 +6,20 @@ using nlohmann::json;
 
 std::string formatNumber(double x) { return json(x).dump(); }
 
-std::string formatRange(const Range& r) {
-  return "[" + formatNumber(r.lo) + ", " + formatNumber(r.hi) + "]";
-}
+std::string formatRange(const Range& r) { return "[" + formatNumber(r.lo) + ", " + formatNumber(r.hi) + "]"; }
 
 std::string jsonShapeOf(ValueType t) {
   if (t == ValueType::Float) return "a number";
   return "an array of " + std::to_string(componentCount(t)) + " numbers";
 }
 
-std::optional<std::vector<double>> readTypedValue(JsonFields& f, const std::string& ptr,
-                                                  ValueType t) {
+std::optional<std::vector<double>> readTypedValue(JsonFields& f, const std::string& ptr, ValueType t) {
   const json* j = f.find(ptr);
   if (!j) return std::nullopt;
   auto wrongShape = [&](const std::string& found) {
-    f.error("E-PARAM-TYPE", f.valueAt(ptr),
-            "'" + JsonFields::describe(ptr) + "' must be a " + toString(t) + " (" +
-                jsonShapeOf(t) + "), found " + found);
+    f.error(
+        "E-PARAM-TYPE", f.valueAt(ptr),
+        "'" + JsonFields::describe(ptr) + "' must be a " + toString(t) + " (" + jsonShapeOf(t) + "), found " + found);
     return std::nullopt;
   };
   if (t == ValueType::Float) {
@@ -40,8 +37,8 @@ std::optional<std::vector<double>> readTypedValue(JsonFields& f, const std::stri
   return out;
 }
 
-bool checkInRange(JsonFields& f, const std::string& ptr, const std::vector<double>& value,
-                  const Range& range, const std::string& rangeOrigin) {
+bool checkInRange(JsonFields& f, const std::string& ptr, const std::vector<double>& value, const Range& range,
+                  const std::string& rangeOrigin) {
   bool ok = true;
   bool isVector = f.find(ptr) && f.find(ptr)->is_array();
   for (size_t i = 0; i < value.size(); ++i) {
@@ -49,8 +46,8 @@ bool checkInRange(JsonFields& f, const std::string& ptr, const std::vector<doubl
     // Point at the offending component of a vector, so the column is exact.
     std::string at = isVector ? JsonFields::element(ptr, i) : ptr;
     f.error("E-PARAM-RANGE", f.valueAt(at),
-            "'" + JsonFields::describe(at) + "' = " + formatNumber(value[i]) +
-                " is outside " + formatRange(range) + ", " + rangeOrigin);
+            "'" + JsonFields::describe(at) + "' = " + formatNumber(value[i]) + " is outside " + formatRange(range) +
+                ", " + rangeOrigin);
     ok = false;
   }
   return ok;

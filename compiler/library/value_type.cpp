@@ -4,20 +4,28 @@ namespace mb {
 
 int componentCount(ValueType t) {
   switch (t) {
-    case ValueType::Float: return 1;
-    case ValueType::Vec2: return 2;
-    case ValueType::Vec3: return 3;
-    case ValueType::Geometry: return 9;  // the probe passes n, v, l (DESIGN.md "Inputs are vectors")
+    case ValueType::Float:
+      return 1;
+    case ValueType::Vec2:
+      return 2;
+    case ValueType::Vec3:
+      return 3;
+    case ValueType::Geometry:
+      return 9;  // the probe passes n, v, l (DESIGN.md "Inputs are vectors")
   }
   return 0;
 }
 
 std::string toString(ValueType t) {
   switch (t) {
-    case ValueType::Float: return "float";
-    case ValueType::Vec2: return "vec2";
-    case ValueType::Vec3: return "vec3";
-    case ValueType::Geometry: return "Geometry";
+    case ValueType::Float:
+      return "float";
+    case ValueType::Vec2:
+      return "vec2";
+    case ValueType::Vec3:
+      return "vec3";
+    case ValueType::Geometry:
+      return "Geometry";
   }
   return "?";
 }

@@ -51,9 +51,12 @@ CsvTable parseCsv(const std::string& text, const std::string& file) {
       continue;
     }
     if (fields.size() != t.header.size()) {
-      errors.push_back({Severity::Error, "E-CSV-SHAPE", {file, lineNo, 1},
+      errors.push_back({Severity::Error,
+                        "E-CSV-SHAPE",
+                        {file, lineNo, 1},
                         "row has " + std::to_string(fields.size()) + " fields, expected " +
-                            std::to_string(t.header.size()) + " (one per header column)", ""});
+                            std::to_string(t.header.size()) + " (one per header column)",
+                        ""});
       continue;
     }
     std::vector<double> row;
@@ -61,8 +64,8 @@ CsvTable parseCsv(const std::string& text, const std::string& file) {
       double v = 0;
       auto res = std::from_chars(f.data(), f.data() + f.size(), v);
       if (f.empty() || res.ec != std::errc() || res.ptr != f.data() + f.size()) {
-        errors.push_back({Severity::Error, "E-CSV-NUMBER", {file, lineNo, col},
-                          "expected a number, found '" + f + "'", ""});
+        errors.push_back(
+            {Severity::Error, "E-CSV-NUMBER", {file, lineNo, col}, "expected a number, found '" + f + "'", ""});
       }
       row.push_back(v);
     }
@@ -78,25 +81,26 @@ CsvTable parseCsv(const std::string& text, const std::string& file) {
 CsvTable loadCsv(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    throw DiagnosticError({{Severity::Error, "E-FILE-NOT-FOUND", {path, 0, 0},
-                            "cannot open file: expected a readable CSV file", ""}});
+    throw DiagnosticError(
+        {{Severity::Error, "E-FILE-NOT-FOUND", {path, 0, 0}, "cannot open file: expected a readable CSV file", ""}});
   }
   std::stringstream ss;
   ss << in.rdbuf();
   return parseCsv(ss.str(), path);
 }
 
-std::vector<std::vector<double>> selectColumns(const CsvTable& table,
-                                               const std::vector<std::string>& expected) {
+std::vector<std::vector<double>> selectColumns(const CsvTable& table, const std::vector<std::string>& expected) {
   std::vector<Diagnostic> errors;
   // The header is the first non-comment line; find it again for column positions.
   std::vector<int> index(expected.size(), -1);
   for (size_t c = 0; c < table.header.size(); ++c) {
     auto it = std::find(expected.begin(), expected.end(), table.header[c]);
     if (it == expected.end()) {
-      errors.push_back({Severity::Error, "E-CSV-COLUMN",
+      errors.push_back({Severity::Error,
+                        "E-CSV-COLUMN",
                         {table.file, table.headerLine, table.headerColumns[c]},
-                        "unknown column '" + table.header[c] + "'", didYouMean(table.header[c], expected)});
+                        "unknown column '" + table.header[c] + "'",
+                        didYouMean(table.header[c], expected)});
     } else {
       index[it - expected.begin()] = static_cast<int>(c);
     }
@@ -105,8 +109,8 @@ std::vector<std::vector<double>> selectColumns(const CsvTable& table,
   for (size_t k = 0; k < expected.size(); ++k)
     if (index[k] < 0) missing += (missing.empty() ? "" : ", ") + expected[k];
   if (!missing.empty())
-    errors.push_back({Severity::Error, "E-CSV-COLUMN", {table.file, table.headerLine, 1},
-                      "missing column(s): " + missing, ""});
+    errors.push_back(
+        {Severity::Error, "E-CSV-COLUMN", {table.file, table.headerLine, 1}, "missing column(s): " + missing, ""});
   if (!errors.empty()) {
     std::string all;
     for (size_t k = 0; k < expected.size(); ++k) all += (k ? "," : "") + expected[k];

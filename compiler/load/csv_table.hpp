@@ -23,7 +23,6 @@ CsvTable parseCsv(const std::string& text, const std::string& file);
 
 // Reorders the columns to `expected`: every expected column must be present, and no other.
 // Throws DiagnosticError naming the header's line and column.
-std::vector<std::vector<double>> selectColumns(const CsvTable& table,
-                                               const std::vector<std::string>& expected);
+std::vector<std::vector<double>> selectColumns(const CsvTable& table, const std::vector<std::string>& expected);
 
 }  // namespace mb

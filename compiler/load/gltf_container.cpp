@@ -17,7 +17,7 @@ namespace mb {
 
 namespace {
 
-constexpr uint32_t kGlbMagic = 0x46546C67;  // "glTF"
+constexpr uint32_t kGlbMagic = 0x46546C67;   // "glTF"
 constexpr uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
 constexpr uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
 constexpr size_t kHeaderSize = 12;
@@ -81,7 +81,9 @@ void appendU32(std::string& out, uint32_t v) {
 // message repeats the offset, which is what a hex dump shows (docs/gltf.md).
 [[noreturn]] void glbError(const std::string& code, const std::string& file, uint64_t offset,
                            const std::string& message) {
-  throw DiagnosticError({{Severity::Error, code, {file, 1, static_cast<int>(std::min<uint64_t>(offset + 1, INT32_MAX))},
+  throw DiagnosticError({{Severity::Error,
+                          code,
+                          {file, 1, static_cast<int>(std::min<uint64_t>(offset + 1, INT32_MAX))},
                           "invalid .glb at byte " + std::to_string(offset) + ": " + message}});
 }
 
@@ -89,9 +91,7 @@ bool isGlb(ByteSource& bytes) { return bytes.size() >= 4 && bytes.u32(0) == kGlb
 
 // A file named .glb is a GLB container whatever its bytes (a damaged header is a GLB error, not
 // a JSON one); any other name is read as GLB when it starts with the magic, else as JSON text.
-bool readsAsGlb(ByteSource& bytes, const std::string& file) {
-  return lowerExtension(file) == ".glb" || isGlb(bytes);
-}
+bool readsAsGlb(ByteSource& bytes, const std::string& file) { return lowerExtension(file) == ".glb" || isGlb(bytes); }
 
 // A printable rendering of the 4 bytes where the magic should be, for the message.
 std::string magicText(ByteSource& bytes) {
@@ -109,19 +109,17 @@ std::string jsonChunkOf(ByteSource& bytes, const std::string& file, GltfContaine
   info.glb = true;
   const uint64_t size = bytes.size();
   if (size < kHeaderSize)
-    glbError("E-GLB-TRUNCATED", file, size,
-             "the header needs 12 bytes, the file has " + std::to_string(size));
+    glbError("E-GLB-TRUNCATED", file, size, "the header needs 12 bytes, the file has " + std::to_string(size));
   if (bytes.u32(0) != kGlbMagic)
     glbError("E-GLB-HEADER", file, 0, "the magic is '" + magicText(bytes) + "', expected 'glTF'");
   uint32_t version = bytes.u32(4);
   if (version != 2)
-    glbError("E-GLB-HEADER", file, 4,
-             "container version " + std::to_string(version) + ", expected 2 (glTF 2.0)");
+    glbError("E-GLB-HEADER", file, 4, "container version " + std::to_string(version) + ", expected 2 (glTF 2.0)");
   uint64_t length = bytes.u32(8);
   if (length > size)
-    glbError("E-GLB-TRUNCATED", file, size,
-             "the header says " + std::to_string(length) + " bytes, the file has " +
-                 std::to_string(size) + " (truncated)");
+    glbError(
+        "E-GLB-TRUNCATED", file, size,
+        "the header says " + std::to_string(length) + " bytes, the file has " + std::to_string(size) + " (truncated)");
   if (length < size)
     glbError("E-GLB-HEADER", file, 8,
              "the header says " + std::to_string(length) + " bytes, the file has " + std::to_string(size));
@@ -130,25 +128,24 @@ std::string jsonChunkOf(ByteSource& bytes, const std::string& file, GltfContaine
   size_t chunkIndex = 0;
   for (uint64_t at = kHeaderSize; at < length; ++chunkIndex) {
     if (length - at < kChunkHeaderSize)
-      glbError("E-GLB-TRUNCATED", file, at, "chunk header needs 8 bytes, " +
-                                                std::to_string(length - at) + " remain");
+      glbError("E-GLB-TRUNCATED", file, at, "chunk header needs 8 bytes, " + std::to_string(length - at) + " remain");
     uint64_t chunkLength = bytes.u32(at);
     uint32_t type = bytes.u32(at + 4);
     uint64_t data = at + kChunkHeaderSize;
     if (chunkLength > length - data)
       glbError("E-GLB-CHUNK", file, at,
-               "chunk " + std::to_string(chunkIndex) + " says " + std::to_string(chunkLength) +
-                   " bytes, only " + std::to_string(length - data) + " remain");
+               "chunk " + std::to_string(chunkIndex) + " says " + std::to_string(chunkLength) + " bytes, only " +
+                   std::to_string(length - data) + " remain");
     if (chunkLength % 4 != 0)
       glbError("E-GLB-CHUNK", file, at,
                "chunk " + std::to_string(chunkIndex) + " length " + std::to_string(chunkLength) +
                    " is not a multiple of 4 (chunks are 4-byte aligned)");
     if (chunkIndex == 0) {
-      if (type != kChunkJson)
-        glbError("E-GLB-CHUNK", file, at + 4, "the first chunk must be of type JSON");
+      if (type != kChunkJson) glbError("E-GLB-CHUNK", file, at + 4, "the first chunk must be of type JSON");
       if (chunkLength > kMaxGltfJsonBytes)
-        glbError("E-FILE-TOO-LARGE", file, at, "a JSON chunk of " + std::to_string(chunkLength) +
-                                                   " bytes is over the limit of " + std::to_string(kMaxGltfJsonBytes));
+        glbError("E-FILE-TOO-LARGE", file, at,
+                 "a JSON chunk of " + std::to_string(chunkLength) + " bytes is over the limit of " +
+                     std::to_string(kMaxGltfJsonBytes));
       json = bytes.read(data, chunkLength);
     } else if (type == kChunkJson) {
       glbError("E-GLB-CHUNK", file, at + 4, "a second JSON chunk (only the first may be JSON)");
@@ -183,15 +180,21 @@ JsonDocument loadGltfJson(const std::string& path, GltfContainerInfo& info) {
   uint64_t size = regular ? std::filesystem::file_size(path, ec) : 0;
   std::ifstream in(path, std::ios::binary);
   if (!regular || ec || !in) {
-    throw DiagnosticError({{Severity::Error, "E-FILE-NOT-FOUND", {path, 0, 0},
-                            "cannot open file: expected a readable .gltf or .glb file", ""}});
+    throw DiagnosticError({{Severity::Error,
+                            "E-FILE-NOT-FOUND",
+                            {path, 0, 0},
+                            "cannot open file: expected a readable .gltf or .glb file",
+                            ""}});
   }
   FileSource source(in, size);
   if (readsAsGlb(source, path)) return JsonDocument::parse(jsonChunkOf(source, path, info), path);
   if (size > kMaxGltfJsonBytes) {
-    throw DiagnosticError({{Severity::Error, "E-FILE-TOO-LARGE", {path, 0, 0},
+    throw DiagnosticError({{Severity::Error,
+                            "E-FILE-TOO-LARGE",
+                            {path, 0, 0},
                             "a .gltf of " + std::to_string(size) + " bytes is over the limit of " +
-                                std::to_string(kMaxGltfJsonBytes) + " bytes of JSON", ""}});
+                                std::to_string(kMaxGltfJsonBytes) + " bytes of JSON",
+                            ""}});
   }
   return JsonDocument::parse(source.read(0, size), path);
 }
@@ -206,8 +209,8 @@ std::string packGlb(const std::string& json, const std::string& bin) {
   while (jsonChunk.size() % 4 != 0) jsonChunk += ' ';
   std::string binChunk = bin;
   while (binChunk.size() % 4 != 0) binChunk += '\0';
-  size_t total = kHeaderSize + kChunkHeaderSize + jsonChunk.size() +
-                 (bin.empty() ? 0 : kChunkHeaderSize + binChunk.size());
+  size_t total =
+      kHeaderSize + kChunkHeaderSize + jsonChunk.size() + (bin.empty() ? 0 : kChunkHeaderSize + binChunk.size());
   std::string out;
   appendU32(out, kGlbMagic);
   appendU32(out, 2);

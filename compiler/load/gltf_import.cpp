@@ -37,9 +37,7 @@ void checkAsset(JsonFields& f) {
             "asset.minVersion '" + *minVersion + "' is not supported: expected 2.0");
 }
 
-size_t arraySize(JsonFields& f, const std::string& ptr) {
-  return f.isArray(ptr) ? f.find(ptr)->size() : 0;
-}
+size_t arraySize(JsonFields& f, const std::string& ptr) { return f.isArray(ptr) ? f.find(ptr)->size() : 0; }
 
 std::string stemOf(const std::string& file) {
   std::string stem = gltf::identifierFrom(std::filesystem::path(file).stem().string());
@@ -133,9 +131,9 @@ void checkBinChunk(JsonFields& f, const GltfContainerInfo& info, std::vector<Dia
                                              : "its BIN chunk holds " + std::to_string(info.binChunkLength);
   warnings.push_back({Severity::Warning, "W-GLB-BIN-SHORT", f.valueAt("/buffers/0/byteLength"),
                       "buffer 0 (the .glb's BIN chunk) declares " + std::to_string(static_cast<uint64_t>(*declared)) +
-                          " bytes, but " +
-                          have + " byte(s): the file is truncated or damaged, and an engine reading its meshes "
-                                 "or images will fail; materials do not read it"});
+                          " bytes, but " + have +
+                          " byte(s): the file is truncated or damaged, and an engine reading its meshes "
+                          "or images will fail; materials do not read it"});
 }
 
 std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc, const GltfContainerInfo* container) {
@@ -154,8 +152,10 @@ std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc, const GltfCon
     ctx.required.insert(required[i]);
     if (!gltf::isExtensionUnderstood(required[i]))
       f.error("E-GLTF-REQUIRED-EXTENSION", f.valueAt(JsonFields::element("/extensionsRequired", i)),
-              "extension '" + required[i] + "' is required by the file but not supported by matbricks "
-              "(supported: " + quotedList(gltf::understoodExtensions()) + ")");
+              "extension '" + required[i] +
+                  "' is required by the file but not supported by matbricks "
+                  "(supported: " +
+                  quotedList(gltf::understoodExtensions()) + ")");
   }
   ctx.textureCount = arraySize(f, "/textures");
   ctx.imageCount = arraySize(f, "/images");
@@ -173,9 +173,9 @@ std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc, const GltfCon
   for (size_t i = 0; i < used.size(); ++i) {
     const std::string& name = used[i];
     if (gltf::isExtensionUnderstood(name) || usedByMaterials.count(name) || ctx.required.count(name)) continue;
-    fileWarnings.push_back({Severity::Warning, "W-GLTF-UNSUPPORTED-EXTENSION",
-                            f.valueAt(JsonFields::element("/extensionsUsed", i)),
-                            "extension '" + name + "' is used by the file but not supported by matbricks: it is ignored"});
+    fileWarnings.push_back(
+        {Severity::Warning, "W-GLTF-UNSUPPORTED-EXTENSION", f.valueAt(JsonFields::element("/extensionsUsed", i)),
+         "extension '" + name + "' is used by the file but not supported by matbricks: it is ignored"});
   }
   if (!materials.empty()) {
     auto& w = materials.front().source.warnings;
@@ -212,8 +212,7 @@ std::vector<MaterialDesc> importGltfMaterials(const std::string& path, const Sha
   std::vector<MaterialSource> sources = readGltfMaterials(path);
   DiagnosticSink sink;
   if (sources.empty())
-    sink.error("E-GLTF-NO-MATERIALS", {path, 1, 1},
-               "the glTF file defines no materials: there is nothing to compile");
+    sink.error("E-GLTF-NO-MATERIALS", {path, 1, 1}, "the glTF file defines no materials: there is nothing to compile");
   std::vector<MaterialDesc> out;
   for (const auto& s : sources) out.push_back(resolveMaterialInto(s, lib, sink));
   if (sink.hasErrors()) {

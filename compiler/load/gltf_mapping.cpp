@@ -26,10 +26,11 @@ const char* kEmissiveStrength = "KHR_materials_emissive_strength";
 const char* kTextureTransform = "KHR_texture_transform";
 
 // Filament-like choices for the roles the model leaves to the material (docs/gltf.md).
-const std::vector<std::pair<std::string, std::string>> kRequiredBricks = {
-    {"roughness", "roughness_clamped"}, {"diffuse", "diffuse_lambert"},
-    {"specular_d", "d_ggx"},            {"specular_v", "v_smith_ggx_correlated"},
-    {"fresnel", "f_schlick"}};
+const std::vector<std::pair<std::string, std::string>> kRequiredBricks = {{"roughness", "roughness_clamped"},
+                                                                          {"diffuse", "diffuse_lambert"},
+                                                                          {"specular_d", "d_ggx"},
+                                                                          {"specular_v", "v_smith_ggx_correlated"},
+                                                                          {"fresnel", "f_schlick"}};
 
 std::string vec3Literal(const std::vector<double>& v) {
   return "vec3(" + glslFloat(v[0]) + ", " + glslFloat(v[1]) + ", " + glslFloat(v[2]) + ")";
@@ -48,8 +49,7 @@ class MaterialMapper {
   GltfMaterial run(std::set<std::string>& usedExtensions) {
     MaterialSource& s = out_.source;
     s.model = {"standard", where_};
-    for (const auto& [role, brick] : kRequiredBricks)
-      s.bricks.push_back({{role, where_}, {brick, where_}});
+    for (const auto& [role, brick] : kRequiredBricks) s.bricks.push_back({{role, where_}, {brick, where_}});
     if (!f_.isObject(ptr_)) return out_;
     out_.gltfName = f_.string(JsonFields::member(ptr_, "name")).value_or("");
     readExtensionsUsed(usedExtensions);
@@ -68,15 +68,11 @@ class MaterialMapper {
  private:
   // --- reading -------------------------------------------------------------------------
 
-  std::string at(const std::string& ptr, const std::string& key) const {
-    return JsonFields::member(ptr, key);
-  }
+  std::string at(const std::string& ptr, const std::string& key) const { return JsonFields::member(ptr, key); }
   std::string ext(const char* name) const { return at(at(ptr_, "extensions"), name); }
   bool has(const char* name) const { return present_.count(name) != 0; }
 
-  double number(const std::string& ptr, double fallback) {
-    return f_.number(ptr).value_or(fallback);
-  }
+  double number(const std::string& ptr, double fallback) { return f_.number(ptr).value_or(fallback); }
 
   // An array of exactly `n` numbers, or `fallback` (absent, or reported when malformed).
   std::vector<double> numbers(const std::string& ptr, size_t n, std::vector<double> fallback) {
@@ -111,18 +107,14 @@ class MaterialMapper {
     return static_cast<int>(j->get<long long>());
   }
 
-  SourceLocation whereOf(const std::string& ptr) const {
-    return f_.find(ptr) ? f_.valueAt(ptr) : where_;
-  }
+  SourceLocation whereOf(const std::string& ptr) const { return f_.find(ptr) ? f_.valueAt(ptr) : where_; }
 
   void warn(std::string code, const SourceLocation& where, std::string message) {
-    out_.source.warnings.push_back(
-        {Severity::Warning, std::move(code), where, std::move(message), ""});
+    out_.source.warnings.push_back({Severity::Warning, std::move(code), where, std::move(message), ""});
   }
 
   std::string label() const {
-    return "material " + std::to_string(out_.index) +
-           (out_.gltfName.empty() ? "" : " '" + out_.gltfName + "'");
+    return "material " + std::to_string(out_.index) + (out_.gltfName.empty() ? "" : " '" + out_.gltfName + "'");
   }
 
   void readExtensionsUsed(std::set<std::string>& usedExtensions) {
@@ -162,8 +154,8 @@ class MaterialMapper {
   // Reads the textureInfo at `ptr` (if present) into a texture input named `param` holding
   // `channels` of the texel; returns the GLSL expression of the input ("p.<param>" plus the
   // channel swizzle the surface code needs), or empty when absent or malformed.
-  std::string texture(const std::string& ptr, const std::string& param, const std::string& channels,
-                      bool srgb, const std::string& swizzle = "") {
+  std::string texture(const std::string& ptr, const std::string& param, const std::string& channels, bool srgb,
+                      const std::string& swizzle = "") {
     if (!f_.isObject(ptr)) return "";
     auto binding = textureBinding(ptr, param, channels, srgb);
     if (!binding) return "";
@@ -328,7 +320,8 @@ class MaterialMapper {
                "'" + JsonFields::describe(modePtr) + "' must be 'OPAQUE', 'MASK' or 'BLEND', found '" + mode + "'",
                didYouMean(mode, {"OPAQUE", "MASK", "BLEND"}));
     } else if (mode != "OPAQUE" || alpha_ != 1.0) {
-      warn("W-GLTF-NOT-SHADED", whereOf(mode != "OPAQUE" ? modePtr : at(at(ptr_, "pbrMetallicRoughness"), "baseColorFactor")),
+      warn("W-GLTF-NOT-SHADED",
+           whereOf(mode != "OPAQUE" ? modePtr : at(at(ptr_, "pbrMetallicRoughness"), "baseColorFactor")),
            label() + " has alpha (alphaMode " + mode + ", baseColorFactor alpha " + glslFloat(alpha_) +
                "): opacity and transmission are not shaded; the engine blends or masks");
     }
@@ -359,7 +352,8 @@ class MaterialMapper {
   void apply(const std::string& object, const FactorRule& r) {
     std::string ptr = at(object, r.factor);
     bool vec = r.gltfDefault.size() == 3;
-    std::vector<double> value = vec ? numbers(ptr, 3, r.gltfDefault) : std::vector<double>{number(ptr, r.gltfDefault[0])};
+    std::vector<double> value =
+        vec ? numbers(ptr, 3, r.gltfDefault) : std::vector<double>{number(ptr, r.gltfDefault[0])};
     constant(r.input, value, whereOf(ptr), vec ? ptr : "");
     std::string tex = texture(at(object, r.texture), r.texture, r.channels, r.srgb, r.swizzle);
     std::string literal = vec ? vec3Literal(value) : glslFloat(value[0]);
@@ -451,13 +445,15 @@ class MaterialMapper {
     }
     if (specular != 1.0 || !strengthTex.empty())
       warn("W-GLTF-APPROXIMATED", where,
-           label() + ": specularFactor scales the dielectric F0 only; KHR_materials_specular also "
-                     "scales F90 and the model keeps it at 1");
+           label() +
+               ": specularFactor scales the dielectric F0 only; KHR_materials_specular also "
+               "scales F90 and the model keeps it at 1");
   }
 
   void finishSurface() {
     if (surface_.empty()) return;
-    std::string glsl = "// Generated from glTF " + label() + ": texture inputs are texels the engine samples (docs/gltf.md).\n";
+    std::string glsl =
+        "// Generated from glTF " + label() + ": texture inputs are texels the engine samples (docs/gltf.md).\n";
     glsl += "void surface(inout MaterialInputs m, MaterialParams p) {\n";
     for (const auto& l : surface_) glsl += l + "\n";
     glsl += "}\n";
@@ -477,8 +473,7 @@ class MaterialMapper {
 }  // namespace
 
 bool isMaterialExtensionSupported(const std::string& name) {
-  static const std::set<std::string> kSupported = {kClearcoat, kSheen, kAnisotropy,
-                                                   kSpecular,  kIor,   kEmissiveStrength};
+  static const std::set<std::string> kSupported = {kClearcoat, kSheen, kAnisotropy, kSpecular, kIor, kEmissiveStrength};
   return kSupported.count(name) != 0;
 }
 
@@ -488,9 +483,9 @@ namespace {
 // a material computes: the engine decodes them (issue 18: a file requiring Draco or BasisU
 // was rejected although materials never read meshes or images).
 const std::vector<std::string>& engineExtensions() {
-  static const std::vector<std::string> kEngine = {
-      "KHR_draco_mesh_compression", "KHR_mesh_quantization", "EXT_meshopt_compression",
-      "KHR_texture_basisu",         "EXT_texture_webp",      "EXT_texture_avif"};
+  static const std::vector<std::string> kEngine = {"KHR_draco_mesh_compression", "KHR_mesh_quantization",
+                                                   "EXT_meshopt_compression",    "KHR_texture_basisu",
+                                                   "EXT_texture_webp",           "EXT_texture_avif"};
   return kEngine;
 }
 
@@ -519,8 +514,7 @@ std::vector<std::string> understoodExtensions() {
   return all;
 }
 
-GltfMaterial mapMaterial(JsonFields& f, const FileContext& ctx, size_t index,
-                         std::set<std::string>& usedExtensions) {
+GltfMaterial mapMaterial(JsonFields& f, const FileContext& ctx, size_t index, std::set<std::string>& usedExtensions) {
   return MaterialMapper(f, ctx, index).run(usedExtensions);
 }
 
@@ -534,8 +528,7 @@ std::string identifierFrom(const std::string& name) {
     out += next;
   }
   if (out.empty() || out == "_") return "";
-  if (std::isdigit(static_cast<unsigned char>(out[0])) || out.rfind("gl_", 0) == 0)
-    out = "material_" + out;
+  if (std::isdigit(static_cast<unsigned char>(out[0])) || out.rfind("gl_", 0) == 0) out = "material_" + out;
   return out;
 }
 

@@ -13,10 +13,10 @@ namespace mb::gltf {
 // What every material of a file shares.
 struct FileContext {
   std::string file;
-  std::string stem;                  // file name without directory and extension
-  std::set<std::string> required;    // extensionsRequired (already reported if unsupported)
-  size_t textureCount = 0;           // size of `textures` (0 if absent or malformed)
-  size_t imageCount = 0;             // size of `images`
+  std::string stem;                // file name without directory and extension
+  std::set<std::string> required;  // extensionsRequired (already reported if unsupported)
+  size_t textureCount = 0;         // size of `textures` (0 if absent or malformed)
+  size_t imageCount = 0;           // size of `images`
 };
 
 // Extensions a material may use that the import maps (docs/gltf.md).
@@ -31,8 +31,7 @@ std::vector<std::string> understoodExtensions();
 
 // Maps materials[index]. Errors go to the sink (the caller throws once); warnings go to the
 // material. `usedExtensions` collects the unsupported extensions the material uses.
-GltfMaterial mapMaterial(JsonFields& f, const FileContext& ctx, size_t index,
-                         std::set<std::string>& usedExtensions);
+GltfMaterial mapMaterial(JsonFields& f, const FileContext& ctx, size_t index, std::set<std::string>& usedExtensions);
 
 // "Material.001" -> "Material_001": [A-Za-z0-9_] kept, other runs become one '_', a leading
 // digit or reserved GLSL prefix ("gl_") gets a "material_" prefix; empty stays empty.

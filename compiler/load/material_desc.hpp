@@ -30,7 +30,7 @@ struct MaterialParam {
   ValueType type = ValueType::Float;
   std::vector<double> value;  // the constant, or the default of an input
   bool constant = false;
-  Range range;                // valid range of every component (inputs only)
+  Range range;  // valid range of every component (inputs only)
   // A user parameter (not a model input): a member of MaterialParams, read only by the
   // surface code. Model inputs are members of MaterialInputs.
   bool user = false;
@@ -46,13 +46,13 @@ struct SourceName {
 
 struct SourceParam {
   std::string name;
-  SourceLocation where;                  // of the name
-  std::optional<std::string> type;       // "float" | "vec2" | "vec3", as written (optional)
+  SourceLocation where;             // of the name
+  std::optional<std::string> type;  // "float" | "vec2" | "vec3", as written (optional)
   SourceLocation typeWhere;
-  std::vector<double> value;             // as written (1, 2 or 3 numbers)
+  std::vector<double> value;  // as written (1, 2 or 3 numbers)
   SourceLocation valueWhere;
   std::vector<SourceLocation> componentWhere;  // of each number of `value`, where the form knows
-  std::optional<Range> range;            // as written
+  std::optional<Range> range;                  // as written
   SourceLocation rangeWhere;
   bool constant = false;
   // The form already reported part of this parameter missing or malformed: resolveMaterial
@@ -64,8 +64,8 @@ struct SourceParam {
 // leave it default-constructed here: resolveMaterial skips a name or model whose value and
 // where.file are both empty instead of reporting it again.
 struct MaterialSource {
-  std::string file;               // the description's path (as given on the command line)
-  std::string form;               // "json", "macro", "gltf"
+  std::string file;  // the description's path (as given on the command line)
+  std::string form;  // "json", "macro", "gltf"
   SourceName name;
   SourceName model;
   std::string description;
@@ -91,8 +91,8 @@ struct MaterialDesc {
   std::string name;
   std::string model;
   std::string description;
-  std::string form;                           // "json", "macro", "gltf"
-  std::vector<std::string> features;          // enabled, in the model's feature order
+  std::string form;                   // "json", "macro", "gltf"
+  std::vector<std::string> features;  // enabled, in the model's feature order
   // role -> brick id for every role of the model whose feature (if any) is enabled,
   // light- and environment-conditional roles included; defaults filled in.
   std::map<std::string, std::string> bricks;
@@ -101,8 +101,8 @@ struct MaterialDesc {
   std::vector<MaterialParam> params;
   SurfaceCode surface;
   std::string sourceFile;
-  std::vector<std::string> includedFiles;  // MaterialSource::includedFiles
-  SourceLocation modelWhere;                // where the model was named (invalid-axis errors point here)
+  std::vector<std::string> includedFiles;                // MaterialSource::includedFiles
+  SourceLocation modelWhere;                             // where the model was named (invalid-axis errors point here)
   std::map<std::string, SourceLocation> brickLocations;  // role -> where it was chosen
   std::vector<Diagnostic> warnings;
   std::string engineData;  // MaterialSource::engineData
@@ -119,12 +119,10 @@ MaterialDesc resolveMaterial(const MaterialSource& source, const ShaderLibrary& 
 
 // JSON form: reads and resolves. Throws DiagnosticError (file:line:column for every error).
 MaterialDesc loadMaterialJson(const std::string& path, const ShaderLibrary& lib);
-MaterialDesc parseMaterialJson(const std::string& text, const std::string& file,
-                               const ShaderLibrary& lib);
+MaterialDesc parseMaterialJson(const std::string& text, const std::string& file, const ShaderLibrary& lib);
 // Macro form (docs/macro-form.md).
 MaterialDesc loadMaterialMacro(const std::string& path, const ShaderLibrary& lib);
-MaterialDesc parseMaterialMacro(const std::string& text, const std::string& file,
-                                const ShaderLibrary& lib);
+MaterialDesc parseMaterialMacro(const std::string& text, const std::string& file, const ShaderLibrary& lib);
 // Picks the form by extension: .json, .mat (macro form), .gltf/.glb (several materials).
 std::vector<MaterialDesc> loadMaterialFile(const std::string& path, const ShaderLibrary& lib);
 

@@ -31,8 +31,7 @@ class JsonMaterialReader {
     src_.file = doc_.file();
     src_.form = "json";
     src_.bricksIncomplete = true;
-    if (!f_.object("", {"name", "model", "bricks"},
-                   {"description", "features", "parameters", "surface"}, "material"))
+    if (!f_.object("", {"name", "model", "bricks"}, {"description", "features", "parameters", "surface"}, "material"))
       return src_;
     src_.name = name("/name");
     src_.model = name("/model");
@@ -122,8 +121,7 @@ class JsonMaterialReader {
     if (const ShadingModel* m = lib_.findModel(src_.model.value))
       for (const auto& in : m->inputs)
         if (in.name == sp.name) return in.type;
-    if (sp.type && (*sp.type == "float" || *sp.type == "vec2" || *sp.type == "vec3"))
-      return parseValueType(*sp.type);
+    if (sp.type && (*sp.type == "float" || *sp.type == "vec2" || *sp.type == "vec3")) return parseValueType(*sp.type);
     return std::nullopt;
   }
 
@@ -131,27 +129,27 @@ class JsonMaterialReader {
   std::optional<std::vector<double>> numbers(const std::string& ptr) {
     const json* j = f_.find(ptr);
     if (j->is_number()) return std::vector<double>{j->get<double>()};
-    if (j->is_array() && !j->empty() &&
-        std::all_of(j->begin(), j->end(), [](const json& c) { return c.is_number(); }))
+    if (j->is_array() && !j->empty() && std::all_of(j->begin(), j->end(), [](const json& c) { return c.is_number(); }))
       return j->get<std::vector<double>>();
-    f_.error("E-PARAM-TYPE", f_.valueAt(ptr),
-             "'" + JsonFields::describe(ptr) + "' must be a number or an array of numbers, found " +
-                 JsonFields::kindOf(*j));
+    f_.error(
+        "E-PARAM-TYPE", f_.valueAt(ptr),
+        "'" + JsonFields::describe(ptr) + "' must be a number or an array of numbers, found " + JsonFields::kindOf(*j));
     return std::nullopt;
   }
 
   void readParam(const std::string& key) {
     std::string ptr = JsonFields::member("/parameters", key);
-    if (!f_.object(ptr, {"type", "default"}, {"range", "constant"}, "parameter '" + clipped(key) + "'"))
-      return;
+    if (!f_.object(ptr, {"type", "default"}, {"range", "constant"}, "parameter '" + clipped(key) + "'")) return;
     SourceParam sp;
     sp.name = key;
     sp.where = f_.keyAt(ptr);
     sp.incomplete = !f_.find(ptr + "/type") || !f_.find(ptr + "/default");
     if (f_.find(ptr + "/type")) {
       auto t = f_.string(ptr + "/type");
-      if (t) sp.type = *t;
-      else sp.incomplete = true;
+      if (t)
+        sp.type = *t;
+      else
+        sp.incomplete = true;
       sp.typeWhere = f_.valueAt(ptr + "/type");
     }
     if (f_.find(ptr + "/default")) {
@@ -162,7 +160,8 @@ class JsonMaterialReader {
       if (value) {
         sp.value = *value;
         if (f_.find(at)->is_array())
-          for (size_t i = 0; i < value->size(); ++i) sp.componentWhere.push_back(f_.valueAt(JsonFields::element(at, i)));
+          for (size_t i = 0; i < value->size(); ++i)
+            sp.componentWhere.push_back(f_.valueAt(JsonFields::element(at, i)));
       } else {
         sp.incomplete = true;
       }
@@ -173,8 +172,10 @@ class JsonMaterialReader {
     }
     if (f_.find(ptr + "/constant")) {
       auto c = f_.boolean(ptr + "/constant");
-      if (c) sp.constant = *c;
-      else sp.incomplete = true;
+      if (c)
+        sp.constant = *c;
+      else
+        sp.incomplete = true;
     }
     src_.params.push_back(std::move(sp));
   }
@@ -187,8 +188,7 @@ class JsonMaterialReader {
 
 }  // namespace
 
-MaterialDesc parseMaterialJson(const std::string& text, const std::string& file,
-                               const ShaderLibrary& lib) {
+MaterialDesc parseMaterialJson(const std::string& text, const std::string& file, const ShaderLibrary& lib) {
   JsonDocument doc = JsonDocument::parse(text, file, kMaxMaterialJsonDepth);
   DiagnosticSink sink;
   return finishMaterial(JsonMaterialReader(doc, lib, sink).run(), lib, sink);

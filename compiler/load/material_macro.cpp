@@ -25,7 +25,7 @@ using Kind = MacroToken::Kind;
 constexpr size_t kMaxIncludeDepth = 16;
 
 const std::vector<std::string>& directiveNames() {
-  static const std::vector<std::string> names = {"MATERIAL", "MODEL", "DESCRIPTION", "FEATURE_<feature>",
+  static const std::vector<std::string> names = {"MATERIAL",     "MODEL",        "DESCRIPTION", "FEATURE_<feature>",
                                                  "BRICK_<role>", "PARAM_<name>", "CONST_<name>"};
   return names;
 }
@@ -139,8 +139,8 @@ class MacroReader {
                       startsWith(word, "PARAM_") || startsWith(word, "CONST_"));
     if (!directive) return false;
     error(SourceLocation(file, number, static_cast<int>(first + 1)), "E-MACRO-SYNTAX",
-          "'" + word + "' without '#': expected '#" + (word == "define" || word == "include" ? word : "define " + word) +
-              " ...'");
+          "'" + word + "' without '#': expected '#" +
+              (word == "define" || word == "include" ? word : "define " + word) + " ...'");
     return true;
   }
 
@@ -159,8 +159,10 @@ class MacroReader {
 
   // Reports `t` as unexpected where `expected` should be; returns false for the caller's `return`.
   bool unexpected(const Line& line, const MacroToken& t, const std::string& expected) {
-    if (t.kind == Kind::Invalid) error(line.where(t.column), "E-MACRO-SYNTAX", t.text);
-    else error(line.where(t.column), "E-MACRO-SYNTAX", "expected " + expected + ", found " + describeToken(t));
+    if (t.kind == Kind::Invalid)
+      error(line.where(t.column), "E-MACRO-SYNTAX", t.text);
+    else
+      error(line.where(t.column), "E-MACRO-SYNTAX", "expected " + expected + ", found " + describeToken(t));
     return false;
   }
 
@@ -247,7 +249,8 @@ class MacroReader {
 
   void feature(Line& line, const SourceName& name, const SourceLocation& where) {
     if (!firstDefinition("FEATURE_" + name.value, "feature '" + clipped(name.value) + "'", where)) return;
-    if (expectEnd(line, "FEATURE_" + clipped(name.value) + " (a feature takes no value)")) src_.features.push_back(name);
+    if (expectEnd(line, "FEATURE_" + clipped(name.value) + " (a feature takes no value)"))
+      src_.features.push_back(name);
   }
 
   void brick(Line& line, const SourceName& role, const SourceLocation& where) {
@@ -281,9 +284,10 @@ class MacroReader {
       sp.range = Range{bounds[0], bounds[1]};
       if (!expectEnd(line, "RANGE(lo, hi)")) return;
     } else if (t.kind != Kind::End) {
-      error(line.where(t.column), "E-MACRO-SYNTAX",
-            t.kind == Kind::Invalid ? t.text : "expected RANGE(lo, hi) or the end of the line, found " + describeToken(t),
-            t.kind == Kind::Identifier ? suggest(t.text, {"RANGE"}) : "");
+      error(
+          line.where(t.column), "E-MACRO-SYNTAX",
+          t.kind == Kind::Invalid ? t.text : "expected RANGE(lo, hi) or the end of the line, found " + describeToken(t),
+          t.kind == Kind::Identifier ? suggest(t.text, {"RANGE"}) : "");
       return;
     }
     src_.params.push_back(std::move(sp));
@@ -304,8 +308,7 @@ class MacroReader {
     const std::vector<std::string> types = {"float", "vec2", "vec3"};
     if (std::find(types.begin(), types.end(), t.text) == types.end()) {
       error(sp.typeWhere, "E-PARAM-TYPE",
-            "unknown parameter type '" + clipped(t.text) + "': expected float, vec2 or vec3",
-            suggest(t.text, types));
+            "unknown parameter type '" + clipped(t.text) + "': expected float, vec2 or vec3", suggest(t.text, types));
       return false;
     }
     std::string type = t.text;
@@ -385,7 +388,7 @@ class MacroReader {
   ProjectFiles project_;
   DiagnosticSink& sink_;
   MaterialSource src_;
-  std::map<std::string, SourceLocation> defined_;          // macro (or parameter) -> first definition
+  std::map<std::string, SourceLocation> defined_;           // macro (or parameter) -> first definition
   std::vector<std::pair<std::string, std::string>> stack_;  // open files: canonical key, shown path
   std::set<std::string> included_;
   bool binary_ = false;  // the top-level file is not text

@@ -49,8 +49,7 @@ bool definesSurfaceFunction(const std::string& glsl) {
     if (i >= glsl.size() || glsl[i] != '(') continue;
     size_t j = at;
     while (j > 0 && std::isspace(static_cast<unsigned char>(glsl[j - 1]))) --j;
-    if (j >= 4 && j < at && glsl.compare(j - 4, 4, "void") == 0 && (j == 4 || !isIdent(glsl[j - 5])))
-      return true;
+    if (j >= 4 && j < at && glsl.compare(j - 4, 4, "void") == 0 && (j == 4 || !isIdent(glsl[j - 5]))) return true;
   }
   return false;
 }
@@ -83,8 +82,7 @@ class Resolver {
   }
 
  private:
-  void error(std::string code, const SourceLocation& where, std::string message,
-             std::string suggestion = {}) {
+  void error(std::string code, const SourceLocation& where, std::string message, std::string suggestion = {}) {
     sink_.error(std::move(code), where, std::move(message), std::move(suggestion));
   }
 
@@ -127,8 +125,7 @@ class Resolver {
     for (const auto& f : src_.features) {
       if (!model_->findFeature(f.value)) {
         error("E-UNKNOWN-FEATURE", f.where,
-              "unknown feature '" + clipped(f.value) + "': model '" + model_->name + "' has " +
-                  quotedList(known),
+              "unknown feature '" + clipped(f.value) + "': model '" + model_->name + "' has " + quotedList(known),
               suggest(f.value, known));
       } else if (!first.emplace(f.value, f.where).second) {
         error("E-DUPLICATE-NAME", f.where,
@@ -211,8 +208,8 @@ class Resolver {
         continue;
       }
       error("E-MISSING-FIELD", missingAt,
-            "bricks is missing role '" + r->role + "' (slot '" + r->slot + "') of model '" +
-                model_->name + "': choose one of " + quotedList(lib_.bricksOfSlot(r->slot)));
+            "bricks is missing role '" + r->role + "' (slot '" + r->slot + "') of model '" + model_->name +
+                "': choose one of " + quotedList(lib_.bricksOfSlot(r->slot)));
     }
   }
 
@@ -229,11 +226,10 @@ class Resolver {
 
   void reportUnknownRole(const SourceName& role) {
     std::vector<std::string> roles = activeRoleNames();
-    std::string message =
-        lib_.findSlot(role.value)
-            ? "slot '" + role.value + "' is not used by model '" + model_->name + "' (its slots are " +
-                  quotedList(roles) + ")"
-            : "unknown slot '" + clipped(role.value) + "': expected one of " + quotedList(roles);
+    std::string message = lib_.findSlot(role.value)
+                              ? "slot '" + role.value + "' is not used by model '" + model_->name +
+                                    "' (its slots are " + quotedList(roles) + ")"
+                              : "unknown slot '" + clipped(role.value) + "': expected one of " + quotedList(roles);
     error("E-UNKNOWN-SLOT", role.where, message, suggest(role.value, roles));
   }
 
@@ -247,15 +243,14 @@ class Resolver {
       std::string suggestion = suggest(id.value, ofSlot);
       if (suggestion.empty()) suggestion = suggest(id.value, lib_.brickIds());
       error("E-UNKNOWN-BRICK", id.where,
-            "unknown brick '" + clipped(id.value) + "' for slot '" + slot + "': expected one of " +
-                quotedList(ofSlot),
+            "unknown brick '" + clipped(id.value) + "' for slot '" + slot + "': expected one of " + quotedList(ofSlot),
             suggestion);
       return false;
     }
     if (brick->slot != slot) {
       error("E-BRICK-WRONG-SLOT", id.where,
-            "brick '" + id.value + "' fills slot '" + brick->slot + "', expected a '" + slot +
-                "' brick: one of " + quotedList(ofSlot));
+            "brick '" + id.value + "' fills slot '" + brick->slot + "', expected a '" + slot + "' brick: one of " +
+                quotedList(ofSlot));
       return false;
     }
     return true;
@@ -278,8 +273,8 @@ class Resolver {
       if (input != model_->inputs.end()) {
         if (!input->feature.empty() && !desc_.has(input->feature)) {
           error("E-FEATURE-DISABLED", sp.where,
-                "input '" + sp.name + "' belongs to feature '" + input->feature + "' of model '" +
-                    model_->name + "': enable the feature or remove the parameter");
+                "input '" + sp.name + "' belongs to feature '" + input->feature + "' of model '" + model_->name +
+                    "': enable the feature or remove the parameter");
         } else if (auto p = modelParam(sp, *input)) {
           given[sp.name] = *p;
         }
@@ -324,8 +319,8 @@ class Resolver {
 
   // How messages name a part of a parameter: JSON paths for JSON, the name otherwise.
   std::string label(const SourceParam& sp, const std::string& part, int component = -1) const {
-    std::string s = src_.form == "json" ? "parameters." + sp.name + "." + part
-                                        : sp.name + (part == "default" ? "" : " " + part);
+    std::string s =
+        src_.form == "json" ? "parameters." + sp.name + "." + part : sp.name + (part == "default" ? "" : " " + part);
     if (component >= 0) s += "[" + std::to_string(component) + "]";
     return "'" + s + "'";
   }
@@ -337,16 +332,16 @@ class Resolver {
       auto declared = declaredType(sp);
       if (declared && *declared != in.type) {
         error("E-PARAM-TYPE", sp.typeWhere,
-              "parameter '" + sp.name + "' is declared '" + *sp.type + "' but model input '" +
-                  in.name + "' is a " + toString(in.type));
+              "parameter '" + sp.name + "' is declared '" + *sp.type + "' but model input '" + in.name + "' is a " +
+                  toString(in.type));
       }
       typeOk = declared == in.type;
     }
     std::optional<Range> own = ownRange(sp);
     if (own && (own->lo < in.range.lo || own->hi > in.range.hi)) {
       error("E-PARAM-RANGE", sp.rangeWhere,
-            label(sp, "range") + " " + formatRange(*own) + " must lie inside the range " +
-                formatRange(in.range) + " of model input '" + in.name + "'");
+            label(sp, "range") + " " + formatRange(*own) + " must lie inside the range " + formatRange(in.range) +
+                " of model input '" + in.name + "'");
       own.reset();
       ok = false;
     }
@@ -365,8 +360,7 @@ class Resolver {
   std::optional<MaterialParam> userParam(const SourceParam& sp) {
     bool ok = !sp.incomplete;
     if (!isIdentifier(sp.name)) {
-      error("E-INVALID-NAME", sp.where,
-            "parameter name '" + clipped(sp.name) + "' must match [A-Za-z_][A-Za-z0-9_]*");
+      error("E-INVALID-NAME", sp.where, "parameter name '" + clipped(sp.name) + "' must match [A-Za-z_][A-Za-z0-9_]*");
       return std::nullopt;
     }
     std::string reserved = reservedNameReason(sp.name);
@@ -377,8 +371,7 @@ class Resolver {
     std::optional<ValueType> type;
     if (!sp.type) {
       if (!sp.incomplete)
-        error("E-MISSING-FIELD", sp.where,
-              "user parameter '" + sp.name + "' needs a type: 'float', 'vec2' or 'vec3'");
+        error("E-MISSING-FIELD", sp.where, "user parameter '" + sp.name + "' needs a type: 'float', 'vec2' or 'vec3'");
       return std::nullopt;
     }
     type = declaredType(sp);
@@ -386,8 +379,8 @@ class Resolver {
     std::optional<Range> own = ownRange(sp);
     if (sp.range && !own) ok = false;
     Range range = own.value_or(kUserDefaultRange);
-    std::string origin = own ? "the parameter's range"
-                             : "the default range [0, 1] of a user parameter (give it a range)";
+    std::string origin =
+        own ? "the parameter's range" : "the default range [0, 1] of a user parameter (give it a range)";
     ok = checkValue(sp, *type, range, origin) && ok;
     if (!ok) return std::nullopt;
     return param(sp, *type, range, true);
@@ -434,8 +427,8 @@ class Resolver {
       bool vec = n > 1;
       SourceLocation where = vec && i < sp.componentWhere.size() ? sp.componentWhere[i] : sp.valueWhere;
       error("E-PARAM-RANGE", where,
-            label(sp, "default", vec ? static_cast<int>(i) : -1) + " = " + formatNumber(sp.value[i]) +
-                " is outside " + formatRange(range) + ", " + origin);
+            label(sp, "default", vec ? static_cast<int>(i) : -1) + " = " + formatNumber(sp.value[i]) + " is outside " +
+                formatRange(range) + ", " + origin);
       ok = false;
     }
     return ok;
@@ -462,8 +455,7 @@ class Resolver {
 
 }  // namespace
 
-MaterialDesc resolveMaterialInto(const MaterialSource& source, const ShaderLibrary& lib,
-                                 DiagnosticSink& sink) {
+MaterialDesc resolveMaterialInto(const MaterialSource& source, const ShaderLibrary& lib, DiagnosticSink& sink) {
   return Resolver(source, lib, sink).run();
 }
 

@@ -10,8 +10,7 @@
 namespace mb {
 
 // resolveMaterial without the throw: every problem goes to `sink`.
-MaterialDesc resolveMaterialInto(const MaterialSource& source, const ShaderLibrary& lib,
-                                 DiagnosticSink& sink);
+MaterialDesc resolveMaterialInto(const MaterialSource& source, const ShaderLibrary& lib, DiagnosticSink& sink);
 
 // The end of every form's parse: resolves `source` into `sink` (which holds the form's own
 // problems) and throws all of them in file order if there is an error.

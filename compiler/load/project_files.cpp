@@ -9,8 +9,8 @@ namespace mb {
 
 namespace fs = std::filesystem;
 
-std::optional<std::string> readTextFile(const std::string& path, const SourceLocation& at,
-                                        const std::string& what, DiagnosticSink& sink) {
+std::optional<std::string> readTextFile(const std::string& path, const SourceLocation& at, const std::string& what,
+                                        DiagnosticSink& sink) {
   std::error_code ec;
   auto status = fs::status(path, ec);
   if (ec || !fs::exists(status)) {
@@ -67,8 +67,7 @@ bool inside(const fs::path& p, const fs::path& dir) {
 
 }  // namespace
 
-ProjectFiles::ProjectFiles(const std::string& topFile)
-    : dir_(absoluteNormal(fs::path(topFile)).parent_path()) {}
+ProjectFiles::ProjectFiles(const std::string& topFile) : dir_(absoluteNormal(fs::path(topFile)).parent_path()) {}
 
 std::optional<std::string> ProjectFiles::resolve(const std::string& written, const std::string& fromFile,
                                                  const SourceLocation& at, DiagnosticSink& sink) const {
@@ -79,8 +78,10 @@ std::optional<std::string> ProjectFiles::resolve(const std::string& written, con
   }
   if (w.is_absolute() || w.has_root_name() || w.has_root_directory()) {
     sink.error("E-PATH-ESCAPE", at,
-               "absolute path '" + written + "': expected a path relative to the including file, inside the "
-               "project directory '" + dir_.string() + "'");
+               "absolute path '" + written +
+                   "': expected a path relative to the including file, inside the "
+                   "project directory '" +
+                   dir_.string() + "'");
     return std::nullopt;
   }
   fs::path shown = (fs::path(fromFile).parent_path() / w).lexically_normal();

@@ -13,8 +13,8 @@ namespace mb {
 
 // Reads a whole text file. Reports E-FILE-NOT-FOUND (missing, unreadable, or not a regular
 // file: a directory or /dev/zero must not hang the loader) or E-FILE-TOO-LARGE at `at`.
-std::optional<std::string> readTextFile(const std::string& path, const SourceLocation& at,
-                                        const std::string& what, DiagnosticSink& sink);
+std::optional<std::string> readTextFile(const std::string& path, const SourceLocation& at, const std::string& what,
+                                        DiagnosticSink& sink);
 
 // A top-level description file's text; throws DiagnosticError when readTextFile reports.
 std::string readMaterialFile(const std::string& path, const std::string& what);
@@ -30,8 +30,8 @@ class ProjectFiles {
   // The path of `written` (as written in `fromFile`, relative to fromFile's directory), for
   // reading and for diagnostics. An absolute path, or one that leaves the project directory
   // (by `..` or through a symbolic link), is E-PATH-ESCAPE at `at`.
-  std::optional<std::string> resolve(const std::string& written, const std::string& fromFile,
-                                     const SourceLocation& at, DiagnosticSink& sink) const;
+  std::optional<std::string> resolve(const std::string& written, const std::string& fromFile, const SourceLocation& at,
+                                     DiagnosticSink& sink) const;
 
   const std::filesystem::path& directory() const { return dir_; }
 

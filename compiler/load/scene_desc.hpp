@@ -28,9 +28,9 @@ struct MaterialUse {
 };
 
 struct SceneMaterial {
-  MaterialDesc material;        // loaded and resolved
+  MaterialDesc material;          // loaded and resolved
   std::vector<MaterialUse> uses;  // at least one (an implicit use at the material's values)
-  SourceLocation where;         // where the scene names it
+  SourceLocation where;           // where the scene names it
 };
 
 struct SceneDesc {
@@ -40,7 +40,7 @@ struct SceneDesc {
   std::vector<std::string> environments{"none"};  // one permutation set per mode
   std::vector<std::string> precisions{"fp32"};
   std::vector<std::string> qualities{"high"};
-  std::vector<std::string> targets{"spirv"};      // see compile/targets.hpp
+  std::vector<std::string> targets{"spirv"};  // see compile/targets.hpp
   std::vector<SceneMaterial> materials;
   std::vector<Diagnostic> warnings;
   SourceLocation lightsWhere, environmentWhere, precisionWhere, qualityWhere, targetsWhere;

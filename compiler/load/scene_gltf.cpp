@@ -123,9 +123,10 @@ GltfSceneContents readGltfScene(const std::string& path, const ShaderLibrary& li
     if (!type) continue;
     std::string ours = lightType(*type);
     if (ours.empty()) {
-      f.error("E-SCENE-LIGHT-TYPE", f.valueAt(ptr + "/type"),
-              "unknown KHR_lights_punctual light type '" + clipped(*type) + "': expected 'directional', 'point' or 'spot'",
-              suggest(*type, {"directional", "point", "spot"}));
+      f.error(
+          "E-SCENE-LIGHT-TYPE", f.valueAt(ptr + "/type"),
+          "unknown KHR_lights_punctual light type '" + clipped(*type) + "': expected 'directional', 'point' or 'spot'",
+          suggest(*type, {"directional", "point", "spot"}));
       continue;
     }
     out.lights.push_back({ours, f.string(ptr + "/name").value_or(""), f.valueAt(ptr + "/type")});

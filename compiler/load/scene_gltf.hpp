@@ -10,9 +10,9 @@
 namespace mb {
 
 struct GltfSceneContents {
-  std::vector<SceneLight> lights;          // in node traversal order
-  std::vector<SceneMaterial> materials;    // used ones, in glTF material order
-  bool imageBased = false;                 // EXT_lights_image_based is used
+  std::vector<SceneLight> lights;        // in node traversal order
+  std::vector<SceneMaterial> materials;  // used ones, in glTF material order
+  bool imageBased = false;               // EXT_lights_image_based is used
   std::vector<Diagnostic> warnings;
 };
 

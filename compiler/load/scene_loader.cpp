@@ -33,7 +33,6 @@ Diagnostic noLightsWarning(const SourceLocation& where) {
           "\"lights\" and \"environment\""};
 }
 
-
 using nlohmann::json;
 
 // A scene is a handful of levels deep; anything deeper is refused before the position scan.
@@ -60,9 +59,10 @@ class SceneJsonReader {
   SceneDesc run() {
     scene_.file = doc_.file();
     scene_.name = std::filesystem::path(doc_.file()).stem().string();
-    if (!f_.object("", {}, {"name", "description", "lights", "environment", "precision", "quality", "targets", "gltf",
-                            "materials"},
-                   "scene"))
+    if (!f_.object(
+            "", {},
+            {"name", "description", "lights", "environment", "precision", "quality", "targets", "gltf", "materials"},
+            "scene"))
       return scene_;
     if (auto n = f_.string("/name")) scene_.name = *n;
     f_.string("/description");
@@ -145,7 +145,8 @@ class SceneJsonReader {
     if (!written) return;
     SourceLocation at = f_.valueAt("/gltf");
     if (!isGltf(*written)) {
-      f_.error("E-UNSUPPORTED-FORMAT", at, "\"gltf\" must name a .gltf or .glb file, found '" + clipped(*written) + "'");
+      f_.error("E-UNSUPPORTED-FORMAT", at,
+               "\"gltf\" must name a .gltf or .glb file, found '" + clipped(*written) + "'");
       return;
     }
     try {
@@ -240,7 +241,9 @@ SceneDesc loadGltfSceneFile(const std::string& path, const ShaderLibrary& lib) {
   scene.lightsWhere = scene.environmentWhere = scene.precisionWhere = scene.qualityWhere = scene.targetsWhere =
       SourceLocation(path, 1, 1);
   if (scene.materials.empty())
-    throw DiagnosticError({{Severity::Error, "E-SCENE-NO-MATERIALS", {path, 1, 1},
+    throw DiagnosticError({{Severity::Error,
+                            "E-SCENE-NO-MATERIALS",
+                            {path, 1, 1},
                             "no mesh of the glTF scene uses a material: there is nothing to compile"}});
   return scene;
 }

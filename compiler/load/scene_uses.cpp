@@ -63,12 +63,13 @@ MaterialUse readUse(JsonFields& f, const std::string& ptr, const MaterialDesc& m
                                 std::all_of(j.begin(), j.end(), [](const json& c) { return c.is_number(); });
     if (!shapeOk) {
       f.error("E-SCENE-VALUE-TYPE", f.valueAt(vptr),
-              "input '" + s->name + "' is a " + toString(s->type) + ": expected " + jsonShapeOf(s->type) +
-                  ", found " + JsonFields::kindOf(j) + (j.is_array() ? " of " + std::to_string(j.size()) : ""));
+              "input '" + s->name + "' is a " + toString(s->type) + ": expected " + jsonShapeOf(s->type) + ", found " +
+                  JsonFields::kindOf(j) + (j.is_array() ? " of " + std::to_string(j.size()) : ""));
       continue;
     }
     std::vector<double> value = n == 1 ? std::vector<double>{j.get<double>()} : j.get<std::vector<double>>();
-    bool inRange = std::all_of(value.begin(), value.end(), [&](double x) { return x >= s->range.lo && x <= s->range.hi; });
+    bool inRange =
+        std::all_of(value.begin(), value.end(), [&](double x) { return x >= s->range.lo && x <= s->range.hi; });
     if (!inRange) {
       f.error("E-SCENE-VALUE-RANGE", f.valueAt(vptr),
               "input '" + s->name + "' = " + formatUseValue(value) + " is outside " + s->rangeOrigin + ", " +
@@ -78,8 +79,8 @@ MaterialUse readUse(JsonFields& f, const std::string& ptr, const MaterialDesc& m
     // The shader bakes a constant in: a use cannot give it another value.
     if (s->own && s->own->constant && s->own->value != value) {
       f.error("E-SCENE-CONSTANT", f.valueAt(vptr),
-              "material '" + material.name + "' fixes '" + s->name + "' as the constant " + formatUseValue(s->own->value) +
-                  ": a use cannot set it to " + formatUseValue(value),
+              "material '" + material.name + "' fixes '" + s->name + "' as the constant " +
+                  formatUseValue(s->own->value) + ": a use cannot set it to " + formatUseValue(value),
               "make '" + s->name + "' a run-time input of the material (\"constant\": false), or drop it from the use");
       continue;
     }

@@ -29,8 +29,8 @@ inline double texelCentre(uint32_t k, uint32_t size) { return (k + 0.5) / size; 
 
 struct LutTable {
   uint32_t size = 0;
-  uint32_t samples = 0;        // Hammersley samples per texel; 0: deterministic quadrature
-  std::vector<float> values;   // size * size * kChannels, layout above
+  uint32_t samples = 0;       // Hammersley samples per texel; 0: deterministic quadrature
+  std::vector<float> values;  // size * size * kChannels, layout above
   float at(uint32_t i, uint32_t j, uint32_t channel) const {
     return values[(static_cast<size_t>(j) * size + i) * kChannels + channel];
   }

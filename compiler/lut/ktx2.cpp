@@ -28,9 +28,9 @@ std::string basicDfd(uint32_t bits) {
   put32(d, 0);                // vendorId KHRONOS (17 bits), descriptorType BASICFORMAT (15 bits)
   put32(d, kVersion13 | (kBlockBytes << 16));
   put32(d, kModelRgbsda | (kPrimariesBt709 << 8) | (kTransferLinear << 16));  // flags: straight alpha
-  put32(d, 0);                // texelBlockDimension0..3 = 1x1x1x1 (stored minus one)
+  put32(d, 0);                    // texelBlockDimension0..3 = 1x1x1x1 (stored minus one)
   put32(d, kSamples * bits / 8);  // bytesPlane0 = bytes per texel; planes 1..3 = 0
-  put32(d, 0);                // bytesPlane4..7
+  put32(d, 0);                    // bytesPlane4..7
   for (uint32_t s = 0; s < kSamples; ++s) {
     put32(d, (s * bits) | ((bits - 1) << 16) | ((kChannelIds[s] | kSigned | kFloat) << 24));
     put32(d, 0);  // samplePosition0..3

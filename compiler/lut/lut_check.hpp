@@ -30,10 +30,10 @@ struct LutCheck {
   uint64_t texels = 0;  // texels compared
   std::array<ChannelError, kChannels> sameSum{}, quadrature{};
   std::array<double, kChannels> maxBound{};  // largest per-texel bound (fp32 bound, or the accuracy promised)
-  double maxBoundRatio = 0;  // max |gpu - judged value| / bound; <= 1 passes
-  int64_t worstTexel = -1;   // storage index (j * size + i) of maxBoundRatio
-  uint64_t failures = 0;     // values outside their bound
-  uint64_t nonFinite = 0;    // NaN or Inf GPU values
+  double maxBoundRatio = 0;                  // max |gpu - judged value| / bound; <= 1 passes
+  int64_t worstTexel = -1;                   // storage index (j * size + i) of maxBoundRatio
+  uint64_t failures = 0;                     // values outside their bound
+  uint64_t nonFinite = 0;                    // NaN or Inf GPU values
   bool withQuadrature = false;
   double cpuMs = 0;
   bool passed() const { return failures == 0 && nonFinite == 0; }

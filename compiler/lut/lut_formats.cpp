@@ -45,8 +45,8 @@ std::string encodeKtx2Lut(const LutTable& t, Precision p) {
 }
 
 std::string encodeCsv(const LutTable& t, Precision p) {
-  std::string out = "# matbricks " MB_VERSION " DFG LUT, " + std::to_string(t.size) + "x" +
-                    std::to_string(t.size) + ", " +
+  std::string out = "# matbricks " MB_VERSION " DFG LUT, " + std::to_string(t.size) + "x" + std::to_string(t.size) +
+                    ", " +
                     (t.samples ? std::to_string(t.samples) + " Hammersley samples, " : std::string("quadrature, ")) +
                     (p == Precision::Fp16 ? "fp16" : "fp32") + " values; rows in storage order (docs/lut.md)\n";
   out += "nov,perceptual_roughness";
@@ -117,10 +117,14 @@ std::optional<OutputFormat> formatFromExtension(const std::string& path) {
 
 const char* formatName(OutputFormat f) {
   switch (f) {
-    case OutputFormat::Raw: return "raw";
-    case OutputFormat::Ktx2: return "ktx2";
-    case OutputFormat::Csv: return "csv";
-    case OutputFormat::Header: return "header";
+    case OutputFormat::Raw:
+      return "raw";
+    case OutputFormat::Ktx2:
+      return "ktx2";
+    case OutputFormat::Csv:
+      return "csv";
+    case OutputFormat::Header:
+      return "header";
   }
   return "raw";
 }
@@ -131,10 +135,14 @@ float storedValue(float value, Precision precision) {
 
 std::string encodeLut(const LutTable& table, OutputFormat format, Precision precision) {
   switch (format) {
-    case OutputFormat::Raw: return encodeRaw(table, precision);
-    case OutputFormat::Ktx2: return encodeKtx2Lut(table, precision);
-    case OutputFormat::Csv: return encodeCsv(table, precision);
-    case OutputFormat::Header: return encodeHeader(table, precision);
+    case OutputFormat::Raw:
+      return encodeRaw(table, precision);
+    case OutputFormat::Ktx2:
+      return encodeKtx2Lut(table, precision);
+    case OutputFormat::Csv:
+      return encodeCsv(table, precision);
+    case OutputFormat::Header:
+      return encodeHeader(table, precision);
   }
   return {};
 }

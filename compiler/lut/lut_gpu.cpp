@@ -6,8 +6,8 @@
 
 namespace mb::lut {
 
-GpuLut generateDfgLutOnGpu(harness::VulkanHarness& gpu, const ShaderLibrary& lib, uint32_t size,
-                           uint32_t samples, const LutBricks& bricks) {
+GpuLut generateDfgLutOnGpu(harness::VulkanHarness& gpu, const ShaderLibrary& lib, uint32_t size, uint32_t samples,
+                           const LutBricks& bricks) {
   GpuLut out;
   auto t0 = std::chrono::steady_clock::now();
   EmittedShader shader = samples == 0 ? emitDfgQuadratureKernel(lib, bricks) : emitDfgLutKernel(lib, samples, bricks);

@@ -11,7 +11,7 @@ namespace mb::lut {
 
 struct GpuLut {
   LutTable table;
-  double compileMs = 0;      // emit + glslang + spirv-opt
+  double compileMs = 0;  // emit + glslang + spirv-opt
   // Timestamped time of the LUT dispatches. A one-record warm-up dispatch runs first so
   // that a driver compiling at the first dispatch (lavapipe JIT-compiles there) is timed
   // apart, in warmupGpuMs.
@@ -24,7 +24,7 @@ struct GpuLut {
 
 // samples == 0: the deterministic quadrature kernel (the default of `matbricks lut`);
 // samples > 0: Filament's Hammersley estimators with that many points per texel.
-GpuLut generateDfgLutOnGpu(harness::VulkanHarness& gpu, const ShaderLibrary& lib, uint32_t size,
-                           uint32_t samples, const LutBricks& bricks = {});
+GpuLut generateDfgLutOnGpu(harness::VulkanHarness& gpu, const ShaderLibrary& lib, uint32_t size, uint32_t samples,
+                           const LutBricks& bricks = {});
 
 }  // namespace mb::lut

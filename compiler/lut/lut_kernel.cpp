@@ -12,8 +12,11 @@ namespace {
 const Brick& requireBrick(const ShaderLibrary& lib, const std::string& id) {
   const Brick* b = lib.findBrick(id);
   if (!b) {
-    throw DiagnosticError({{Severity::Error, "E-UNKNOWN-BRICK", {"shaderlib/manifest.json", 0, 0},
-                            "the DFG LUT kernel needs brick '" + id + "'", ""}});
+    throw DiagnosticError({{Severity::Error,
+                            "E-UNKNOWN-BRICK",
+                            {"shaderlib/manifest.json", 0, 0},
+                            "the DFG LUT kernel needs brick '" + id + "'",
+                            ""}});
   }
   return *b;
 }
@@ -86,7 +89,8 @@ EmittedShader emitDfgQuadratureKernel(const ShaderLibrary& lib, const LutBricks&
   w.line(floatArray("kOuterW", outer.w));
   w.line(floatArray("kInnerX", inner.x));
   w.line(floatArray("kInnerW", inner.w));
-  const std::string nOuter = std::to_string(kQuadratureOuterNodes) + "u", nInner = std::to_string(kQuadratureInnerNodes) + "u";
+  const std::string nOuter = std::to_string(kQuadratureOuterNodes) + "u",
+                    nInner = std::to_string(kQuadratureInnerNodes) + "u";
   w.line("vec3 n = vec3(0.0, 0.0, 1.0);");
   w.line("vec3 v;");
   w.line("float NoV, sinV, alpha;");
@@ -170,8 +174,8 @@ EmittedShader emitDfgQuadratureKernel(const ShaderLibrary& lib, const LutBricks&
   w.line("    vec3 r = integrate(lnAlpha - " + fmt(kGgxBelowPeak) + ", xFull, min(lnAlpha + " + fmt(kGgxAbovePeak) +
          ", -xFull), " + fmt(kGgxPanelWidth) + ", false);");
   w.line("    float zFull = log(cos(thetaFull)), zNone = log(sin(thetaFull));");
-  w.line("    r += integrate(max(zNone, 0.5 * lnAlpha - " + fmt(kClothBelowPeak) + "), zFull, min(0.0, 0.5 * lnAlpha + " +
-         fmt(kClothAbovePeak) + "), " + fmt(kClothPanelWidth) + ", true);");
+  w.line("    r += integrate(max(zNone, 0.5 * lnAlpha - " + fmt(kClothBelowPeak) +
+         "), zFull, min(0.0, 0.5 * lnAlpha + " + fmt(kClothAbovePeak) + "), " + fmt(kClothPanelWidth) + ", true);");
   w.line("    for (uint c = 0u; c < 3u; ++c) mbOut[3u * t + c] = r[c];");
   w.line("}");
   out.glsl = w.str();

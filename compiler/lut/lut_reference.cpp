@@ -31,8 +31,11 @@ constexpr double kFp32MinNormal = 0x1p-126;
 const ref::Reference* requireReference(const std::string& id) {
   const ref::Reference* r = ref::Registry::references().find(id);
   if (!r) {
-    throw DiagnosticError({{Severity::Error, "E-NO-REFERENCE", {"shaderlib/manifest.json", 0, 0},
-                            "brick '" + id + "' has no registered C++ reference", ""}});
+    throw DiagnosticError({{Severity::Error,
+                            "E-NO-REFERENCE",
+                            {"shaderlib/manifest.json", 0, 0},
+                            "brick '" + id + "' has no registered C++ reference",
+                            ""}});
   }
   return r;
 }

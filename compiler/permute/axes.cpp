@@ -87,7 +87,8 @@ std::optional<BrokenBrickRule> brokenBrickRule(const ShadingModel& model, const 
     for (const auto& [roleName, brick] : rule.bricks) {
       const ModelRole* role = model.findRole(roleName);
       auto bound = perm.material->bricks.find(roleName);
-      broken = broken && role && roleActive(*role, perm) && bound != perm.material->bricks.end() && bound->second == brick;
+      broken =
+          broken && role && roleActive(*role, perm) && bound != perm.material->bricks.end() && bound->second == brick;
       pairs += (pairs.empty() ? "" : " with ") + roleName + " = " + brick;
     }
     if (broken)

@@ -21,7 +21,8 @@ std::string modelsThatCan(const AxisPoint& p, const ShaderLibrary& lib) {
   bare.features.clear();
   for (const auto& m : lib.models())
     if (!invalidReason(m, bare)) names.push_back(m.name);
-  return names.empty() ? "remove it from the scene" : "remove it from the scene, or use a model that can: " + quotedList(names);
+  return names.empty() ? "remove it from the scene"
+                       : "remove it from the scene, or use a model that can: " + quotedList(names);
 }
 
 // Says which part of the scene the material's model cannot take: each light, then the
@@ -33,8 +34,7 @@ void reportInvalid(const SceneDesc& scene, const SceneMaterial& sm, const Shadin
     if (!reason) return false;
     std::string message = "material '" + sm.material.name + "' cannot be shaded with " + what + " of scene '" +
                           scene.name + "' (" + formatLocation(at) + "): " + *reason;
-    if (said.insert(message).second)
-      sink.error("E-PERMUTATION-INVALID", sm.where, message, modelsThatCan(probe, lib));
+    if (said.insert(message).second) sink.error("E-PERMUTATION-INVALID", sm.where, message, modelsThatCan(probe, lib));
     return true;
   };
   AxisPoint base = point;
@@ -57,7 +57,8 @@ void reportInvalid(const SceneDesc& scene, const SceneMaterial& sm, const Shadin
   p = base;
   p.quality = point.quality;
   named |= report(p, "quality '" + point.quality + "'", scene.qualityWhere);
-  if (!named) report(point, "the scene's combination", scene.file.empty() ? sm.where : SourceLocation(scene.file, 1, 1));
+  if (!named)
+    report(point, "the scene's combination", scene.file.empty() ? sm.where : SourceLocation(scene.file, 1, 1));
 }
 
 // A brick rule of the model the material's bindings break at one of the scene's points: at
@@ -68,8 +69,9 @@ void reportBrokenRule(const SceneMaterial& sm, const ShadingModel& model, const 
   std::string text = "material '" + sm.material.name + "' cannot be compiled for this scene: " + message +
                      (chosen.line > 0 ? " (brick chosen at " + formatLocation(chosen) + ")" : "");
   if (said.insert(text).second)
-    sink.error("E-PERMUTATION-INVALID", sm.where, text,
-               "bind another brick to one of these roles in the material, or drop the environment or quality level from the scene");
+    sink.error(
+        "E-PERMUTATION-INVALID", sm.where, text,
+        "bind another brick to one of these roles in the material, or drop the environment or quality level from the scene");
 }
 
 void noteQuality(MaterialPlanNote& note, const MaterialDesc& base, const MaterialDesc& q, const std::string& level) {
@@ -154,8 +156,9 @@ ScenePlan planScene(const SceneDesc& scene, const ShaderLibrary& lib) {
   }
   sink.throwIfErrors();
   sortRequired(plan);
-  for (const auto& [axis, n] : std::vector<std::pair<std::string, size_t>>{
-           {"environment", scene.environments.size()}, {"precision", scene.precisions.size()}, {"quality", scene.qualities.size()}})
+  for (const auto& [axis, n] : std::vector<std::pair<std::string, size_t>>{{"environment", scene.environments.size()},
+                                                                           {"precision", scene.precisions.size()},
+                                                                           {"quality", scene.qualities.size()}})
     if (n > 1) plan.requiredAxes.push_back({axis, n});
   return plan;
 }

@@ -15,7 +15,7 @@ namespace mb {
 // Per material of the scene: what was folded and why the rest was not.
 struct MaterialPlanNote {
   std::string material;
-  std::vector<std::string> folded;                              // features folded away
+  std::vector<std::string> folded;  // features folded away
   std::vector<std::string> absent;  // model features the material never enabled (nothing to fold)
   std::vector<std::pair<std::string, std::string>> keptReasons;  // feature -> why it stays
   // "<level>:<role>" -> the brick that quality level bound instead of the default
@@ -25,9 +25,9 @@ struct MaterialPlanNote {
 struct ScenePlan {
   // Owns the specialized materials the permutations point at (stable addresses).
   std::deque<MaterialDesc> specialized;
-  std::vector<Permutation> required;  // sorted by key, no duplicates
-  size_t possible = 0;   // sum over the scene's materials of validCombinationCount(model)
-  std::vector<AxisSize> possibleAxes;     // of the largest model, for "which axis multiplied"
+  std::vector<Permutation> required;   // sorted by key, no duplicates
+  size_t possible = 0;                 // sum over the scene's materials of validCombinationCount(model)
+  std::vector<AxisSize> possibleAxes;  // of the largest model, for "which axis multiplied"
   // Axes of the scene with more than one value, and their counts (e.g. precision x2).
   std::vector<AxisSize> requiredAxes;
   std::vector<MaterialPlanNote> notes;
@@ -40,8 +40,7 @@ ScenePlan planScene(const SceneDesc& scene, const ShaderLibrary& lib);
 // The plain `compile MATERIAL...` path as a plan: one permutation per material at the given
 // lights, environment, precision and quality of `axes` (its features are ignored: each
 // material keeps its own; no folding), so both paths share build and write.
-ScenePlan planMaterials(const std::vector<MaterialDesc>& materials, const AxisPoint& axes,
-                        const ShaderLibrary& lib);
+ScenePlan planMaterials(const std::vector<MaterialDesc>& materials, const AxisPoint& axes, const ShaderLibrary& lib);
 
 // `--explain`: the possible, required, compiled and unique (by SPIR-V hash) counts, the axis
 // that multiplied each, and per material what was folded (docs/scenes.md shows an example).

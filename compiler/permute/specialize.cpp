@@ -45,7 +45,9 @@ const ModelInput* neutralInputOf(const ShadingModel& model, const std::string& f
 const ShadingModel& modelOf(const MaterialDesc& m, const ShaderLibrary& lib) {
   const ShadingModel* model = lib.findModel(m.model);
   if (!model)
-    throw DiagnosticError({{Severity::Error, "E-UNKNOWN-MODEL", {m.sourceFile, 0, 0},
+    throw DiagnosticError({{Severity::Error,
+                            "E-UNKNOWN-MODEL",
+                            {m.sourceFile, 0, 0},
                             "material '" + m.name + "' names unknown model '" + m.model + "'"}});
   return *model;
 }
@@ -55,7 +57,9 @@ MaterialDesc applyQuality(const MaterialDesc& material, const std::string& quali
   const ShadingModel& model = modelOf(material, lib);
   auto level = model.quality.find(quality);
   if (level == model.quality.end())
-    throw DiagnosticError({{Severity::Error, "E-PERMUTATION-INVALID", {material.sourceFile, 0, 0},
+    throw DiagnosticError({{Severity::Error,
+                            "E-PERMUTATION-INVALID",
+                            {material.sourceFile, 0, 0},
                             "model '" + model.name + "' defines no quality level '" + quality + "'"}});
   MaterialDesc out = material;
   for (const auto& [role, brick] : level->second) {
@@ -89,8 +93,8 @@ std::optional<std::string> foldBlocker(const MaterialDesc& material, const std::
       value = p ? p->value : in->defaultValue;
     }
     if (value != in->neutral)
-      return "a use sets " + in->name + " = " + formatUseValue(value) + " (neutral " + formatUseValue(in->neutral) + ")" +
-             at(use.where);
+      return "a use sets " + in->name + " = " + formatUseValue(value) + " (neutral " + formatUseValue(in->neutral) +
+             ")" + at(use.where);
   }
   return std::nullopt;
 }
@@ -130,7 +134,9 @@ MaterialDesc featureComplete(const MaterialDesc& material, const MaterialUse& us
   for (const auto& r : model.roles) {
     if (r.feature.empty() || material.has(r.feature)) continue;
     if (r.defaultBrick.empty())
-      throw DiagnosticError({{Severity::Error, "E-MISSING-BRICK", {material.sourceFile, 0, 0},
+      throw DiagnosticError({{Severity::Error,
+                              "E-MISSING-BRICK",
+                              {material.sourceFile, 0, 0},
                               "the feature-complete form of '" + material.name + "' needs role '" + r.role +
                                   "', which has no default brick"}});
     out.bricks[r.role] = r.defaultBrick;

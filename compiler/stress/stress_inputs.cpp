@@ -18,9 +18,9 @@ double norm(V3 a) { return std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z); }
 // A direction at cosine c from n = +z: the stored z component is c itself, so n.v is exact.
 V3 atCosine(double c, double azimuth) {
   double s = std::sqrt(std::max(0.0, 1.0 - c * c));
-  if (azimuth == 0.0) return {s, 0, c};        // same side as v
-  if (azimuth == 1.0) return {-s, 0, c};       // mirror side: n.h = 1 when the cosines match
-  return {0, s, c};                            // 90 degrees azimuth
+  if (azimuth == 0.0) return {s, 0, c};   // same side as v
+  if (azimuth == 1.0) return {-s, 0, c};  // mirror side: n.h = 1 when the cosines match
+  return {0, s, c};                       // 90 degrees azimuth
 }
 
 struct GeometryCase {
@@ -39,9 +39,8 @@ std::vector<double> uniqueSorted(std::vector<double> v) {
 
 std::vector<GeometryCase> geometryCases(const GeometryDomain& d) {
   const V3 n{0, 0, 1};
-  std::vector<double> cosines = uniqueSorted(
-      {0.0, 1e-7, 1e-4, 1e-2, 0.1, 0.5, 1.0, std::clamp(d.NoV.lo, -1.0, 1.0),
-       std::clamp(d.NoL.lo, -1.0, 1.0), std::clamp(d.NoV.hi, -1.0, 1.0)});
+  std::vector<double> cosines = uniqueSorted({0.0, 1e-7, 1e-4, 1e-2, 0.1, 0.5, 1.0, std::clamp(d.NoV.lo, -1.0, 1.0),
+                                              std::clamp(d.NoL.lo, -1.0, 1.0), std::clamp(d.NoV.hi, -1.0, 1.0)});
   std::vector<GeometryCase> cases;
   for (double cv : cosines)
     for (double cl : cosines)
@@ -152,8 +151,8 @@ bool isGeometryInput(const ProbeInput& in, bool hasGeometry) {
 
 }  // namespace
 
-StressInputs generateStressInputs(const ProbeLayout& layout, const SampleDomain& domain,
-                                  ShaderPrecision precision, uint64_t randomSamples, uint64_t seed) {
+StressInputs generateStressInputs(const ProbeLayout& layout, const SampleDomain& domain, ShaderPrecision precision,
+                                  uint64_t randomSamples, uint64_t seed) {
   const bool hasGeometry = layout.find("n") && layout.find("v") && layout.find("l");
   std::vector<const ProbeInput*> params;
   std::vector<std::vector<Candidate>> candidates;

@@ -31,7 +31,7 @@ struct StressInputs {
   uint64_t count() const { return inDomain.size(); }
 };
 
-StressInputs generateStressInputs(const ProbeLayout& layout, const SampleDomain& domain,
-                                  ShaderPrecision precision, uint64_t randomSamples, uint64_t seed);
+StressInputs generateStressInputs(const ProbeLayout& layout, const SampleDomain& domain, ShaderPrecision precision,
+                                  uint64_t randomSamples, uint64_t seed);
 
 }  // namespace mb

@@ -24,11 +24,15 @@ std::string inlineRow(const std::vector<std::string>& cols, const std::vector<fl
 }
 
 nlohmann::json statsJson(const StressStats& s) {
-  return {{"records", s.records},         {"values", s.values},
-          {"nan_count", s.nanCount},      {"inf_count", s.infCount},
-          {"negative_count", s.negativeCount}, {"reference_undefined_count", s.referenceUndefined},
+  return {{"records", s.records},
+          {"values", s.values},
+          {"nan_count", s.nanCount},
+          {"inf_count", s.infCount},
+          {"negative_count", s.negativeCount},
+          {"reference_undefined_count", s.referenceUndefined},
           {"overflow_count", s.overflowCount},
-          {"max_abs_error", number(s.maxAbs)}, {"max_rel_error", number(s.maxRel)}};
+          {"max_abs_error", number(s.maxAbs)},
+          {"max_rel_error", number(s.maxRel)}};
 }
 
 std::string shellEscapeNewlines(const std::string& csv) {
@@ -43,11 +47,12 @@ std::string replayCommand(const StressResult& r, const std::string& cli, bool in
   const std::vector<float>& row = inDomain ? r.worstInDomainRow : r.worstOutOfDomainRow;
   if (row.empty()) return "";
   std::string file = r.key + (inDomain ? "" : ".out_of_domain") + ".worst.csv";
-  std::string what = r.kind == "brick" ? "--brick " + r.id
-                                       : "--material " + r.id + (r.materialName.empty() ? "" : " --name " + r.materialName);
+  std::string what = r.kind == "brick"
+                         ? "--brick " + r.id
+                         : "--material " + r.id + (r.materialName.empty() ? "" : " --name " + r.materialName);
   std::string precision = r.precision == ShaderPrecision::Fp16 ? " --precision fp16" : "";
-  return "printf '" + shellEscapeNewlines(csvRow(r.columns, row)) + "' > " + file + " && " + cli +
-         " eval " + what + precision + " --input " + file;
+  return "printf '" + shellEscapeNewlines(csvRow(r.columns, row)) + "' > " + file + " && " + cli + " eval " + what +
+         precision + " --input " + file;
 }
 
 nlohmann::json toJson(const StressResult& r, const std::string& cli) {
@@ -83,9 +88,9 @@ nlohmann::json toJson(const StressResult& r, const std::string& cli) {
 std::string formatStressTable(const std::vector<StressResult>& results) {
   std::ostringstream s;
   char line[512];
-  std::snprintf(line, sizeof line, "%-48s %8s %5s %5s %6s %6s %5s %10s %10s | %8s %5s %5s %6s  %s\n",
-                "probe", "in_recs", "nan", "inf", "neg", "undef", "ovf", "max_abs", "max_rel", "out_recs",
-                "nan", "inf", "undef", "result");
+  std::snprintf(line, sizeof line, "%-48s %8s %5s %5s %6s %6s %5s %10s %10s | %8s %5s %5s %6s  %s\n", "probe",
+                "in_recs", "nan", "inf", "neg", "undef", "ovf", "max_abs", "max_rel", "out_recs", "nan", "inf", "undef",
+                "result");
   s << line;
   for (const auto& r : results) {
     if (!r.compileError.empty()) {
@@ -113,7 +118,9 @@ std::string formatStressMarkdown(const std::vector<StressResult>& results, const
     << "Each brick runs with true " << p
     << " arithmetic over the adversarial stress set plus 1024 validation samples "
        "([docs/stress.md](stress.md)); the reference stays double. Columns count in-domain "
-       "values (the " << p << " domain: at fp16 roughness-like inputs start at 0.089, alpha at "
+       "values (the "
+    << p
+    << " domain: at fp16 roughness-like inputs start at 0.089, alpha at "
        "0.089^2, and vectors have unit length); max rel uses a floor of 1e-6 on |reference|. "
        "`undef` counts inputs where the reference itself is not finite, `ovf` Inf results whose "
        "exact value exceeds the largest finite value (65504 in half; IEEE rounding gives Inf). "
@@ -131,11 +138,11 @@ std::string formatStressMarkdown(const std::vector<StressResult>& results, const
       continue;
     }
     const StressStats &in = r.inDomain, &out = r.outOfDomain;
-    s << "| `" << id << "` | " << in.values << " | " << in.nanCount << " | " << in.infCount << " | "
-      << in.negativeCount << " | " << in.referenceUndefined << " | " << in.overflowCount << " | ";
+    s << "| `" << id << "` | " << in.values << " | " << in.nanCount << " | " << in.infCount << " | " << in.negativeCount
+      << " | " << in.referenceUndefined << " | " << in.overflowCount << " | ";
     std::snprintf(buf, sizeof buf, "%.3g | %.3g", in.maxAbs, in.maxRel);
-    s << buf << " | " << out.nanCount << "/" << out.infCount << " | `"
-      << inlineRow(r.columns, r.worstInDomainRow) << "` |\n";
+    s << buf << " | " << out.nanCount << "/" << out.infCount << " | `" << inlineRow(r.columns, r.worstInDomainRow)
+      << "` |\n";
   }
   return s.str();
 }

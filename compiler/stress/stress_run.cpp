@@ -46,8 +46,8 @@ std::string csvRow(const std::vector<std::string>& columns, const std::vector<fl
   return header + "\n" + values + "\n";
 }
 
-StressResult stressProbe(harness::VulkanHarness& gpu, const ProbeProgram& program,
-                         const std::string& kind, const std::string& id, const StressOptions& options) {
+StressResult stressProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, const std::string& kind,
+                         const std::string& id, const StressOptions& options) {
   const ProbeLayout& layout = program.shader.layout;
   StressResult res;
   res.key = program.shader.key;
@@ -57,8 +57,8 @@ StressResult stressProbe(harness::VulkanHarness& gpu, const ProbeProgram& progra
   res.columns = layout.columns();
   if (program.precision == ShaderPrecision::Fp16) res.inDomain.maxFinite = res.outOfDomain.maxFinite = 65504.0;
 
-  StressInputs inputs = generateStressInputs(layout, program.domain, program.precision,
-                                             options.randomSamples, options.seed);
+  StressInputs inputs =
+      generateStressInputs(layout, program.domain, program.precision, options.randomSamples, options.seed);
   std::vector<uint8_t> inDomain = inputs.inDomain;
   // Stress reports raw errors (no tolerance), so the conditioning allowance is not needed.
   ProbeRun run = runProbe(gpu, program, std::move(inputs.records), /*conditioning=*/false);
@@ -66,8 +66,7 @@ StressResult stressProbe(harness::VulkanHarness& gpu, const ProbeProgram& progra
   for (uint64_t i = 0; i < run.count; ++i) {
     StressStats& s = inDomain[i] ? res.inDomain : res.outOfDomain;
     ++s.records;
-    for (uint32_t k = 0; k < os; ++k)
-      s.add(static_cast<int64_t>(i), run.gpu[i * os + k], run.reference[i * os + k]);
+    for (uint32_t k = 0; k < os; ++k) s.add(static_cast<int64_t>(i), run.gpu[i * os + k], run.reference[i * os + k]);
   }
   auto row = [&](int64_t r) {
     return r < 0 ? std::vector<float>{}

@@ -33,9 +33,9 @@ struct StressStats {
 };
 
 struct StressResult {
-  std::string key;        // "brick.d_ggx", "brick.d_ggx.fp16", or a permutation key
-  std::string kind;       // "brick" or "permutation"
-  std::string id;         // brick id, or the material file (for the replay command)
+  std::string key;           // "brick.d_ggx", "brick.d_ggx.fp16", or a permutation key
+  std::string kind;          // "brick" or "permutation"
+  std::string id;            // brick id, or the material file (for the replay command)
   std::string materialName;  // the material within that file (a glTF file holds several)
   ShaderPrecision precision = ShaderPrecision::Fp32;
   std::string compileError;  // set when the probe did not build at this precision
@@ -44,9 +44,7 @@ struct StressResult {
   std::vector<float> worstInDomainRow, worstOutOfDomainRow;  // empty if none
   std::vector<double> worstInDomainGpu, worstInDomainReference;
   // Fails on in-domain NaN/Inf, or when the probe cannot be built.
-  bool passed() const {
-    return compileError.empty() && inDomain.nanCount == 0 && inDomain.infCount == 0;
-  }
+  bool passed() const { return compileError.empty() && inDomain.nanCount == 0 && inDomain.infCount == 0; }
 };
 
 struct StressOptions {
@@ -54,8 +52,8 @@ struct StressOptions {
   uint64_t seed = 1;
 };
 
-StressResult stressProbe(harness::VulkanHarness& gpu, const ProbeProgram& program,
-                         const std::string& kind, const std::string& id, const StressOptions& options);
+StressResult stressProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, const std::string& kind,
+                         const std::string& id, const StressOptions& options);
 
 // "h1,h2,...\nv1,v2,...\n": a CSV that `matbricks eval` reads (values round-trip fp32).
 std::string csvRow(const std::vector<std::string>& columns, const std::vector<float>& row);

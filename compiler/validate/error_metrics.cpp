@@ -44,8 +44,7 @@ void ErrorStats::add(int64_t record, float gpu, double ref, const Tolerance& tol
   maxAbs = std::max(maxAbs, err);
   maxRel = std::max(maxRel, err / std::max(std::abs(ref), kRelativeErrorFloor));
   // ULPs are meaningful only away from zero: below the floor, values are judged on abs error.
-  if (std::abs(ref) >= kRelativeErrorFloor)
-    maxUlp = std::max(maxUlp, ulpDistance(gpu, static_cast<float>(ref)));
+  if (std::abs(ref) >= kRelativeErrorFloor) maxUlp = std::max(maxUlp, ulpDistance(gpu, static_cast<float>(ref)));
   if (err > allowed) ++failures;
   double ratio = allowed > 0 ? err / allowed : (err > 0 ? std::numeric_limits<double>::max() : 0.0);
   if (ratio > worstRatio) {

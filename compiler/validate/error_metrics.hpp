@@ -27,16 +27,14 @@ struct ErrorStats {
   double maxConditioning = 0;
   // Values that pass only thanks to that allowance (outside abs + rel * |ref| alone).
   uint64_t passedByConditioning = 0;
-  double worstRatio = -1;      // max |gpu-ref| / allowed over all values
-  int64_t worstRecord = -1;    // record index of worstRatio
+  double worstRatio = -1;    // max |gpu-ref| / allowed over all values
+  int64_t worstRecord = -1;  // record index of worstRatio
 
   // A value passes when |gpu - ref| <= tol.abs + tol.rel * |ref| + conditioning, where
   // `conditioning` is how much the exact result moves under the fp32 rounding of the
   // direction inputs (the problem's own sensitivity, not the brick's arithmetic).
   void add(int64_t record, float gpu, double ref, const Tolerance& tol, double conditioning = 0.0);
-  bool passed() const {
-    return failures == 0 && nanCount == 0 && infCount == 0 && referenceInvalid == 0;
-  }
+  bool passed() const { return failures == 0 && nanCount == 0 && infCount == 0 && referenceInvalid == 0; }
 };
 
 // Distance in units in the last place between two floats (reference rounded to float).

@@ -12,9 +12,12 @@ RoughnessKind roughnessKind(const std::string& inputName) {
 
 double roughnessFloor(RoughnessKind kind, ShaderPrecision p) {
   switch (kind) {
-    case RoughnessKind::Alpha: return minAlpha(p);
-    case RoughnessKind::Perceptual: return minPerceptualRoughness(p);
-    case RoughnessKind::None: break;
+    case RoughnessKind::Alpha:
+      return minAlpha(p);
+    case RoughnessKind::Perceptual:
+      return minPerceptualRoughness(p);
+    case RoughnessKind::None:
+      break;
   }
   return 0.0;
 }

@@ -29,8 +29,11 @@ void compileInto(ProbeProgram& p) {
 }
 
 [[noreturn]] void missingReference(const std::string& what) {
-  throw DiagnosticError({{Severity::Error, "E-NO-REFERENCE", {"shaderlib/manifest.json", 0, 0},
-                          what + " has no registered C++ reference", ""}});
+  throw DiagnosticError({{Severity::Error,
+                          "E-NO-REFERENCE",
+                          {"shaderlib/manifest.json", 0, 0},
+                          what + " has no registered C++ reference",
+                          ""}});
 }
 
 }  // namespace
@@ -56,9 +59,9 @@ ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
   return p;
 }
 
-std::function<void(const double*, double*)> materialReferenceEval(
-    const Permutation& perm, const ProbeLayout& layout, std::map<std::string, std::string> bricks,
-    bool groundTruths, bool illuminanceInput) {
+std::function<void(const double*, double*)> materialReferenceEval(const Permutation& perm, const ProbeLayout& layout,
+                                                                  std::map<std::string, std::string> bricks,
+                                                                  bool groundTruths, bool illuminanceInput) {
   const MaterialDesc& mat = *perm.material;
   ref::ModelReferenceFn model = ref::ModelRegistry::instance().find(mat.model);
   if (!model) missingReference("model '" + mat.model + "'");
@@ -120,8 +123,7 @@ ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& 
     // fp16 shading takes pre-exposed light (Filament's pre-exposure), from the smallest
     // normal half to 2^10: near 65504 the ~0.1% half rounding of a radiance that just fits
     // would round to Inf.
-    p.domain.ranges["illuminance"] =
-        p.precision == ShaderPrecision::Fp16 ? kIlluminanceRangeFp16 : kIlluminanceRange;
+    p.domain.ranges["illuminance"] = p.precision == ShaderPrecision::Fp16 ? kIlluminanceRangeFp16 : kIlluminanceRange;
   }
   if (p.precision == ShaderPrecision::Fp16) p.tolerance = fp16Tolerance();
 
@@ -153,8 +155,7 @@ ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std:
 
   run.reference.resize(run.count * layout.outStride);
   run.conditioning.assign(run.count * layout.outStride, 0.0);
-  std::vector<uint32_t> directionColumns =
-      conditioning ? directionInputColumns(layout) : std::vector<uint32_t>{};
+  std::vector<uint32_t> directionColumns = conditioning ? directionInputColumns(layout) : std::vector<uint32_t>{};
   // Fed outputs (surface values the GPU computed) follow the inputs in the reference's record.
   const uint32_t fed = layout.fedCount(), fedFrom = layout.outStride - fed;
   std::vector<double> record(layout.inStride + fed), perturbed(layout.inStride + fed), moved(layout.outStride);
@@ -204,8 +205,8 @@ ErrorStats compare(const ProbeRun& run, const ProbeProgram& program) {
   uint32_t stride = program.shader.layout.outStride;
   for (uint64_t i = 0; i < run.count; ++i)
     for (uint32_t k = 0; k < stride; ++k)
-      s.add(static_cast<int64_t>(i), run.gpu[i * stride + k], run.reference[i * stride + k],
-            program.tolerance, run.conditioning.empty() ? 0.0 : run.conditioning[i * stride + k]);
+      s.add(static_cast<int64_t>(i), run.gpu[i * stride + k], run.reference[i * stride + k], program.tolerance,
+            run.conditioning.empty() ? 0.0 : run.conditioning[i * stride + k]);
   return s;
 }
 

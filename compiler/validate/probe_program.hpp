@@ -35,8 +35,7 @@ ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
 // `illuminanceInput`: the probe takes the light's illuminance as an input column
 // (emitPermutation); its domain is kIlluminanceRange, and the absolute tolerance scales with
 // the largest illuminance (the result is linear in it).
-ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& perm,
-                                   bool illuminanceInput = false);
+ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput = false);
 // Illuminance (lux-like units) from starlight to well above direct sunlight.
 inline constexpr Range kIlluminanceRange{1e-6, 1e6};
 // At fp16: pre-exposed illuminance, from the smallest normal half (2^-14) to 2^10.
@@ -48,8 +47,8 @@ inline constexpr Range kIlluminanceRangeFp16{0x1p-14, 1024.0};
 Tolerance fp16Tolerance();
 
 struct ProbeRun {
-  std::vector<float> inputs;   // count * inStride
-  std::vector<float> gpu;      // count * outStride
+  std::vector<float> inputs;      // count * inStride
+  std::vector<float> gpu;         // count * outStride
   std::vector<double> reference;  // count * outStride
   // Per output value: how far the reference moves when the direction vectors n, v, l are
   // perturbed by kDirectionInputUlps fp32 ulps (see inputConditioning). Zero for probes
@@ -71,17 +70,18 @@ inline constexpr uint32_t kConditioningPatterns = 8;
 // Runs the probe on the GPU and the reference on the CPU over the same fp32 inputs.
 // `conditioning`: also fill ProbeRun::conditioning (kConditioningPatterns extra reference
 // evaluations per record); callers that never judge against a tolerance (stress) skip it.
-ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program,
-                  std::vector<float> inputs, bool conditioning = true);
+ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std::vector<float> inputs,
+                  bool conditioning = true);
 ErrorStats compare(const ProbeRun& run, const ProbeProgram& program);
 // The double reference of a permutation's probe: the model's reference composition with the
 // given role -> brick binding, reading the scene (frame, lights, environment; see
 // probe_scene_reference.hpp) and the non-constant parameters from a record laid out as
 // `layout`. With `groundTruths`, each bound brick that has a ground truth is evaluated by it
 // (bench's yardstick). The permutation's material must outlive the result.
-std::function<void(const double*, double*)> materialReferenceEval(
-    const Permutation& perm, const ProbeLayout& layout, std::map<std::string, std::string> bricks,
-    bool groundTruths = false, bool illuminanceInput = false);
+std::function<void(const double*, double*)> materialReferenceEval(const Permutation& perm, const ProbeLayout& layout,
+                                                                  std::map<std::string, std::string> bricks,
+                                                                  bool groundTruths = false,
+                                                                  bool illuminanceInput = false);
 // Record columns holding the direction vectors n, v, l (empty if the probe has none).
 std::vector<uint32_t> directionInputColumns(const ProbeLayout& layout);
 

@@ -61,13 +61,13 @@ void sceneFromRecord(const ProbeScene& scene, const ProbeLayout& layout, const d
     if (type == "dir") {
       in.dir = ref::DirectionalLight{lu, scene.illuminanceInput ? r.vec3("illuminance") : Vec3{1, 1, 1}};
     } else if (type == "point") {
-      in.point = ref::PointLight{lu * r.scalar("pointDistance"), r.vec3("pointIntensity"),
-                                 r.scalar("pointFalloffRadius")};
+      in.point =
+          ref::PointLight{lu * r.scalar("pointDistance"), r.vec3("pointIntensity"), r.scalar("pointFalloffRadius")};
     } else if (type == "spot") {
       double a = r.scalar("spotAxisAngle"), cosOuter = r.scalar("spotCosOuter");
       Vec3 axis = lt * std::sin(a) - lu * std::cos(a);
       double cosInner = cosOuter + r.scalar("spotInnerFraction") * (1.0 - cosOuter);
-      in.spot = ref::SpotLight{lu * r.scalar("spotDistance"), axis, r.vec3("spotIntensity"),
+      in.spot = ref::SpotLight{lu * r.scalar("spotDistance"), axis,     r.vec3("spotIntensity"),
                                r.scalar("spotFalloffRadius"), cosOuter, cosInner};
     } else if (type == "sphere") {
       double d = r.scalar("sphereDistance");
@@ -88,8 +88,7 @@ void sceneFromRecord(const ProbeScene& scene, const ProbeLayout& layout, const d
   env.ao = r.scalar("ao");
   env.maxMip = kProbeMaxMip;
   env.prefiltered = env.ibl() ? r.vec3("prefiltered") : Vec3{};
-  env.dfg = scene.environment == "ibl_lut" ? Vec3{r.scalar("dfgX"), r.scalar("dfgY"), r.scalar("dfgZ")}
-                                           : Vec3{0, 1, 0};
+  env.dfg = scene.environment == "ibl_lut" ? Vec3{r.scalar("dfgX"), r.scalar("dfgY"), r.scalar("dfgZ")} : Vec3{0, 1, 0};
   in.env = env;
 }
 

@@ -8,7 +8,6 @@ namespace mb {
 
 // Fills in.frame, the lights and the environment of `scene` from `record` (laid out as
 // `layout`).
-void sceneFromRecord(const ProbeScene& scene, const ProbeLayout& layout, const double* record,
-                     ref::ModelEvalInput& in);
+void sceneFromRecord(const ProbeScene& scene, const ProbeLayout& layout, const double* record, ref::ModelEvalInput& in);
 
 }  // namespace mb

@@ -29,9 +29,7 @@ V3 unit(V3 a) { return scale(a, 1.0 / std::sqrt(dot3(a, a))); }
 // Orthonormal frame (t, b, n) around a random normal.
 struct Frame {
   V3 t, b, n;
-  V3 toWorld(V3 local) const {
-    return add(add(scale(t, local.x), scale(b, local.y)), scale(n, local.z));
-  }
+  V3 toWorld(V3 local) const { return add(add(scale(t, local.x), scale(b, local.y)), scale(n, local.z)); }
 };
 
 Frame randomFrame(SplitMix64& rng) {
@@ -97,14 +95,15 @@ std::vector<GeometrySample> edgeCases(const GeometryDomain& d) {
   double nov = std::max(d.NoV.lo, 1e-7), nol = std::max(d.NoL.lo, 0.0);
   e.push_back({n, fromAngles(nov, 0.0), fromAngles(std::min(d.NoL.hi, 1.0), 0.0)});  // grazing view
   e.push_back({n, fromAngles(std::min(d.NoV.hi, 1.0), 0.0), fromAngles(nol, 1.0)});  // grazing light
-  e.push_back({n, fromAngles(nov, 0.0), fromAngles(nov < d.NoL.lo ? d.NoL.lo : nov, std::numbers::pi)});  // mirror at grazing
+  e.push_back(
+      {n, fromAngles(nov, 0.0), fromAngles(nov < d.NoL.lo ? d.NoL.lo : nov, std::numbers::pi)});  // mirror at grazing
   return e;
 }
 
 }  // namespace
 
-std::vector<float> generateSamples(const ProbeLayout& layout, const SampleDomain& domain,
-                                   uint64_t count, uint64_t seed) {
+std::vector<float> generateSamples(const ProbeLayout& layout, const SampleDomain& domain, uint64_t count,
+                                   uint64_t seed) {
   SplitMix64 rng(seed * 0x2545F4914F6CDD1Dull + 1);
   std::vector<float> out(count * layout.inStride, 0.0f);
   bool hasGeometry = layout.find("n") && layout.find("v") && layout.find("l");

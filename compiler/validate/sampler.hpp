@@ -19,8 +19,8 @@ struct SampleDomain {
   GeometryDomain geometry;
 };
 
-std::vector<float> generateSamples(const ProbeLayout& layout, const SampleDomain& domain,
-                                   uint64_t count, uint64_t seed);
+std::vector<float> generateSamples(const ProbeLayout& layout, const SampleDomain& domain, uint64_t count,
+                                   uint64_t seed);
 
 // Deterministic on every platform (std distributions are not).
 class SplitMix64 {

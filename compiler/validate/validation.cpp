@@ -6,8 +6,8 @@
 
 namespace mb {
 
-ValidationRecord validateProbe(harness::VulkanHarness& gpu, const ProbeProgram& program,
-                               const std::string& kind, uint64_t samples, uint64_t seed) {
+ValidationRecord validateProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, const std::string& kind,
+                               uint64_t samples, uint64_t seed) {
   ValidationRecord rec;
   rec.key = program.shader.key;
   rec.kind = kind;
@@ -61,17 +61,15 @@ nlohmann::json toJson(const ValidationRecord& r) {
 std::string formatValidationTable(const std::vector<ValidationRecord>& records) {
   std::ostringstream s;
   char line[512];
-  std::snprintf(line, sizeof line, "%-44s %8s %10s %10s %8s %4s %4s %5s %10s %9s  %s\n", "permutation",
-                "samples", "max_abs", "max_rel", "max_ulp", "nan", "inf", "neg", "compile_ms",
-                "gpu_ms", "result");
+  std::snprintf(line, sizeof line, "%-44s %8s %10s %10s %8s %4s %4s %5s %10s %9s  %s\n", "permutation", "samples",
+                "max_abs", "max_rel", "max_ulp", "nan", "inf", "neg", "compile_ms", "gpu_ms", "result");
   s << line;
   for (const auto& r : records) {
-    std::snprintf(line, sizeof line, "%-44s %8llu %10.3g %10.3g %8.3g %4llu %4llu %5llu %10.2f %9.3f  %s\n",
-                  r.key.c_str(), static_cast<unsigned long long>(r.samples), r.stats.maxAbs,
-                  r.stats.maxRel, r.stats.maxUlp, static_cast<unsigned long long>(r.stats.nanCount),
-                  static_cast<unsigned long long>(r.stats.infCount),
-                  static_cast<unsigned long long>(r.stats.negativeCount), r.compileMs, r.gpuMs,
-                  r.passed() ? "PASS" : "FAIL");
+    std::snprintf(
+        line, sizeof line, "%-44s %8llu %10.3g %10.3g %8.3g %4llu %4llu %5llu %10.2f %9.3f  %s\n", r.key.c_str(),
+        static_cast<unsigned long long>(r.samples), r.stats.maxAbs, r.stats.maxRel, r.stats.maxUlp,
+        static_cast<unsigned long long>(r.stats.nanCount), static_cast<unsigned long long>(r.stats.infCount),
+        static_cast<unsigned long long>(r.stats.negativeCount), r.compileMs, r.gpuMs, r.passed() ? "PASS" : "FAIL");
     s << line;
   }
   return s.str();

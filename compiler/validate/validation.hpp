@@ -25,8 +25,8 @@ struct ValidationRecord {
   bool passed() const { return stats.passed() && !(judgesNegatives() && stats.negativeCount > 0); }
 };
 
-ValidationRecord validateProbe(harness::VulkanHarness& gpu, const ProbeProgram& program,
-                               const std::string& kind, uint64_t samples, uint64_t seed);
+ValidationRecord validateProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, const std::string& kind,
+                               uint64_t samples, uint64_t seed);
 
 nlohmann::json toJson(const ValidationRecord& r);
 // Fixed-width table, one row per record, for people.

@@ -49,7 +49,8 @@ std::vector<std::string> compileInputs(const ShaderLibrary& lib, const std::vect
   files.insert(absolutePath(lib.root() / "manifest.json"));
   // ShaderLibrary::load reads every slot's slot.json.
   for (const auto& entry : fs::directory_iterator(lib.root()))
-    if (entry.is_directory() && fs::exists(entry.path() / "slot.json")) files.insert(absolutePath(entry.path() / "slot.json"));
+    if (entry.is_directory() && fs::exists(entry.path() / "slot.json"))
+      files.insert(absolutePath(entry.path() / "slot.json"));
   for (const auto& p : perms) {
     const MaterialDesc& m = *p.material;
     if (!m.sourceFile.empty() && fs::exists(m.sourceFile)) files.insert(absolutePath(m.sourceFile));

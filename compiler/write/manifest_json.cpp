@@ -27,28 +27,28 @@ nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutatio
   const Permutation& perm = *p.perm;
   const BuiltPermutation& b = *p.built;
   const MaterialDesc& m = *perm.material;
-  nlohmann::json entry{{"key", b.shader.key},
-                       {"material", m.name},
-                       {"source", m.sourceFile},
-                       {"model", m.model},
-                       {"description", m.description},
-                       {"features", m.features},
-                       {"folded_features", perm.folded},
-                       {"lights", perm.lights},
-                       {"environment", perm.environment},
-                       {"precision", perm.precision},
-                       {"quality", perm.quality},
-                       {"bricks", nlohmann::json::object()},
-                       {"bricks_included", b.shader.bricks},
-                       {"parameters", nlohmann::json::array()},
-                       {"spirv_hash_xxh64", b.spirvHash},
-                       {"spirv_instructions", spirvInstructionCount(b.artifacts.spirv)},
-                       {"files", p.files},
-                       {"include", p.include},
-                       {"needs_fetch_hooks", needsFetchHooks(perm)},
-                       {"record_layout", recordLayoutJson(b.shader.layout)},
-                       {"reflection", b.artifacts.reflection.is_null() ? nlohmann::json::object()
-                                                                       : b.artifacts.reflection}};
+  nlohmann::json entry{
+      {"key", b.shader.key},
+      {"material", m.name},
+      {"source", m.sourceFile},
+      {"model", m.model},
+      {"description", m.description},
+      {"features", m.features},
+      {"folded_features", perm.folded},
+      {"lights", perm.lights},
+      {"environment", perm.environment},
+      {"precision", perm.precision},
+      {"quality", perm.quality},
+      {"bricks", nlohmann::json::object()},
+      {"bricks_included", b.shader.bricks},
+      {"parameters", nlohmann::json::array()},
+      {"spirv_hash_xxh64", b.spirvHash},
+      {"spirv_instructions", spirvInstructionCount(b.artifacts.spirv)},
+      {"files", p.files},
+      {"include", p.include},
+      {"needs_fetch_hooks", needsFetchHooks(perm)},
+      {"record_layout", recordLayoutJson(b.shader.layout)},
+      {"reflection", b.artifacts.reflection.is_null() ? nlohmann::json::object() : b.artifacts.reflection}};
   for (const auto& [role, id] : boundRoles(*in.lib, perm)) entry["bricks"][role] = id;
   for (const auto& prm : m.params) entry["parameters"].push_back(paramJson(prm));
   if (!m.engineData.empty()) entry["engine"] = nlohmann::json::parse(m.engineData);
@@ -83,10 +83,11 @@ nlohmann::json packageManifest(const PackageInputs& in, const std::vector<Packag
                           {"namespace", in.cppNamespace},
                           {"targets", std::move(targets)},
                           {"counts", {{"required", perms.size()}, {"unique_spirv", unique}}},
-                          {"kernel", {{"records", {{"set", 0}, {"binding", 0}}},
-                                      {"results", {{"set", 0}, {"binding", 1}}},
-                                      {"material_params", {{"set", 0}, {"binding", 2}, {"layout", "std140"}}},
-                                      {"push_constant", "uint count"}}},
+                          {"kernel",
+                           {{"records", {{"set", 0}, {"binding", 0}}},
+                            {"results", {{"set", 0}, {"binding", 1}}},
+                            {"material_params", {{"set", 0}, {"binding", 2}, {"layout", "std140"}}},
+                            {"push_constant", "uint count"}}},
                           {"permutations", nlohmann::json::array()}};
   if (!in.sceneFile.empty()) {
     manifest["scene"] = {{"file", in.sceneFile},

@@ -92,7 +92,8 @@ std::string someEntries(const fs::path& dir) {
 }  // namespace
 
 std::string outputMarkerText(const std::string& kind) {
-  nlohmann::json j{{"format", "matbricks-output"}, {"version", 1}, {"kind", kind}, {"generator", "matbricks " MB_VERSION}};
+  nlohmann::json j{
+      {"format", "matbricks-output"}, {"version", 1}, {"kind", kind}, {"generator", "matbricks " MB_VERSION}};
   return j.dump(2) + "\n";
 }
 
@@ -115,16 +116,19 @@ void refuseOverlap(const fs::path& output, const std::string& outputWhat, const 
     std::string relation;
     if (inputExists) {
       const FileId inId = inChain.front();
-      if (outputExists && outChain.front() == inId) relation = "is";
-      else if (outputExists && contains(inChain, outChain.front())) relation = "contains";
-      else if (contains(outChain, inId)) relation = "lies inside";
+      if (outputExists && outChain.front() == inId)
+        relation = "is";
+      else if (outputExists && contains(inChain, outChain.front()))
+        relation = "contains";
+      else if (contains(outChain, inId))
+        relation = "lies inside";
     } else {
       relation = lexicalRelation(output, in.path);  // e.g. another output not written yet
     }
     if (relation.empty()) continue;
     fail("E-OUTPUT-OVERLAPS-INPUT", output,
-         "the " + outputWhat + " '" + output.string() + "' " + relation + " the " + in.what + " '" +
-             in.path.string() + "': an output may not be, contain or lie inside what the command reads; nothing was written",
+         "the " + outputWhat + " '" + output.string() + "' " + relation + " the " + in.what + " '" + in.path.string() +
+             "': an output may not be, contain or lie inside what the command reads; nothing was written",
          "choose an output outside the inputs");
   }
 }
@@ -140,8 +144,9 @@ void checkOutputDirectory(const fs::path& dir) {
   if (fs::is_empty(dir, ec) && !ec) return;
   if (carriesOutputMarker(dir)) return;
   fail("E-OUTPUT-NOT-PACKAGE", dir,
-       "output directory '" + dir.string() + "' holds files matbricks did not write (" + someEntries(dir) +
-           "; no " + kOutputMarkerName + " marker): it is replaced only when new, empty or a matbricks output; nothing was changed",
+       "output directory '" + dir.string() + "' holds files matbricks did not write (" + someEntries(dir) + "; no " +
+           kOutputMarkerName +
+           " marker): it is replaced only when new, empty or a matbricks output; nothing was changed",
        "give a new or empty directory, or remove this one yourself");
 }
 

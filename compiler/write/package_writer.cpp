@@ -165,8 +165,8 @@ void PackageWriter::commit(const fs::path& dir) const {
 bool replaceFileAtomically(const fs::path& file, const std::string& bytes) {
   static std::atomic<uint64_t> counter{0};
   std::ostringstream name;
-  name << file.filename().string() << ".tmp." << ::getpid() << "." << std::hash<std::thread::id>{}(std::this_thread::get_id())
-       << "." << counter++;
+  name << file.filename().string() << ".tmp." << ::getpid() << "."
+       << std::hash<std::thread::id>{}(std::this_thread::get_id()) << "." << counter++;
   const fs::path tmp = file.parent_path() / name.str();
   std::error_code ec;
   {

@@ -49,8 +49,8 @@ void check(VkResult r, const char* what) {
 }
 
 VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                         VkDebugUtilsMessageTypeFlagsEXT, const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                         void*) {
+                                         VkDebugUtilsMessageTypeFlagsEXT,
+                                         const VkDebugUtilsMessengerCallbackDataEXT* data, void*) {
   if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) {
     std::fprintf(stderr, "validation: %s\n", data->pMessage);
     ++gValidationMessages;
@@ -85,7 +85,8 @@ class Gpu {
       auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
           vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
       auto mci = info<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
-      mci.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+      mci.messageSeverity =
+          VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
       mci.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                         VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
       mci.pfnUserCallback = onMessage;
@@ -348,8 +349,8 @@ void checkImage(const Image& img, const std::string& name) {
     hi = std::max(hi, v);
   }
   expect(finite, name + ": every value finite and non-negative");
-  expect(hi - lo > 1e-3f, name + ": the image is not constant (range " + std::to_string(lo) + " .. " +
-                              std::to_string(hi) + ")");
+  expect(hi - lo > 1e-3f,
+         name + ": the image is not constant (range " + std::to_string(lo) + " .. " + std::to_string(hi) + ")");
 }
 
 // Reinhard-tonemapped, gamma 2.2, binary PPM.

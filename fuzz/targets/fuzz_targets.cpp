@@ -106,16 +106,21 @@ void scene(const uint8_t* data, size_t size) {
 
 // The CSV of `matbricks eval`, with the columns of a brick of n, v, l and alpha (d_ggx).
 void csv(const uint8_t* data, size_t size) {
-  expectLoadOrDiagnostics([&] { selectColumns(parseCsv(text(data, size), "fuzz.csv"),
-                                                 {"n.x", "n.y", "n.z", "v.x", "v.y", "v.z", "l.x", "l.y", "l.z", "alpha"}); });
+  expectLoadOrDiagnostics([&] {
+    selectColumns(parseCsv(text(data, size), "fuzz.csv"),
+                  {"n.x", "n.y", "n.z", "v.x", "v.y", "v.z", "l.x", "l.y", "l.z", "alpha"});
+  });
 }
 
 }  // namespace
 
 const std::vector<Target>& targets() {
   static const std::vector<Target> all = {
-      {"material_json", materialJson}, {"material_macro", materialMacro}, {"gltf", gltf},
-      {"scene", scene},                {"csv", csv},
+      {"material_json", materialJson},
+      {"material_macro", materialMacro},
+      {"gltf", gltf},
+      {"scene", scene},
+      {"csv", csv},
   };
   return all;
 }

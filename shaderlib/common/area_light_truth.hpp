@@ -34,10 +34,10 @@ inline double specularAt(const Geometry& g, double alpha, const Vec3& l) {
 // The sphere light's cap: centre g.l, sin of its angular radius sinAlpha (> 0).
 inline LobeIntegrals sphereLobe(const Geometry& g, double alpha, double sinAlpha, int phiPanels = 256) {
   LobeIntegrals out;
-  out.specular = lights::capIntegral(g, alpha, sinAlpha, [&](const Vec3& l) { return specularAt(g, alpha, l); },
-                                     phiPanels);
-  out.diffuse =
-      lights::capIntegral(g, alpha, sinAlpha, [&](const Vec3& l) { return std::max(0.0, dot(g.n, l)); }, phiPanels);
+  out.specular = lights::capIntegral(
+      g, alpha, sinAlpha, [&](const Vec3& l) { return specularAt(g, alpha, l); }, phiPanels);
+  out.diffuse = lights::capIntegral(
+      g, alpha, sinAlpha, [&](const Vec3& l) { return std::max(0.0, dot(g.n, l)); }, phiPanels);
   out.solidAngle = 2.0 * kPi * sinAlpha * sinAlpha / (1.0 + std::sqrt(1.0 - sinAlpha * sinAlpha));
   return out;
 }

@@ -65,7 +65,10 @@ inline double maxNoHOverCap(const Geometry& g, double sinAlpha) {
   const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
   for (int it = 0; it < 80; ++it) {
     double m1 = hi - ratio * (hi - lo), m2 = lo + ratio * (hi - lo);
-    if (at(m1) < at(m2)) lo = m1; else hi = m2;
+    if (at(m1) < at(m2))
+      lo = m1;
+    else
+      hi = m2;
   }
   return std::max(best, at(0.5 * (lo + hi)));
 }
@@ -134,8 +137,10 @@ inline double sphereIrradianceOverPoint(const Geometry& g, double sinAlpha, int 
     for (int i = 0; i < 8; ++i) {
       double theta = h * (p + 0.5 + 0.5 * gl.x[i]);
       double A = std::cos(theta) * NoC, B = std::sin(theta) * sinNC, phiIntegral;
-      if (A >= B) phiIntegral = 2.0 * kPi * A;
-      else if (A <= -B) phiIntegral = 0.0;
+      if (A >= B)
+        phiIntegral = 2.0 * kPi * A;
+      else if (A <= -B)
+        phiIntegral = 0.0;
       else {
         double phi0 = std::acos(-A / B);
         phiIntegral = 2.0 * (A * phi0 + B * std::sin(phi0));
@@ -214,8 +219,7 @@ double capIntegral(const Geometry& g, double alpha, double sinAlpha, F f, int ph
 // treating the Smith and Fresnel factors as constant over the cap (as every representative-
 // point method does):  D_eff = (1 / (pi sin^2 a)) Int_cap D(n.h(l)) dw,  the whole cap (the
 // horizon is the business of sphere_horizon_wrap). -> D(n.h(c)) as a -> 0.
-inline double sphereEffectiveDWith(const Geometry& g, double alpha, double sinAlpha,
-                                   int phiPanels) {
+inline double sphereEffectiveDWith(const Geometry& g, double alpha, double sinAlpha, int phiPanels) {
   if (sinAlpha <= 0.0) return ggxD(nohFor(g, g.l), alpha);
   auto D = [&](const Vec3& l) { return ggxD(std::max(0.0, nohFor(g, l)), alpha); };
   return capIntegral(g, alpha, sinAlpha, D, phiPanels) / (kPi * sinAlpha * sinAlpha);

@@ -10,9 +10,7 @@ double probeEnvironmentShape(const Vec3& r, double lod) {
   return (1.5 + 0.5 * r.x + 0.25 * r.y - 0.125 * r.z) * (1.0 + 0.125 * lod);
 }
 
-Vec3 Environment::prefilteredAt(const Vec3& r, double lod) const {
-  return prefiltered * probeEnvironmentShape(r, lod);
-}
+Vec3 Environment::prefilteredAt(const Vec3& r, double lod) const { return prefiltered * probeEnvironmentShape(r, lod); }
 
 double ModelEvalInput::floatInput(const std::string& name) const {
   auto it = inputs.find(name);
@@ -56,8 +54,7 @@ ModelRegistry& ModelRegistry::instance() {
 }
 
 bool ModelRegistry::add(const std::string& model, ModelReferenceFn fn) {
-  if (!entries_.emplace(model, fn).second)
-    throw std::logic_error("duplicate model reference '" + model + "'");
+  if (!entries_.emplace(model, fn).second) throw std::logic_error("duplicate model reference '" + model + "'");
   return true;
 }
 

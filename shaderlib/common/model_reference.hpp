@@ -96,14 +96,11 @@ struct ModelEvalInput {
   // Evaluates the reference of the brick bound to `role`.
   double scalar(const std::string& role, const Args& args) const;
   Vec3 vec3(const std::string& role, const Args& args) const;
-
 };
 
 // max(x, 0) per component: the models clamp the SH irradiance, which a truncated expansion
 // can ring below 0, as Filament's Irradiance_SphericalHarmonics does.
-inline Vec3 nonNegative(const Vec3& x) {
-  return {x.x > 0.0 ? x.x : 0.0, x.y > 0.0 ? x.y : 0.0, x.z > 0.0 ? x.z : 0.0};
-}
+inline Vec3 nonNegative(const Vec3& x) { return {x.x > 0.0 ? x.x : 0.0, x.y > 0.0 ? x.y : 0.0, x.z > 0.0 ? x.z : 0.0}; }
 
 using ModelReferenceFn = Vec3 (*)(const ModelEvalInput&);
 
@@ -119,6 +116,6 @@ class ModelRegistry {
 
 }  // namespace mb::ref
 
-#define MB_MODEL_REFERENCE(NAME, FN)                                         \
+#define MB_MODEL_REFERENCE(NAME, FN)                                            \
   [[maybe_unused]] static const bool MB_CONCAT(mb_model_reference_, __LINE__) = \
       ::mb::ref::ModelRegistry::instance().add(NAME, FN)

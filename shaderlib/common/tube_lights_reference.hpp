@@ -41,7 +41,10 @@ double scanGoldenMin(F f, double lo, double hi, int n = 1024) {
   const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
   for (int it = 0; it < 100; ++it) {
     double m1 = b - ratio * (b - a), m2 = a + ratio * (b - a);
-    if (f(m1) < f(m2)) b = m2; else a = m1;
+    if (f(m1) < f(m2))
+      b = m2;
+    else
+      a = m1;
   }
   double x = 0.5 * (a + b);
   return f(x) < best ? x : bestX;
@@ -120,7 +123,10 @@ struct CapsuleChart {
     for (int i = 0; i < 200 && sMax2(outside) >= 0.0; ++i) step *= 2.0, outside = inside + direction * step;
     for (int i = 0; i < 200; ++i) {
       double mid = 0.5 * (inside + outside);
-      if (sMax2(mid) >= 0.0) inside = mid; else outside = mid;
+      if (sMax2(mid) >= 0.0)
+        inside = mid;
+      else
+        outside = mid;
     }
     return inside;
   }
@@ -226,8 +232,8 @@ struct CapsuleQuadrature {
 // n.h <= 0; a tube entirely there has no specular to normalize, and the factor is 1.
 // Self-convergence (lobeFraction 0.02 against 0.005, i.e. panels 4x finer at the peak): see
 // tube_energy_normalization/slot.json.
-inline double tubeNormalizationTruthWith(const Geometry& g, double alpha, const Vec3& L0,
-                                         const Vec3& L1, double radius, double lobeFraction) {
+inline double tubeNormalizationTruthWith(const Geometry& g, double alpha, const Vec3& L0, const Vec3& L1, double radius,
+                                         double lobeFraction) {
   double R = std::max(radius, 1e-7 * length(L0));
   CapsuleChart ch(L0, L1, R);
   if (ch.endOn) {
@@ -237,8 +243,7 @@ inline double tubeNormalizationTruthWith(const Geometry& g, double alpha, const 
     double capSolidAngle = 2.0 * kPi * sinA * sinA / (1.0 + std::sqrt(1.0 - sinA * sinA));
     double capMaxNoH = lights::maxNoHOverCap(gc, sinA);
     if (capMaxNoH <= 0.0) return 1.0;
-    return lights::sphereEffectiveD(gc, alpha, sinA) * (kPi * sinA * sinA / capSolidAngle) /
-           ggxD(capMaxNoH, alpha);
+    return lights::sphereEffectiveD(gc, alpha, sinA) * (kPi * sinA * sinA / capSolidAngle) / ggxD(capMaxNoH, alpha);
   }
   CapsuleQuadrature q(g, alpha, ch, lobeFraction);
   const double tMin = q.tMin, tMax = q.tMax, tPeak = q.tPeak, sPeak = q.sPeak;
@@ -272,8 +277,7 @@ inline double tubeNormalizationTruthWith(const Geometry& g, double alpha, const 
   return integralD / solidAngle / ggxD(maxNoH, alpha);
 }
 
-inline double tubeNormalizationTruth(const Geometry& g, double alpha, const Vec3& L0, const Vec3& L1,
-                                     double radius) {
+inline double tubeNormalizationTruth(const Geometry& g, double alpha, const Vec3& L0, const Vec3& L1, double radius) {
   return tubeNormalizationTruthWith(g, alpha, L0, L1, radius, 0.02);
 }
 

@@ -4,9 +4,7 @@
 
 namespace mb::ref {
 
-static Vec3 dfgLutFilament(Vec3 f0, double intGvFc, double intGv) {
-  return f0 * intGv + (splat(1.0) - f0) * intGvFc;
-}
+static Vec3 dfgLutFilament(Vec3 f0, double intGvFc, double intGv) { return f0 * intGv + (splat(1.0) - f0) * intGvFc; }
 
 MB_REFERENCE("dfg_lut_filament", dfgLutFilament);
 

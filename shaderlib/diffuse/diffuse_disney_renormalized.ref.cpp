@@ -5,9 +5,7 @@
 
 namespace mb::ref {
 
-static double schlick(double f0, double f90, double u) {
-  return f0 + (f90 - f0) * std::pow(1.0 - u, 5.0);
-}
+static double schlick(double f0, double f90, double u) { return f0 + (f90 - f0) * std::pow(1.0 - u, 5.0); }
 
 static double diffuseDisneyRenormalized(Geometry g, double linearRoughness, double) {
   double energyBias = 0.0 + (0.5 - 0.0) * linearRoughness;

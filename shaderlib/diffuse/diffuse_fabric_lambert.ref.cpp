@@ -5,9 +5,7 @@
 
 namespace mb::ref {
 
-static double diffuseFabricLambert(Geometry, double, double alpha) {
-  return (1.0 - 0.5 * alpha) / kPi;
-}
+static double diffuseFabricLambert(Geometry, double, double alpha) { return (1.0 - 0.5 * alpha) / kPi; }
 
 MB_REFERENCE("diffuse_fabric_lambert", diffuseFabricLambert);
 

@@ -5,9 +5,7 @@
 
 namespace mb::ref {
 
-static Vec3 wrapNone(Geometry g, double, Vec3) {
-  return splat(std::max(0.0, dot(g.n, g.l)));
-}
+static Vec3 wrapNone(Geometry g, double, Vec3) { return splat(std::max(0.0, dot(g.n, g.l))); }
 
 MB_REFERENCE("wrap_none", wrapNone);
 

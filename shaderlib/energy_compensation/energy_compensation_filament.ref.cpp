@@ -5,9 +5,7 @@
 
 namespace mb::ref {
 
-static Vec3 energyCompensationFilament(Vec3 f0, double E) {
-  return splat(1.0) + f0 * ((1.0 - E) / E);
-}
+static Vec3 energyCompensationFilament(Vec3 f0, double E) { return splat(1.0) + f0 * ((1.0 - E) / E); }
 
 MB_REFERENCE("energy_compensation_filament", energyCompensationFilament);
 

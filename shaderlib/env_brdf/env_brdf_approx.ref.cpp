@@ -19,9 +19,7 @@ static Vec3 envBrdfApprox(Vec3 f0, double roughness, double NoV) {
   return f0 * scale + splat(bias);
 }
 
-static Vec3 envBrdfTruth(Vec3 f0, double roughness, double NoV) {
-  return envBrdfIntegral(f0, roughness, NoV);
-}
+static Vec3 envBrdfTruth(Vec3 f0, double roughness, double NoV) { return envBrdfIntegral(f0, roughness, NoV); }
 
 MB_REFERENCE("env_brdf_approx", envBrdfApprox);
 MB_GROUND_TRUTH("env_brdf_approx", envBrdfTruth);

@@ -15,9 +15,7 @@ static Vec3 envBrdfUnity(Vec3 f0, double perceptualRoughness, double NoV) {
   return mix(f0, splat(grazingTerm), fresnelTerm) * surfaceReduction;
 }
 
-static Vec3 envBrdfTruth(Vec3 f0, double roughness, double NoV) {
-  return envBrdfIntegral(f0, roughness, NoV);
-}
+static Vec3 envBrdfTruth(Vec3 f0, double roughness, double NoV) { return envBrdfIntegral(f0, roughness, NoV); }
 
 MB_REFERENCE("env_brdf_unity", envBrdfUnity);
 MB_GROUND_TRUTH("env_brdf_unity", envBrdfTruth);

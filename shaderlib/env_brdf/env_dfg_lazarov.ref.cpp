@@ -19,9 +19,7 @@ static Vec3 envDfgLazarov(Vec3 f0, double roughness, double NoV) {
   return f0 * scale + splat(bias * fade);
 }
 
-static Vec3 envBrdfTruth(Vec3 f0, double roughness, double NoV) {
-  return envBrdfIntegral(f0, roughness, NoV);
-}
+static Vec3 envBrdfTruth(Vec3 f0, double roughness, double NoV) { return envBrdfIntegral(f0, roughness, NoV); }
 
 MB_REFERENCE("env_dfg_lazarov", envDfgLazarov);
 MB_GROUND_TRUTH("env_dfg_lazarov", envBrdfTruth);

@@ -16,9 +16,7 @@ static Vec3 envDfgPolynomial(Vec3 f0, double roughness, double NoV) {
   return f0 * scale + splat(bias * clamp01(50.0 * f0.y));
 }
 
-static Vec3 envBrdfTruth(Vec3 f0, double roughness, double NoV) {
-  return envBrdfIntegral(f0, roughness, NoV);
-}
+static Vec3 envBrdfTruth(Vec3 f0, double roughness, double NoV) { return envBrdfIntegral(f0, roughness, NoV); }
 
 MB_REFERENCE("env_dfg_polynomial", envDfgPolynomial);
 MB_GROUND_TRUTH("env_dfg_polynomial", envBrdfTruth);

@@ -7,9 +7,7 @@
 namespace mb::ref {
 
 static Vec3 f0ClearcoatFit(Vec3 f0) {
-  auto cubic = [](double x) {
-    return clamp01(-0.263008 * x * x * x + 0.941892 * x * x + 0.346479 * x - 0.0285998);
-  };
+  auto cubic = [](double x) { return clamp01(-0.263008 * x * x * x + 0.941892 * x * x + 0.346479 * x - 0.0285998); };
   return {cubic(f0.x), cubic(f0.y), cubic(f0.z)};
 }
 
@@ -22,9 +20,7 @@ static double exactChannel(double f0) {
   return r * r;
 }
 
-static Vec3 f0ClearcoatExact(Vec3 f0) {
-  return {exactChannel(f0.x), exactChannel(f0.y), exactChannel(f0.z)};
-}
+static Vec3 f0ClearcoatExact(Vec3 f0) { return {exactChannel(f0.x), exactChannel(f0.y), exactChannel(f0.z)}; }
 
 MB_REFERENCE("f0_clearcoat_fit", f0ClearcoatFit);
 MB_GROUND_TRUTH("f0_clearcoat_fit", f0ClearcoatExact);

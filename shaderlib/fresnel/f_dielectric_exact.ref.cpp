@@ -5,9 +5,7 @@
 
 namespace mb::ref {
 
-static Vec3 fDielectricExact(Geometry g, Vec3 f0, double) {
-  return fresnelDielectricFromF0(g.VoH, f0);
-}
+static Vec3 fDielectricExact(Geometry g, Vec3 f0, double) { return fresnelDielectricFromF0(g.VoH, f0); }
 
 MB_REFERENCE("f_dielectric_exact", fDielectricExact);
 MB_GROUND_TRUTH("f_dielectric_exact", fDielectricExact);

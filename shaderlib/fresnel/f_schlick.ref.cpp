@@ -11,9 +11,7 @@ static Vec3 fSchlick(Geometry g, Vec3 f0, double f90) {
   return f0 + (splat(f90) - f0) * weight;
 }
 
-static Vec3 fSchlickTruth(Geometry g, Vec3 f0, double) {
-  return fresnelDielectricFromF0(g.VoH, f0);
-}
+static Vec3 fSchlickTruth(Geometry g, Vec3 f0, double) { return fresnelDielectricFromF0(g.VoH, f0); }
 
 MB_REFERENCE("f_schlick", fSchlick);
 MB_GROUND_TRUTH("f_schlick", fSchlickTruth);

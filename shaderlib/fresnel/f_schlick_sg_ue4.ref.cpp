@@ -11,9 +11,7 @@ static Vec3 fSchlickSgUe4(Geometry g, Vec3 f0, double f90) {
   return f0 + (splat(f90) - f0) * weight;
 }
 
-static Vec3 fSchlickSgUe4Truth(Geometry g, Vec3 f0, double) {
-  return fresnelDielectricFromF0(g.VoH, f0);
-}
+static Vec3 fSchlickSgUe4Truth(Geometry g, Vec3 f0, double) { return fresnelDielectricFromF0(g.VoH, f0); }
 
 MB_REFERENCE("f_schlick_sg_ue4", fSchlickSgUe4);
 MB_GROUND_TRUTH("f_schlick_sg_ue4", fSchlickSgUe4Truth);

@@ -5,9 +5,7 @@
 
 namespace mb::ref {
 
-static double mipLinear(double perceptualRoughness, double, double maxMip) {
-  return perceptualRoughness * maxMip;
-}
+static double mipLinear(double perceptualRoughness, double, double maxMip) { return perceptualRoughness * maxMip; }
 
 static double footprint(double perceptualRoughness, double NoR, double maxMip) {
   return coneFootprintMip(perceptualRoughness, NoR, maxMip);

@@ -25,8 +25,8 @@ Pixel prepare(const ModelEvalInput& in) {
   return px;
 }
 
-Vec3 light(const ModelEvalInput& in, const Pixel& px, const Vec3& l, const Vec3& lD, double dScale,
-           double diffuseCos, double specularCos) {
+Vec3 light(const ModelEvalInput& in, const Pixel& px, const Vec3& l, const Vec3& lD, double dScale, double diffuseCos,
+           double specularCos) {
   const Vec3 n = in.frame.n, v = in.frame.v;
   double D, V;
   if (in.has("anisotropy")) {

@@ -69,8 +69,7 @@ Vec3 clearCoatEnvironment(const ModelEvalInput& in, const ClearCoatPixel& cc, co
   double NoV = makeGeometry(nc, v, r).NoV;  // max(nc.v, kMinNoV) = nc.r
   double lod = in.scalar("mip_mapping", Args() << cc.perceptualRoughness << NoV << env.maxMip);
   double ao = env.ao * in.floatInput("ambientOcclusion");
-  double occlusion =
-      in.scalar("specular_occlusion", Args().geometry(nc, v, r) << nc << ao << cc.perceptualRoughness);
+  double occlusion = in.scalar("specular_occlusion", Args().geometry(nc, v, r) << nc << ao << cc.perceptualRoughness);
   return env.prefilteredAt(r, lod) * (Fc * occlusion);
 }
 

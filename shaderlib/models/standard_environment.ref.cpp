@@ -27,9 +27,7 @@ void environmentPrepare(const ModelEvalInput& in, Pixel& px) {
     px.dfg = env.dfg;  // the texel the probe fetched at (n.v, perceptual roughness)
   } else {
     // E(f0) = f0 A + B for an affine env BRDF: E(0) = B = Int Gv Fc, E(1) = A + B = Int Gv.
-    auto at = [&](double f0) {
-      return in.vec3("env_brdf", Args() << splat(f0) << px.perceptualRoughness << px.NoV).x;
-    };
+    auto at = [&](double f0) { return in.vec3("env_brdf", Args() << splat(f0) << px.perceptualRoughness << px.NoV).x; };
     px.dfg = {at(0.0), at(1.0), 0.0};
   }
   px.energyCompensation = in.vec3("energy_compensation", Args() << px.f0 << px.dfg.y);

@@ -90,8 +90,8 @@ Vec3 shadeSphere(const ModelEvalInput& in, const Pixel& px, const SphereLight& s
   SphereView s = sphereView(in, sphere.toCenter, sphere.radius, sphere.intensity, sphere.falloffRadius);
   // Karis's representative point, from the sphere_light_point role (a tube_light_point brick
   // with a zero-length segment); the centre direction where it has none.
-  Vec3 lD = in.vec3("sphere_light_point",
-                    Args().geometry(n, v, s.l) << sphere.toCenter << sphere.toCenter << sphere.radius);
+  Vec3 lD =
+      in.vec3("sphere_light_point", Args().geometry(n, v, s.l) << sphere.toCenter << sphere.toCenter << sphere.radius);
   if (!(dot(lD, lD) > 0.5)) lD = s.l;
   double energy = facing(makeGeometry(n, v, lD).NoH)
                       ? in.scalar("sphere_energy_normalization", Args().geometry(n, v, s.l) << px.alpha << s.sinAlpha)
@@ -108,9 +108,10 @@ Vec3 shadeTube(const ModelEvalInput& in, const Pixel& px, const TubeLight& tube)
   // The brick's direction is undefined (NaN) when its point is the shading point itself (a
   // segment through it): the equivalent direction stands in.
   if (!(dot(lD, lD) > 0.5)) lD = s.l;
-  double energy = facing(makeGeometry(n, v, lD).NoH) ? in.scalar("tube_energy_normalization",
-                                                Args().geometry(n, v, lD) << px.alpha << L0 << L1 << tube.radius)
-                                   : 0.0;
+  double energy =
+      facing(makeGeometry(n, v, lD).NoH)
+          ? in.scalar("tube_energy_normalization", Args().geometry(n, v, lD) << px.alpha << L0 << L1 << tube.radius)
+          : 0.0;
   return light(in, px, s.l, lD, energy, s.cosine, s.cosine) * s.illuminance;
 }
 

@@ -38,8 +38,8 @@ Pixel prepare(const ModelEvalInput& in);
 // Radiance per unit illuminance for the light direction l (unit, towards the light):
 // diffuse, V and F at l; D at lD (an area light's representative direction; l for punctual
 // lights) times dScale; diffuseCos and specularCos the cosine factors.
-Vec3 light(const ModelEvalInput& in, const Pixel& px, const Vec3& l, const Vec3& lD, double dScale,
-           double diffuseCos, double specularCos);
+Vec3 light(const ModelEvalInput& in, const Pixel& px, const Vec3& l, const Vec3& lD, double dScale, double diffuseCos,
+           double specularCos);
 
 // standard_lights.ref.cpp
 Vec3 shadePoint(const ModelEvalInput& in, const Pixel& px, const PointLight& light);
@@ -61,8 +61,8 @@ Vec3 clearCoatEnvironment(const ModelEvalInput& in, const ClearCoatPixel& cc, co
 
 // standard_anisotropy.ref.cpp
 AnisotropyPixel anisotropyPrepare(const ModelEvalInput& in, double alpha);
-void anisotropyDV(const ModelEvalInput& in, const AnisotropyPixel& a, const Vec3& l, const Vec3& lD,
-                  double& D, double& V);
+void anisotropyDV(const ModelEvalInput& in, const AnisotropyPixel& a, const Vec3& l, const Vec3& lD, double& D,
+                  double& V);
 Vec3 anisotropyIblNormal(const ModelEvalInput& in, const AnisotropyPixel& a, double perceptualRoughness);
 
 // standard_sheen.ref.cpp

@@ -53,7 +53,8 @@ Vec3 sheenEnvironment(const ModelEvalInput& in, const SheenPixel& s, const Envir
   double NoV = makeGeometry(f.n, f.v, r).NoV;
   double lod = in.scalar("mip_mapping", Args() << s.perceptualRoughness << NoV << env.maxMip);
   double ao = env.ao * in.floatInput("ambientOcclusion");
-  double occlusion = in.scalar("specular_occlusion", Args().geometry(f.n, f.v, r) << f.ng << ao << s.perceptualRoughness);
+  double occlusion =
+      in.scalar("specular_occlusion", Args().geometry(f.n, f.v, r) << f.ng << ao << s.perceptualRoughness);
   // The albedo of sheenPrepare: at the pixel's n.v (the same value as g.NoV up to rounding).
   double albedo = sheenAlbedo(in, std::max(dot(f.n, f.v), kMinNoV), s.perceptualRoughness);
   return env.prefilteredAt(r, lod) * s.color * (albedo * occlusion);

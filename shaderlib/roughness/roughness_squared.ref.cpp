@@ -3,9 +3,7 @@
 
 namespace mb::ref {
 
-static double roughnessSquared(double perceptualRoughness) {
-  return std::pow(perceptualRoughness, 2.0);
-}
+static double roughnessSquared(double perceptualRoughness) { return std::pow(perceptualRoughness, 2.0); }
 
 MB_REFERENCE("roughness_squared", roughnessSquared);
 

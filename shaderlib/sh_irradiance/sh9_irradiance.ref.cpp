@@ -5,8 +5,8 @@
 
 namespace mb::ref {
 
-static Vec3 sh9Irradiance(Vec3 nIn, Vec3 L00, Vec3 L1m1, Vec3 L10, Vec3 L11, Vec3 L2m2,
-                          Vec3 L2m1, Vec3 L20, Vec3 L21, Vec3 L22) {
+static Vec3 sh9Irradiance(Vec3 nIn, Vec3 L00, Vec3 L1m1, Vec3 L10, Vec3 L11, Vec3 L2m2, Vec3 L2m1, Vec3 L20, Vec3 L21,
+                          Vec3 L22) {
   Vec3 n = normalize(nIn);
   double x = n.x, y = n.y, z = n.z;
   const double y00 = 0.5 * std::sqrt(1.0 / kPi);
@@ -17,8 +17,9 @@ static Vec3 sh9Irradiance(Vec3 nIn, Vec3 L00, Vec3 L1m1, Vec3 L10, Vec3 L11, Vec
   const double A0 = kPi, A1 = 2.0 * kPi / 3.0, A2 = kPi / 4.0;
   Vec3 band0 = L00 * (y00 * A0);
   Vec3 band1 = (L1m1 * (y1 * y) + L10 * (y1 * z) + L11 * (y1 * x)) * A1;
-  Vec3 band2 = (L2m2 * (y2a * x * y) + L2m1 * (y2a * y * z) + L20 * (y20 * (3.0 * z * z - 1.0)) +
-                L21 * (y2a * x * z) + L22 * (y22 * (x * x - y * y))) * A2;
+  Vec3 band2 = (L2m2 * (y2a * x * y) + L2m1 * (y2a * y * z) + L20 * (y20 * (3.0 * z * z - 1.0)) + L21 * (y2a * x * z) +
+                L22 * (y22 * (x * x - y * y))) *
+               A2;
   return band0 + band1 + band2;
 }
 

@@ -4,8 +4,7 @@
 
 namespace mb::ref {
 
-static Vec3 shL1Irradiance(Vec3 nIn, Vec3 L00, Vec3 L1m1, Vec3 L10, Vec3 L11, Vec3, Vec3, Vec3,
-                           Vec3, Vec3) {
+static Vec3 shL1Irradiance(Vec3 nIn, Vec3 L00, Vec3 L1m1, Vec3 L10, Vec3 L11, Vec3, Vec3, Vec3, Vec3, Vec3) {
   Vec3 n = normalize(nIn);
   const double y00 = 0.5 * std::sqrt(1.0 / kPi), y1 = std::sqrt(3.0 / (4.0 * kPi));
   return L00 * (kPi * y00) + (L1m1 * n.y + L10 * n.z + L11 * n.x) * (2.0 * kPi / 3.0 * y1);

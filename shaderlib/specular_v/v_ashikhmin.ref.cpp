@@ -3,9 +3,7 @@
 
 namespace mb::ref {
 
-static double vAshikhmin(Geometry g, double) {
-  return 1.0 / (4.0 * (g.NoL + g.NoV - g.NoL * g.NoV));
-}
+static double vAshikhmin(Geometry g, double) { return 1.0 / (4.0 * (g.NoL + g.NoV - g.NoL * g.NoV)); }
 
 MB_REFERENCE("v_ashikhmin", vAshikhmin);
 

@@ -14,9 +14,7 @@ static double vCookTorrance(Geometry g, double) {
   return G / (4.0 * g.NoL * g.NoV);
 }
 
-static double exactCorrelated(Geometry g, double alpha) {
-  return smithGgxCorrelatedV(g.NoV, g.NoL, alpha);
-}
+static double exactCorrelated(Geometry g, double alpha) { return smithGgxCorrelatedV(g.NoV, g.NoL, alpha); }
 
 MB_REFERENCE("v_cook_torrance", vCookTorrance);
 MB_GROUND_TRUTH("v_cook_torrance", exactCorrelated);

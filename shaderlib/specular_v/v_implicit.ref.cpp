@@ -6,9 +6,7 @@ namespace mb::ref {
 
 static double vImplicit(Geometry, double) { return 0.25; }
 
-static double exactCorrelated(Geometry g, double alpha) {
-  return smithGgxCorrelatedV(g.NoV, g.NoL, alpha);
-}
+static double exactCorrelated(Geometry g, double alpha) { return smithGgxCorrelatedV(g.NoV, g.NoL, alpha); }
 
 MB_REFERENCE("v_implicit", vImplicit);
 MB_GROUND_TRUTH("v_implicit", exactCorrelated);

@@ -7,9 +7,7 @@ namespace mb::ref {
 
 static double vKelemen(Geometry g, double) { return 1.0 / (4.0 * g.LoH * g.LoH); }
 
-static double exactCorrelated(Geometry g, double alpha) {
-  return smithGgxCorrelatedV(g.NoV, g.NoL, alpha);
-}
+static double exactCorrelated(Geometry g, double alpha) { return smithGgxCorrelatedV(g.NoV, g.NoL, alpha); }
 
 MB_REFERENCE("v_kelemen", vKelemen);
 MB_GROUND_TRUTH("v_kelemen", exactCorrelated);

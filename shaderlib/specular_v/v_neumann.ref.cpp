@@ -12,9 +12,7 @@ static double vNeumann(Geometry g, double) {
   return G / (4.0 * g.NoL * g.NoV);
 }
 
-static double exactCorrelated(Geometry g, double alpha) {
-  return smithGgxCorrelatedV(g.NoV, g.NoL, alpha);
-}
+static double exactCorrelated(Geometry g, double alpha) { return smithGgxCorrelatedV(g.NoV, g.NoL, alpha); }
 
 MB_REFERENCE("v_neumann", vNeumann);
 MB_GROUND_TRUTH("v_neumann", exactCorrelated);

@@ -14,9 +14,7 @@ static double vSchlickGgxIbl(Geometry g, double alpha) {
   return g1Schlick(g.NoL, k) * g1v / (4.0 * g.NoL * g.NoV);
 }
 
-static double exactCorrelated(Geometry g, double alpha) {
-  return smithGgxCorrelatedV(g.NoV, g.NoL, alpha);
-}
+static double exactCorrelated(Geometry g, double alpha) { return smithGgxCorrelatedV(g.NoV, g.NoL, alpha); }
 
 MB_REFERENCE("v_schlick_ggx_ibl", vSchlickGgxIbl);
 MB_GROUND_TRUTH("v_schlick_ggx_ibl", exactCorrelated);

@@ -17,9 +17,7 @@ static double vSchlickGgxUe4(Geometry g, double alpha) {
   return G / (4.0 * g.NoL * g.NoV);
 }
 
-static double vSchlickGgxUe4Truth(Geometry g, double alpha) {
-  return smithGgxCorrelatedV(g.NoV, g.NoL, alpha);
-}
+static double vSchlickGgxUe4Truth(Geometry g, double alpha) { return smithGgxCorrelatedV(g.NoV, g.NoL, alpha); }
 
 MB_REFERENCE("v_schlick_ggx_ue4", vSchlickGgxUe4);
 MB_GROUND_TRUTH("v_schlick_ggx_ue4", vSchlickGgxUe4Truth);

@@ -6,9 +6,7 @@
 
 namespace mb::ref {
 
-static double vSmithGgxCorrelated(Geometry g, double alpha) {
-  return smithGgxCorrelatedV(g.NoV, g.NoL, alpha);
-}
+static double vSmithGgxCorrelated(Geometry g, double alpha) { return smithGgxCorrelatedV(g.NoV, g.NoL, alpha); }
 
 MB_REFERENCE("v_smith_ggx_correlated", vSmithGgxCorrelated);
 MB_GROUND_TRUTH("v_smith_ggx_correlated", vSmithGgxCorrelated);

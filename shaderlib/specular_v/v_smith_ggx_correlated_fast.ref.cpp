@@ -10,9 +10,7 @@ static double vSmithGgxCorrelatedFast(Geometry g, double alpha) {
   return 1.0 / (2.0 * blended);
 }
 
-static double exactCorrelated(Geometry g, double alpha) {
-  return smithGgxCorrelatedV(g.NoV, g.NoL, alpha);
-}
+static double exactCorrelated(Geometry g, double alpha) { return smithGgxCorrelatedV(g.NoV, g.NoL, alpha); }
 
 MB_REFERENCE("v_smith_ggx_correlated_fast", vSmithGgxCorrelatedFast);
 MB_GROUND_TRUTH("v_smith_ggx_correlated_fast", exactCorrelated);

@@ -6,9 +6,7 @@
 
 namespace mb::ref {
 
-static double g1(double cosTheta, double alpha) {
-  return 1.0 / (1.0 + smithGgxLambda(cosTheta, alpha));
-}
+static double g1(double cosTheta, double alpha) { return 1.0 / (1.0 + smithGgxLambda(cosTheta, alpha)); }
 
 static double vSmithGgxSeparable(Geometry g, double alpha) {
   double g1v = g1(g.NoV, alpha);
@@ -16,9 +14,7 @@ static double vSmithGgxSeparable(Geometry g, double alpha) {
   return g1v * g1(g.NoL, alpha) / (4.0 * g.NoL * g.NoV);
 }
 
-static double exactCorrelated(Geometry g, double alpha) {
-  return smithGgxCorrelatedV(g.NoV, g.NoL, alpha);
-}
+static double exactCorrelated(Geometry g, double alpha) { return smithGgxCorrelatedV(g.NoV, g.NoL, alpha); }
 
 MB_REFERENCE("v_smith_ggx_separable", vSmithGgxSeparable);
 MB_GROUND_TRUTH("v_smith_ggx_separable", exactCorrelated);

@@ -5,13 +5,9 @@
 
 namespace mb::ref {
 
-static double horizonWrapAccurate(Geometry g, double sinAlpha) {
-  return lights::sphereHorizonCosAccurate(g, sinAlpha);
-}
+static double horizonWrapAccurate(Geometry g, double sinAlpha) { return lights::sphereHorizonCosAccurate(g, sinAlpha); }
 
-static double horizonWrapTruth(Geometry g, double sinAlpha) {
-  return lights::sphereIrradianceOverPoint(g, sinAlpha);
-}
+static double horizonWrapTruth(Geometry g, double sinAlpha) { return lights::sphereIrradianceOverPoint(g, sinAlpha); }
 
 MB_REFERENCE("horizon_wrap_accurate", horizonWrapAccurate);
 MB_GROUND_TRUTH("horizon_wrap_accurate", horizonWrapTruth);

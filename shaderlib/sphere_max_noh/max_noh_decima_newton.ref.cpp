@@ -22,8 +22,7 @@ static double maxNoHDecimaNewton(Geometry g, double sinAlpha) {
   double p = NoBr * VoLVTr, q = NoLVTr * VoLVTr, s = VoBr * NoLVTr;
   double xNum = q * (-0.5 * p + 0.25 * VoBr * NoLVTr);
   double xDenom = p * p + s * (s - 2.0 * p) +
-                  NoLVTr * ((NoL * cosAlpha + NoV) * VoLVTr * VoLVTr +
-                            q * (-0.5 * (VoLVTr + VoL * cosAlpha) - 0.5));
+                  NoLVTr * ((NoL * cosAlpha + NoV) * VoLVTr * VoLVTr + q * (-0.5 * (VoLVTr + VoL * cosAlpha) - 0.5));
   double twoX1 = 2.0 * xNum / (xDenom * xDenom + xNum * xNum);
   double sinTheta = twoX1 * xDenom, cosTheta = 1.0 - twoX1 * xNum;
   return lights::decimaNoH(d, cosTheta * d.NoTr + sinTheta * NoBr, cosTheta * d.VoTr + sinTheta * VoBr);

@@ -16,7 +16,8 @@ static double rrtOdtFit(double v) {
 
 static Vec3 tonemapAcesHill(Vec3 color) {
   // sRGB => XYZ => D65_2_D60 => AP1 => RRT_SAT
-  static const double in[3][3] = {{0.59719, 0.35458, 0.04823}, {0.07600, 0.90834, 0.01566}, {0.02840, 0.13383, 0.83777}};
+  static const double in[3][3] = {
+      {0.59719, 0.35458, 0.04823}, {0.07600, 0.90834, 0.01566}, {0.02840, 0.13383, 0.83777}};
   // ODT_SAT => XYZ => D60_2_D65 => sRGB
   static const double out[3][3] = {
       {1.60475, -0.53108, -0.07367}, {-0.10208, 1.10813, -0.00605}, {-0.00327, -0.07276, 1.07602}};

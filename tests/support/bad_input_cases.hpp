@@ -21,25 +21,25 @@
 namespace mb::test {
 
 struct BadInputCase {
-  std::string input;          // relative to the corpus directory
-  std::string what;           // one line for the table
+  std::string input;  // relative to the corpus directory
+  std::string what;   // one line for the table
   std::string command = "compile";
-  std::string extra;          // more arguments after the input; {corpus} = the corpus directory
-  std::string env;            // extra "VAR=value ..." assignments
+  std::string extra;  // more arguments after the input; {corpus} = the corpus directory
+  std::string env;    // extra "VAR=value ..." assignments
   int exit = 3;
   std::vector<std::string> codes;  // error codes in printed order
-  bool positions = true;      // every error has line >= 1 and column >= 1 inside its file
-  bool absent = false;        // the input deliberately does not exist
-  std::string outputStarts;   // for failures that are not input errors (no device): stderr's start
-  std::string suggests;       // some diagnostic's suggestion (json mode) contains this
-  std::string knownFailure;   // non-empty: the expectation describes a fix not made yet
+  bool positions = true;           // every error has line >= 1 and column >= 1 inside its file
+  bool absent = false;             // the input deliberately does not exist
+  std::string outputStarts;        // for failures that are not input errors (no device): stderr's start
+  std::string suggests;            // some diagnostic's suggestion (json mode) contains this
+  std::string knownFailure;        // non-empty: the expectation describes a fix not made yet
   // Output cases (docs/cli.md "Outputs"): `workdir` is a corpus directory copied to a scratch
   // WORK directory, where the command runs (input and arguments relative to it); every file
   // of the copy must keep its bytes and nothing may be added. `output` replaces compile's
   // automatic "-o OUT/pkg" ("" keeps it; "none": no -o at all).
   std::string workdir;
   std::string output;
-  bool libraryCopy = false;   // WORK/lib: a copy of the shipped shader library
+  bool libraryCopy = false;  // WORK/lib: a copy of the shipped shader library
 };
 
 // One printed diagnostic line, "file:line:column: error[CODE]: message" (line and column 0
@@ -50,9 +50,9 @@ struct PrintedDiagnostic {
 };
 
 struct CaseRun {
-  int exitCode = -1;          // 124: timed out; >= 128: killed by a signal
-  std::string out, err;       // stdout, stderr, with scratch paths shown as OUT
-  std::vector<std::string> leftovers;  // entries left in the output's parent directory
+  int exitCode = -1;                     // 124: timed out; >= 128: killed by a signal
+  std::string out, err;                  // stdout, stderr, with scratch paths shown as OUT
+  std::vector<std::string> leftovers;    // entries left in the output's parent directory
   std::vector<std::string> workChanges;  // WORK entries added, removed or changed
 };
 
@@ -94,7 +94,7 @@ inline std::string commandArgs(const BadInputCase& c, const std::string& out, bo
   std::string args = json ? "--diagnostics-format json " : "";
   // In a WORK case the input is relative to WORK; the WORK directory itself stands for a
   // command that takes no input file (lut, bricks, energy).
-  const std::string input = c.workdir.empty()     ? corpusRelative() + "/" + c.input
+  const std::string input = c.workdir.empty()      ? corpusRelative() + "/" + c.input
                             : c.input == c.workdir ? ""
                                                    : c.input.substr(c.workdir.size() + 1);
   args += c.command + (input.empty() ? "" : " " + input);
@@ -104,8 +104,10 @@ inline std::string commandArgs(const BadInputCase& c, const std::string& out, bo
     args += " " + extra;
   }
   if (c.output == "none") return args;
-  if (!c.output.empty()) args += " -o " + c.output;
-  else if (c.command == "compile") args += " -o " + out + "/pkg";
+  if (!c.output.empty())
+    args += " -o " + c.output;
+  else if (c.command == "compile")
+    args += " -o " + out + "/pkg";
   return args;
 }
 
@@ -120,9 +122,12 @@ inline std::map<std::string, std::string> treeBytes(const std::filesystem::path&
   if (!std::filesystem::exists(dir)) return files;
   for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
     const std::string rel = std::filesystem::relative(e.path(), dir).string();
-    if (e.is_symlink()) files[rel] = "-> " + std::filesystem::read_symlink(e.path()).string();
-    else if (e.is_directory()) files[rel + "/"] = "";
-    else files[rel] = readFile(e.path());
+    if (e.is_symlink())
+      files[rel] = "-> " + std::filesystem::read_symlink(e.path()).string();
+    else if (e.is_directory())
+      files[rel + "/"] = "";
+    else
+      files[rel] = readFile(e.path());
   }
   return files;
 }
@@ -144,7 +149,8 @@ inline std::vector<std::string> lines(const std::string& text) {
 inline CaseRun runCase(const BadInputCase& c, bool json = false) {
   namespace fs = std::filesystem;
   static int serial = 0;
-  fs::path scratch = fs::temp_directory_path() / ("mb_bad_inputs_" + std::to_string(::getpid()) + "_" + std::to_string(serial++));
+  fs::path scratch =
+      fs::temp_directory_path() / ("mb_bad_inputs_" + std::to_string(::getpid()) + "_" + std::to_string(serial++));
   fs::path out = scratch / "out", capture = scratch / "capture", work = scratch / "work";
   fs::remove_all(scratch);
   fs::create_directories(out);
@@ -157,8 +163,8 @@ inline CaseRun runCase(const BadInputCase& c, bool json = false) {
   }
   const char* cli = std::getenv("MATBRICKS_CLI");
   std::string cmd = "cd '" + (c.workdir.empty() ? sourceDir() : work).string() + "' && env " + c.env + " timeout 60 " +
-                    std::string(cli ? cli : "matbricks") + " " + commandArgs(c, out.string(), json) +
-                    " >'" + (capture / "stdout").string() + "' 2>'" + (capture / "stderr").string() + "'";
+                    std::string(cli ? cli : "matbricks") + " " + commandArgs(c, out.string(), json) + " >'" +
+                    (capture / "stdout").string() + "' 2>'" + (capture / "stderr").string() + "'";
   int status = std::system(cmd.c_str());
   CaseRun r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
@@ -175,8 +181,10 @@ inline CaseRun runCase(const BadInputCase& c, bool json = false) {
     const auto workAfter = treeBytes(work);
     for (const auto& [path, bytes] : workBefore) {
       auto it = workAfter.find(path);
-      if (it == workAfter.end()) r.workChanges.push_back("removed WORK/" + path);
-      else if (it->second != bytes) r.workChanges.push_back("changed WORK/" + path);
+      if (it == workAfter.end())
+        r.workChanges.push_back("removed WORK/" + path);
+      else if (it->second != bytes)
+        r.workChanges.push_back("changed WORK/" + path);
     }
     for (const auto& [path, bytes] : workAfter)
       if (!workBefore.count(path)) r.workChanges.push_back("added WORK/" + path);
@@ -282,7 +290,8 @@ inline Judgement judgeTextRun(const BadInputCase& c, const CaseRun& r) {
     if (!std::filesystem::is_regular_file(file)) {
       problem("reported file does not exist: " + d.file);
     } else if (static_cast<size_t>(d.line) > std::max<size_t>(1, lineCount(file))) {
-      problem(d.file + " has " + std::to_string(lineCount(file)) + " line(s), the error is at line " + std::to_string(d.line));
+      problem(d.file + " has " + std::to_string(lineCount(file)) + " line(s), the error is at line " +
+              std::to_string(d.line));
     }
   }
   if (codes != c.codes) {
@@ -301,7 +310,8 @@ inline std::vector<std::string> judgeJsonRun(const BadInputCase& c, const CaseRu
   try {
     arr = nlohmann::json::parse(json.err);
   } catch (const nlohmann::json::exception& e) {
-    return {"--diagnostics-format json: stderr is not JSON (" + std::string(e.what()) + "): " + json.err.substr(0, 200)};
+    return {"--diagnostics-format json: stderr is not JSON (" + std::string(e.what()) +
+            "): " + json.err.substr(0, 200)};
   }
   if (!arr.is_array()) return {"--diagnostics-format json: not an array"};
   std::vector<PrintedDiagnostic> printed;
@@ -310,7 +320,8 @@ inline std::vector<std::string> judgeJsonRun(const BadInputCase& c, const CaseRu
     if (parseDiagnosticLine(line, d)) printed.push_back(d);
   }
   if (arr.size() != printed.size()) {
-    problems.push_back("json has " + std::to_string(arr.size()) + " diagnostics, text has " + std::to_string(printed.size()));
+    problems.push_back("json has " + std::to_string(arr.size()) + " diagnostics, text has " +
+                       std::to_string(printed.size()));
     return problems;
   }
   for (size_t i = 0; i < arr.size(); ++i) {
@@ -320,7 +331,8 @@ inline std::vector<std::string> judgeJsonRun(const BadInputCase& c, const CaseRu
       shaped = shaped && o.contains(key) && o[key].is_string();
     for (const char* key : {"line", "column"}) shaped = shaped && o.contains(key) && o[key].is_number_integer();
     if (!shaped) {
-      problems.push_back("json diagnostic " + std::to_string(i) + " is not {code, severity, file, line, column, message, suggestion}: " + o.dump());
+      problems.push_back("json diagnostic " + std::to_string(i) +
+                         " is not {code, severity, file, line, column, message, suggestion}: " + o.dump());
       continue;
     }
     const auto& p = printed[i];

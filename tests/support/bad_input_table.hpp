@@ -45,7 +45,9 @@ inline std::string badInputsMarkdown(const std::vector<BadInputCase>& cases, con
   for (const auto& c : cases) known += c.knownFailure.empty() ? 0 : 1;
   std::string md =
       "# Bad inputs and the messages they get\n\n"
-      "<!-- Generated: do not edit. Regenerate with `" + std::string(kBadInputsDocCommand) + "`;\n"
+      "<!-- Generated: do not edit. Regenerate with `" +
+      std::string(kBadInputsDocCommand) +
+      "`;\n"
       "     tests/test_bad_inputs.cpp fails when this file is stale. -->\n\n"
       "Every case of the bad-input corpus ([tests/data/bad_inputs/](../tests/data/bad_inputs/), listed\n"
       "in its `cases.json`) run through the CLI from the repository root, with the exit code and the\n"

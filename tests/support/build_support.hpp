@@ -16,10 +16,12 @@ namespace mb::test {
 inline std::filesystem::path rootOf(const ScratchDir& dir) { return std::filesystem::path(dir.path("")).parent_path(); }
 
 // Materials loaded once and kept alive (permutations point at them).
-inline const std::vector<MaterialDesc>& loadedMaterials(const ShaderLibrary& lib, const std::vector<std::string>& names) {
+inline const std::vector<MaterialDesc>& loadedMaterials(const ShaderLibrary& lib,
+                                                        const std::vector<std::string>& names) {
   static std::vector<std::unique_ptr<std::vector<MaterialDesc>>> keep;
   auto owned = std::make_unique<std::vector<MaterialDesc>>();
-  for (const auto& n : names) owned->push_back(loadMaterialJson((sourceDir() / "materials" / (n + ".json")).string(), lib));
+  for (const auto& n : names)
+    owned->push_back(loadMaterialJson((sourceDir() / "materials" / (n + ".json")).string(), lib));
   keep.push_back(std::move(owned));
   return *keep.back();
 }
