@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs every build and run-time dependency of matbricks from Debian 12's
 # registry. Safe to run twice: only packages that are missing are installed.
-# clang and libclang-rt-14-dev: the sanitizer pass and the libFuzzer targets (docs/fuzzing.md).
+# clang and libclang-rt-14-dev: the sanitizer pass and the libFuzzer targets (docs/fuzzing.md);
+# clang-format: the house style (.clang-format), checked by the CTest test `format`.
 set -euo pipefail
 
 PACKAGES=(
@@ -10,7 +11,7 @@ PACKAGES=(
   libspirv-cross-c-shared-dev spirv-cross
   libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers vulkan-tools
   nlohmann-json3-dev catch2 libcli11-dev libxxhash-dev
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev clang-format
 )
 
 missing=()

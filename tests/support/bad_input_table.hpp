@@ -65,7 +65,8 @@ inline std::string badInputsMarkdown(const std::vector<BadInputCase>& cases, con
       "suggestion}`, and where the case names one, that a did-you-mean suggestion is given.\n"
       "`tests/test_fuzz_inputs.cpp` (`[fuzz]`) adds seeded mutations of every shipped material and scene (scenes are loaded and planned).\n\n" +
       std::to_string(cases.size()) + " cases; " + std::to_string(known) +
-      " are **known failures**: the CLI does not yet do what the case expects (the note says what\n"
+      (known == 1 ? " is a **known failure**" : " are **known failures**") +
+      ": the CLI does not yet do what the case expects (the note says what\n"
       "is wrong; the test warns while the failure lasts and fails once it is fixed, so the mark is\n"
       "removed).\n\n"
       "| case | what | command | exit | message(s) |\n"
