@@ -253,3 +253,10 @@ TEST_CASE("a compile killed at any moment leaves the old package or the new one,
   CHECK(temporariesIn(pkg.parent_path()).empty());
   fs::remove_all(root);
 }
+
+TEST_CASE("the committed bench results carry the output marker, so their documented command can replace them",
+          "[outputs]") {
+  // bench/README.md regenerates bench/results/bench with `matbricks bench -o bench/results/bench`;
+  // without the marker that command refuses the directory (E-OUTPUT-NOT-PACKAGE).
+  CHECK(carriesOutputMarker(test::sourceDir() / "bench" / "results" / "bench"));
+}
