@@ -40,8 +40,10 @@ source ./scripts/sanitizer-env.sh
 
 # The shipped files that seed a target (fuzz/seeds.txt).
 seeds() {
-  local glob
-  for glob in $(awk -v t="$1" '$1 == t { print $2 }' fuzz/seeds.txt); do ls $glob; done
+  local glob f
+  for glob in $(awk -v t="$1" '$1 == t { print $2 }' fuzz/seeds.txt); do
+    for f in $glob; do [ -f "$f" ] && echo "$f"; done  # a directory named .json is a corpus case
+  done
 }
 
 RESULTS=$(mktemp)
