@@ -12,20 +12,6 @@
 namespace mb {
 namespace {
 
-const char* glslType(ValueType t) {
-  switch (t) {
-    case ValueType::Float:
-      return "float";
-    case ValueType::Vec2:
-      return "vec2";
-    case ValueType::Vec3:
-      return "vec3";
-    case ValueType::Geometry:
-      return "Geometry";
-  }
-  return "float";
-}
-
 // Generated code is written in fp32 GLSL and rewritten like the library sources at fp16.
 std::string atPrecision(const std::string& glsl, ShaderPrecision p) {
   return p == ShaderPrecision::Fp16 ? rewriteToFp16(glsl) : glsl;
@@ -131,7 +117,7 @@ void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::vector<std:
     // std140 (GLSL 4.50 spec 7.6.2.2): the C++ header's struct mirrors it, checked against
     // the SPIRV-Cross reflection of the compiled module (docs/package.md).
     w.line("layout(std140, set = 0, binding = 2) uniform MaterialParamsBlock {");
-    for (const auto& prm : params) w.line("    " + fp32 + glslType(prm.type) + " " + prm.name + ";");
+    for (const auto& prm : params) w.line("    " + fp32 + toString(prm.type) + " " + prm.name + ";");
     w.line("} mbParams;");
   }
   for (const auto& g : globals) w.line(atPrecision(g, p));
@@ -140,12 +126,12 @@ void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::vector<std:
   w.line("    if (i >= mbPush.count) return;");
   w.line("    uint b = i * " + std::to_string(layout.inStride) + "u;");
   for (const auto& in : layout.inputs) {
-    std::string type = atPrecision(glslType(in.type), p);
+    std::string type = atPrecision(toString(in.type), p);
     std::string value = p == ShaderPrecision::Fp16 ? type + "(" + readInput(in) + ")" : readInput(in);
     w.line("    " + type + " p_" + in.name + " = " + value + ";");
   }
   for (const auto& prm : params) {
-    std::string type = atPrecision(glslType(prm.type), p);
+    std::string type = atPrecision(toString(prm.type), p);
     std::string value = "mbParams." + prm.name;
     w.line("    " + type + " p_" + prm.name + " = " + (p == ShaderPrecision::Fp16 ? type + "(" + value + ")" : value) +
            ";");
@@ -172,7 +158,7 @@ void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::vector<std:
 
 std::string literal(ValueType type, const std::vector<double>& v) {
   if (type == ValueType::Float) return glslFloat(v.at(0));
-  std::string s = glslType(type) + std::string("(");
+  std::string s = toString(type) + std::string("(");
   for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + glslFloat(v[i]);
   return s + ")";
 }
@@ -242,7 +228,7 @@ EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
   inc.addBrick(brick, unstableVariant);
   inc.writeTo(w);
   out.bricks = inc.bricks();
-  writeProbe(w, out.layout, {std::string(glslType(slot->returns)) + " r = " + brick.function + "(" + args + ");"}, {},
+  writeProbe(w, out.layout, {std::string(toString(slot->returns)) + " r = " + brick.function + "(" + args + ");"}, {},
              precision);
   out.glsl = w.str();
   return out;
@@ -324,14 +310,14 @@ void writeInputStructs(GlslWriter& w, const MaterialDesc& mat, ShaderPrecision p
   auto line = [&](const std::string& glsl) { w.line(atPrecision(glsl, precision)); };
   line("struct MaterialInputs {");
   for (const auto& p : mat.params)
-    if (!p.user) line(std::string("    ") + glslType(p.type) + " " + p.name + ";");
+    if (!p.user) line(std::string("    ") + toString(p.type) + " " + p.name + ";");
   line("};");
   if (!mat.surface.present()) return;
   line("struct MaterialParams {");
   bool any = false;
   for (const auto& p : mat.params)
     if (p.user) {
-      line(std::string("    ") + glslType(p.type) + " " + p.name + ";");
+      line(std::string("    ") + toString(p.type) + " " + p.name + ";");
       any = true;
     }
   if (!any) line("    float unused_;  // GLSL has no empty structs");
@@ -345,7 +331,7 @@ void writeApi(GlslWriter& w, const Permutation& perm, ShaderPrecision precision)
   std::string params, args;
   for (const auto& p : mat.params) {
     if (p.constant) continue;
-    params += std::string(params.empty() ? "" : ", ") + glslType(p.type) + " " + p.name;
+    params += std::string(params.empty() ? "" : ", ") + toString(p.type) + " " + p.name;
     args += std::string(args.empty() ? "" : ", ") + p.name;
   }
   line("// The material's inputs: constants folded in" +
