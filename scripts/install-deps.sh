@@ -3,6 +3,8 @@
 # registry. Safe to run twice: only packages that are missing are installed.
 # clang and libclang-rt-14-dev: the sanitizer pass and the libFuzzer targets (docs/fuzzing.md);
 # clang-format: the house style (.clang-format), checked by the CTest test `format`.
+# libcurl4-openssl-dev: the remote HTTP compile cache (--cache-url); nginx-light: the local
+# WebDAV server its tests run against (docs/targets.md "Remote cache").
 set -euo pipefail
 
 PACKAGES=(
@@ -12,6 +14,7 @@ PACKAGES=(
   libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers vulkan-tools
   nlohmann-json3-dev catch2 libcli11-dev libxxhash-dev
   clang libclang-rt-14-dev clang-format
+  libcurl4-openssl-dev nginx-light
 )
 
 missing=()

@@ -70,5 +70,6 @@ Command addBenchCommand(CLI::App& app, GlobalOptions& g);
 Command addLutCommand(CLI::App& app, GlobalOptions& g);
 Command addEnergyCommand(CLI::App& app, GlobalOptions& g);
 Command addVerifyCommand(CLI::App& app, GlobalOptions& g);
+Command addMergeCommand(CLI::App& app, GlobalOptions& g);
 
 }  // namespace mb::cli

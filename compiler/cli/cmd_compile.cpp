@@ -2,11 +2,13 @@
 // parallel through the cache, to every target -> a package written atomically
 // (docs/cli.md, docs/scenes.md, docs/targets.md, docs/package.md).
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 #include <thread>
 
 #include "cli/cli_common.hpp"
+#include "cli/compile_run.hpp"
 #include "compile/build.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
@@ -14,29 +16,10 @@
 #include "permute/scene_plan.hpp"
 #include "write/depfile.hpp"
 #include "write/package_contents.hpp"
+#include "write/package_writer.hpp"
 
 namespace mb::cli {
 namespace {
-
-struct CompileArgs {
-  std::vector<std::string> materials;
-  std::string scene;
-  std::string out;
-  bool quiet = false;
-  bool explain = false;
-  std::vector<std::string> lights{"dir"};
-  std::string environment = "none";
-  std::string precision = "fp32";
-  std::string quality = "high";
-  std::vector<std::string> targets;  // empty: the scene's, else spirv
-  unsigned jobs = 0;
-  std::string cacheDir;
-  bool noCache = false;
-  std::string headerName = "matbricks_materials.hpp";
-  std::string cppNamespace = "matbricks_materials";
-  std::string depfile;
-  CLI::Option* axisOptions[4] = {};
-};
 
 // Two materials of one name would write the same files: refuse rather than keep either.
 void refuseDuplicateKeys(const std::vector<Permutation>& perms, const std::vector<const MaterialDesc*>& sources) {
@@ -59,8 +42,10 @@ void refuseDuplicateKeys(const std::vector<Permutation>& perms, const std::vecto
 // Before any compiling: -o must be new, empty or a package, and neither it nor the depfile may
 // be, contain or lie inside what the compile reads or the cache (docs/cli.md "Outputs").
 void refuseUnsafeOutputs(const CompileArgs& a, const ShaderLibrary& lib, const SceneDesc& scene,
-                         const std::vector<MaterialDesc>& materials, const std::filesystem::path& cacheDir) {
+                         const std::vector<MaterialDesc>& materials, const std::filesystem::path& cacheDir,
+                         const std::vector<ProtectedPath>& more) {
   std::vector<ProtectedPath> inputs = libraryInputs(lib);
+  inputs.insert(inputs.end(), more.begin(), more.end());
   std::vector<const MaterialDesc*> read;  // the files' materials, or the scene's
   for (const auto& m : materials) read.push_back(&m);
   for (const auto& m : scene.materials) read.push_back(&m.material);
@@ -73,7 +58,75 @@ void refuseUnsafeOutputs(const CompileArgs& a, const ShaderLibrary& lib, const S
   }
 }
 
-int runCompile(const CompileArgs& a, const GlobalOptions& g) {
+// --shard: the shard directory (compile/shard.hpp) instead of a package.
+void writeShard(const CompileArgs& a, const GlobalOptions& g, const ShardSpec& spec,
+                const std::vector<BuiltPermutation>& built, const BuildStats& stats) {
+  std::vector<ShardEntry> entries;
+  std::map<std::string, size_t> byKey;
+  for (const auto& b : built) {
+    if (!b.inShard) continue;
+    auto [it, fresh] = byKey.emplace(b.cacheKey, entries.size());
+    if (fresh) entries.push_back({b.cacheKey, &b.artifacts, {}});
+    entries[it->second].permutations.push_back(b.shader.key);
+  }
+  PackageWriter writer("shard");
+  addShardFiles(writer, spec, stats.planDigest, stats.units, compileCommandJson(a, g), entries);
+  writer.commit(a.out);
+}
+
+std::unique_ptr<RemoteCache> openRemoteCache(const CompileArgs& a) {
+  std::string url = a.cacheUrl;
+  if (url.empty() && !a.noCache)
+    if (const char* env = std::getenv("MATBRICKS_CACHE_URL"); env && *env) url = env;
+  if (url.empty()) return nullptr;
+  try {
+    return std::make_unique<RemoteCache>(RemoteCacheOptions{url, a.cacheUrlLayout, a.cacheTimeout});
+  } catch (const DiagnosticError& e) {  // a bad option value: a usage error (exit 2)
+    throw CLI::ValidationError((a.cacheUrl.empty() ? "MATBRICKS_CACHE_URL " : "--cache-url ") + url + ": " +
+                               e.diagnostics().front().message);
+  }
+}
+
+std::string remoteSummary(const BuildStats& s, const RemoteCache* remote) {
+  if (!remote) return "";
+  std::string text = ", " + std::to_string(s.remoteHits) + " of them from the remote cache, " +
+                     std::to_string(s.remoteUploads) + " uploaded";
+  if (s.remoteCorrupt) text += ", " + std::to_string(s.remoteCorrupt) + " corrupt remote blob(s) ignored";
+  return text;
+}
+
+}  // namespace
+
+nlohmann::json compileCommandJson(const CompileArgs& a, const GlobalOptions& g) {
+  return {{"materials", a.materials},     {"scene", a.scene},         {"lights", a.lights},
+          {"environment", a.environment}, {"precision", a.precision}, {"quality", a.quality},
+          {"targets", a.targets},         {"header", a.headerName},   {"namespace", a.cppNamespace},
+          {"shaderlib", g.shaderlib}};
+}
+
+void compileArgsFromJson(const nlohmann::json& c, const std::string& file, CompileArgs& a, GlobalOptions& g) {
+  try {
+    a.materials = c.at("materials").get<std::vector<std::string>>();
+    a.scene = c.at("scene").get<std::string>();
+    a.lights = c.at("lights").get<std::vector<std::string>>();
+    a.environment = c.at("environment").get<std::string>();
+    a.precision = c.at("precision").get<std::string>();
+    a.quality = c.at("quality").get<std::string>();
+    a.targets = c.at("targets").get<std::vector<std::string>>();
+    a.headerName = c.at("header").get<std::string>();
+    a.cppNamespace = c.at("namespace").get<std::string>();
+    g.shaderlib = c.at("shaderlib").get<std::string>();
+  } catch (const nlohmann::json::exception& e) {
+    throw DiagnosticError({{Severity::Error,
+                            "E-SHARD-NOT-SHARD",
+                            {file, 0, 0},
+                            std::string("shard.json's 'command' is not readable: ") + e.what(),
+                            "compile the shards again with this matbricks"}});
+  }
+}
+
+int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mergeFrom,
+               const std::vector<ProtectedPath>& protectedInputs) {
   // Usage errors exit 2 (CLI::ValidationError), as CLI11's own do.
   if (a.scene.empty() == a.materials.empty())
     throw CLI::ValidationError("compile takes either MATERIAL files or --scene FILE, not both or neither");
@@ -85,6 +138,15 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
   if (a.out.empty() && !a.explain) throw CLI::ValidationError("compile needs -o DIR (or --explain, which only counts)");
   if (!a.depfile.empty() && a.out.empty())
     throw CLI::ValidationError("--depfile needs -o DIR (its target is DIR/manifest.json)");
+  if (a.noCache && !a.cacheUrl.empty())
+    throw CLI::ValidationError("--cache-url conflicts with --no-cache (which turns every cache off)");
+  ShardSpec shard;
+  if (!a.shard.empty()) {
+    std::string why;
+    if (!parseShardSpec(a.shard, shard, why)) throw CLI::ValidationError(why);
+    if (!a.depfile.empty())
+      throw CLI::ValidationError("--depfile conflicts with --shard: a shard has no manifest.json (merge writes it)");
+  }
 
   ShaderLibrary lib = loadLibrary(g);
   SceneDesc scene;
@@ -113,16 +175,29 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
   BuildOptions options;
   options.jobs = a.jobs;
   options.targets = targets;
-  options.cacheDir = a.noCache ? std::filesystem::path()
-                               : (a.cacheDir.empty() ? ShaderCache::defaultDir() : std::filesystem::path(a.cacheDir));
-  refuseUnsafeOutputs(a, lib, scene, materials, options.cacheDir);
+  options.shard = shard;
+  options.mergeFrom = mergeFrom;
+  if (!mergeFrom)
+    options.cacheDir = a.noCache ? std::filesystem::path()
+                                 : (a.cacheDir.empty() ? ShaderCache::defaultDir() : std::filesystem::path(a.cacheDir));
+  std::unique_ptr<RemoteCache> remote = mergeFrom ? nullptr : openRemoteCache(a);
+  options.remote = remote.get();
+  refuseUnsafeOutputs(a, lib, scene, materials, options.cacheDir, protectedInputs);
   BuildStats stats;
   std::vector<BuiltPermutation> built = buildPermutations(lib, plan.required, options, &stats);
+  if (!stats.remoteWarning.empty())
+    printDiagnostics({{Severity::Warning,
+                       "W-CACHE-REMOTE",
+                       {a.cacheUrl.empty() ? "MATBRICKS_CACHE_URL" : a.cacheUrl, 0, 0},
+                       stats.remoteWarning}},
+                     g);
 
   if (!a.quiet && !a.explain)
     for (const auto& b : built)
-      std::printf("compiled %-52s %7.2f ms  %5zu instructions  %s%s\n", b.shader.key.c_str(), b.compileMs,
-                  spirvInstructionCount(b.artifacts.spirv), b.spirvHash.c_str(), b.fromCache ? "  (cached)" : "");
+      if (b.inShard)
+        std::printf("compiled %-52s %7.2f ms  %5zu instructions  %s%s\n", b.shader.key.c_str(), b.compileMs,
+                    spirvInstructionCount(b.artifacts.spirv), b.spirvHash.c_str(),
+                    b.fromCache ? (mergeFrom ? "  (from its shard)" : "  (cached)") : "");
   if (a.explain) {
     // Every required permutation is in `built`; say how many glslang built now and how many
     // the cache or an identical emitted GLSL supplied.
@@ -133,7 +208,9 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
     std::fputs(explainText(plan, built.size(), stats.uniqueSpirv, how).c_str(), stdout);
   }
 
-  if (!a.out.empty()) {
+  if (!a.out.empty() && !shard.whole()) {
+    writeShard(a, g, shard, built, stats);
+  } else if (!a.out.empty()) {
     PackageWriter pkg;
     PackageInputs in;
     in.lib = &lib;
@@ -153,18 +230,24 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g) {
     PackageWriter::writeFileAtomically(a.depfile,
                                        makeDepfile(absTarget, compileInputs(lib, plan.required, built, {a.scene})));
   }
-  if (!a.quiet)
-    std::printf("%s %zu permutation(s) (%zu unique SPIR-V, %zu compiled, %zu cached%s) in %.0f ms with %u job(s)%s\n",
-                a.out.empty() ? "built" : "wrote", built.size(), stats.uniqueSpirv, stats.compiled, stats.cacheHits,
+  if (!a.quiet) {
+    std::string what = std::to_string(built.size()) + " permutation(s)";
+    if (!shard.whole())
+      what = "shard " + shard.text() + ": " + std::to_string(stats.shardUnits) + " of " + std::to_string(stats.units) +
+             " compile unit(s) of " + what;
+    std::string how = std::to_string(stats.compiled) + " compiled, " + std::to_string(stats.cacheHits) + " cached";
+    if (mergeFrom) how = "merged from " + std::to_string(mergeFrom->count()) + " shard(s), 0 compiled";
+    std::printf("%s %s (%zu unique SPIR-V, %s%s%s) in %.0f ms with %u job(s)%s\n", a.out.empty() ? "built" : "wrote",
+                what.c_str(), stats.uniqueSpirv, how.c_str(),
                 stats.cacheCorrupt
                     ? (", " + std::to_string(stats.cacheCorrupt) + " corrupt cache entries rebuilt").c_str()
                     : "",
-                stats.wallMs, options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency()),
+                remoteSummary(stats, remote.get()).c_str(), stats.wallMs,
+                options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency()),
                 a.out.empty() ? "" : (" to " + a.out).c_str());
+  }
   return kExitOk;
 }
-
-}  // namespace
 
 Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<CompileArgs>();
@@ -203,7 +286,19 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option(
       "--cache-dir", args->cacheDir,
       "Compile cache directory (default: $MATBRICKS_CACHE_DIR, $XDG_CACHE_HOME/matbricks or ~/.cache/matbricks)");
-  cmd->add_flag("--no-cache", args->noCache, "Neither read nor write the compile cache");
+  cmd->add_flag("--no-cache", args->noCache, "Neither read nor write the compile cache (local or remote)");
+  cmd->add_option("--cache-url", args->cacheUrl,
+                  "Remote compile cache behind the local one: an HTTP server taking GET/PUT of blobs (bazel-remote, "
+                  "nginx WebDAV, ...); default $MATBRICKS_CACHE_URL");
+  cmd->add_option("--cache-url-layout", args->cacheUrlLayout,
+                  "Blob paths under --cache-url: subdirs (URL/ab/abcd...), flat (URL/abcd...) or bazel (URL/ac/...)")
+      ->check(CLI::IsMember(remoteCacheLayouts()));
+  cmd->add_option("--cache-timeout", args->cacheTimeout,
+                  "Seconds a remote cache request may take before the remote cache is skipped (default 10)")
+      ->check(CLI::Range(0.05, 3600.0));
+  cmd->add_option("--shard", args->shard,
+                  "Compile only shard i of N (i/N) of the required permutations into a shard directory; "
+                  "'matbricks merge' joins the N shards into the package");
   cmd->add_option("--header", args->headerName, "Name of the generated C++ header (default: matbricks_materials.hpp)");
   cmd->add_option("--namespace", args->cppNamespace,
                   "C++ namespace of the generated header (default: matbricks_materials)");

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   commands.push_back(addEnergyCommand(app, g));
   commands.push_back(addStressCommand(app, g));
   commands.push_back(addVerifyCommand(app, g));
+  commands.push_back(addMergeCommand(app, g));
 
   try {
     app.parse(argc, argv);

@@ -3,8 +3,10 @@
 // 1. Emit every permutation on the calling thread (the library's source cache is not
 //    thread-safe) and group identical emitted GLSL into one compile unit.
 // 2. Key each unit for the cache (shader_cache.hpp) on the calling thread.
-// 3. A pool of `jobs` threads takes units in order: cache lookup, else glslang -> spirv-val ->
-//    spirv-opt -> SPIRV-Cross targets -> checks -> reflection, then store.
+// 3. A pool of `jobs` threads takes units in order (under --shard i/N only the units whose
+//    index is i-1 mod N): local cache lookup, else the remote cache, else glslang ->
+//    spirv-val -> spirv-opt -> SPIRV-Cross targets -> checks -> reflection, then store in
+//    both. `merge` instead takes every unit from the shards and compiles nothing.
 // Every output is a function of its unit alone, never of the schedule, so the results are
 // bit-identical at every job count; they come back in input order.
 #include "compile/build.hpp"
@@ -38,6 +40,8 @@ struct CompileUnit {
   // Results, written by one worker only.
   CompiledArtifacts artifacts;
   ShaderCache::Lookup lookup = ShaderCache::Lookup::Miss;
+  bool owned = true;  // built by this shard
+  bool fromRemote = false, remoteCorrupt = false, uploaded = false;
   double compileMs = 0;
   std::vector<Diagnostic> errors;
   std::exception_ptr failure;  // anything that is not a DiagnosticError
@@ -73,10 +77,55 @@ std::string unitKey(const ShaderLibrary& lib, const EmittedShader& shader, const
   return ShaderCache::key(parts);
 }
 
-void buildUnit(CompileUnit& u, const std::vector<std::string>& targets, const ShaderCache& cache) {
+// Where a unit's artifacts come from, in order: the shards (merge only), else the local
+// cache, the remote cache, and a compile.
+struct UnitSources {
+  const ShaderCache& cache;
+  RemoteCache* remote;
+  const ShardSet* shards;
+};
+
+// merge: a unit's artifacts from the shards, or the error saying which shard lacks them.
+void loadFromShards(CompileUnit& u, size_t index, const ShardSet& shards) {
+  std::string where;
+  switch (shards.load(u.cacheKey, index, u.artifacts, where)) {
+    case ShardSet::Lookup::Hit:
+      u.lookup = ShaderCache::Lookup::Hit;
+      return;
+    case ShardSet::Lookup::Missing:
+      u.errors.push_back({Severity::Error,
+                          "E-SHARD-MISSING",
+                          {where, 0, 0},
+                          "shard " + std::to_string(index % shards.count() + 1) + "/" + std::to_string(shards.count()) +
+                              " has no entry for '" + u.displayName + "' (cache key " + u.cacheKey + ")",
+                          "compile that shard again"});
+      return;
+    case ShardSet::Lookup::Corrupt:
+      u.errors.push_back({Severity::Error,
+                          "E-SHARD-CORRUPT",
+                          {where, 0, 0},
+                          "the shard entry for '" + u.displayName + "' is missing, truncated or damaged",
+                          "compile that shard again"});
+      return;
+  }
+}
+
+void buildUnit(CompileUnit& u, size_t index, const std::vector<std::string>& targets, const UnitSources& src) {
   try {
+    if (src.shards) return loadFromShards(u, index, *src.shards);
+    const ShaderCache& cache = src.cache;
     u.lookup = cache.load(u.cacheKey, u.artifacts);
     if (u.lookup == ShaderCache::Lookup::Hit) return;
+    if (src.remote) {
+      const RemoteCache::Get got = src.remote->get(u.cacheKey, u.artifacts);
+      u.remoteCorrupt = got == RemoteCache::Get::Corrupt;
+      if (got == RemoteCache::Get::Hit) {
+        u.lookup = ShaderCache::Lookup::Hit;
+        u.fromRemote = true;
+        cache.store(u.cacheKey, u.artifacts);
+        return;
+      }
+    }
     auto t0 = Clock::now();
     CompiledArtifacts a;
     a.spirv = compileComputeGlsl(u.glsl, u.displayName, u.compile).spirv;
@@ -93,6 +142,7 @@ void buildUnit(CompileUnit& u, const std::vector<std::string>& targets, const Sh
     a.reflection = reflectSpirv(a.spirv);
     u.compileMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     cache.store(u.cacheKey, a);
+    if (src.remote) u.uploaded = src.remote->put(u.cacheKey, a);
     u.artifacts = std::move(a);
   } catch (const DiagnosticError& e) {
     u.errors = e.diagnostics();
@@ -102,10 +152,11 @@ void buildUnit(CompileUnit& u, const std::vector<std::string>& targets, const Sh
 }
 
 void runPool(std::vector<CompileUnit>& units, unsigned jobs, const std::vector<std::string>& targets,
-             const ShaderCache& cache) {
+             const UnitSources& sources) {
   std::atomic<size_t> next{0};
   auto worker = [&] {
-    for (size_t i; (i = next++) < units.size();) buildUnit(units[i], targets, cache);
+    for (size_t i; (i = next++) < units.size();)
+      if (units[i].owned) buildUnit(units[i], i, targets, sources);
   };
   std::vector<std::thread> pool;
   for (unsigned j = 1; j < jobs; ++j) pool.emplace_back(worker);
@@ -166,9 +217,16 @@ std::vector<BuiltPermutation> buildPermutations(const ShaderLibrary& lib, const 
   }
   if (!errors.empty()) throw DiagnosticError(errors);
 
+  std::vector<std::string> unitKeys;
+  for (const auto& u : units) unitKeys.push_back(u.cacheKey);
+  const unsigned splitInto = options.mergeFrom ? options.mergeFrom->count() : std::max(options.shard.count, 1u);
+  const std::string digest = planDigest(splitInto, unitKeys);
+  if (options.mergeFrom) options.mergeFrom->requirePlan(digest);
+  for (size_t i = 0; i < units.size(); ++i) units[i].owned = options.shard.owns(i);
+
   unsigned jobs = options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
   jobs = static_cast<unsigned>(std::min<size_t>(jobs, std::max<size_t>(units.size(), 1)));
-  runPool(units, jobs, targets, cache);
+  runPool(units, jobs, targets, {cache, options.remote, options.mergeFrom});
 
   for (const auto& u : units) {
     if (u.failure) std::rethrow_exception(u.failure);
@@ -180,14 +238,25 @@ std::vector<BuiltPermutation> buildPermutations(const ShaderLibrary& lib, const 
   s.permutations = perms.size();
   std::set<std::string> hashes;
   std::vector<bool> reported(units.size(), false);
+  s.units = units.size();
+  s.planDigest = digest;
   for (const auto& u : units) {
+    if (!u.owned) continue;
+    ++s.shardUnits;
     s.compiled += u.lookup != ShaderCache::Lookup::Hit;
     s.cacheHits += u.lookup == ShaderCache::Lookup::Hit;
     s.cacheCorrupt += u.lookup == ShaderCache::Lookup::Corrupt;
+    s.remoteHits += u.fromRemote;
+    s.remoteCorrupt += u.remoteCorrupt;
+    s.remoteUploads += u.uploaded;
   }
+  if (options.remote) s.remoteWarning = options.remote->warning();
   for (size_t i = 0; i < perms.size(); ++i) {
     const CompileUnit& u = units[unitOf[i]];
     BuiltPermutation& b = out[i];
+    b.cacheKey = u.cacheKey;
+    b.inShard = u.owned;
+    if (!u.owned) continue;
     b.artifacts = u.artifacts;
     b.spirvHash = contentHash(b.artifacts.spirv.data(), b.artifacts.spirv.size() * sizeof(uint32_t));
     b.fromCache = u.lookup == ShaderCache::Lookup::Hit;

@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "compile/remote_cache.hpp"
 #include "compile/shader_cache.hpp"
+#include "compile/shard.hpp"
 #include "emit/emitter.hpp"
 #include "library/shader_library.hpp"
 #include "permute/permutation.hpp"
@@ -18,12 +20,19 @@ struct BuildOptions {
   std::vector<std::string> targets{"spirv"};  // subset of allTargets(); spirv always built
   std::filesystem::path cacheDir;             // empty: no cache
   EmitMode mode = EmitMode::Engine;           // what the package ships (emit/emitter.hpp)
+  RemoteCache* remote = nullptr;              // behind the local cache (remote_cache.hpp); null: none
+  ShardSpec shard;                            // build only this shard's units (shard.hpp); whole by default
+  // merge: every unit's artifacts come from these shards; nothing is compiled, no cache is
+  // used, and a unit the shards lack is an error (E-SHARD-MISSING).
+  const ShardSet* mergeFrom = nullptr;
 };
 
 struct BuiltPermutation {
   EmittedShader shader;  // key, GLSL, layout, bricks
   CompiledArtifacts artifacts;
   std::string spirvHash;  // contentHash() of the SPIR-V words (16 hex digits)
+  std::string cacheKey;   // of its compile unit
+  bool inShard = true;    // false: another shard builds it (artifacts empty, nothing to write)
   bool fromCache = false;
   double compileMs = 0;  // 0 for a cache hit, and for a permutation whose GLSL an
                          // earlier one already emitted (compiled once, reported once)
@@ -33,8 +42,15 @@ struct BuildStats {
   size_t permutations = 0;
   size_t compiled = 0;  // glslang actually ran (misses, after GLSL dedup)
   size_t cacheHits = 0;
-  size_t cacheCorrupt = 0;  // entries found corrupt and rebuilt
-  size_t uniqueSpirv = 0;   // distinct SPIR-V hashes
+  size_t cacheCorrupt = 0;   // entries found corrupt and rebuilt
+  size_t uniqueSpirv = 0;    // distinct SPIR-V hashes
+  size_t units = 0;          // compile units (distinct emitted GLSL) of the whole build
+  size_t shardUnits = 0;     // of them, built here (all but under --shard)
+  size_t remoteHits = 0;     // units the remote cache supplied
+  size_t remoteCorrupt = 0;  // remote blobs that failed their checks (ignored, rebuilt)
+  size_t remoteUploads = 0;
+  std::string remoteWarning;  // why the remote cache went off or read-only ("" if it did not)
+  std::string planDigest;     // shard.hpp planDigest over the units, for --shard N (else N = 1)
   double wallMs = 0;
 };
 

@@ -63,7 +63,9 @@ class Reader {
   size_t pos_;
 };
 
-std::string serialize(const CompiledArtifacts& a) {
+}  // namespace
+
+std::string encodeCacheEntry(const CompiledArtifacts& a) {
   std::string payload;
   putU64(payload, a.spirv.size());
   payload.append(reinterpret_cast<const char*>(a.spirv.data()), a.spirv.size() * sizeof(uint32_t));
@@ -80,7 +82,7 @@ std::string serialize(const CompiledArtifacts& a) {
   return file + payload;
 }
 
-bool deserialize(const std::string& file, CompiledArtifacts& out) {
+bool decodeCacheEntry(const std::string& file, CompiledArtifacts& out) {
   if (file.size() < kHeaderSize || std::memcmp(file.data(), kMagic, sizeof kMagic) != 0) return false;
   Reader header(file, sizeof kMagic);
   uint64_t tag = 0, size = 0, hash = 0;
@@ -107,8 +109,6 @@ bool deserialize(const std::string& file, CompiledArtifacts& out) {
   out = std::move(a);
   return true;
 }
-
-}  // namespace
 
 ShaderCache::ShaderCache(fs::path dir) : dir_(std::move(dir)) {}
 
@@ -145,7 +145,7 @@ ShaderCache::Lookup ShaderCache::load(const std::string& key, CompiledArtifacts&
   if (!in) return Lookup::Miss;
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) return Lookup::Miss;
-  if (deserialize(bytes, out)) return Lookup::Hit;
+  if (decodeCacheEntry(bytes, out)) return Lookup::Hit;
   // Corrupt: delete it so the rebuilt entry replaces it. A concurrent writer renames a whole
   // entry over the path; at worst this removes that fresh entry and a later run rebuilds it.
   std::error_code ec;
@@ -160,7 +160,7 @@ bool ShaderCache::store(const std::string& key, const CompiledArtifacts& artifac
   fs::create_directories(path.parent_path(), ec);
   if (ec) return false;
   // Two writers of one key write identical bytes; a reader never sees a partial entry.
-  return replaceFileAtomically(path, serialize(artifacts));
+  return replaceFileAtomically(path, encodeCacheEntry(artifacts));
 }
 
 }  // namespace mb

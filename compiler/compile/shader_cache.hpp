@@ -26,6 +26,12 @@ struct CompiledArtifacts {
   nlohmann::json reflection;                   // reflectSpirv(spirv)
 };
 
+// The bytes of one cache entry (format in shader_cache.cpp), as stored on disk, in a shard
+// directory (compile/shard.hpp) and, wrapped, in a remote cache (compile/remote_cache.hpp).
+std::string encodeCacheEntry(const CompiledArtifacts& artifacts);
+// False, leaving `out` untouched, for anything but a whole, intact entry of this format.
+bool decodeCacheEntry(const std::string& bytes, CompiledArtifacts& out);
+
 class ShaderCache {
  public:
   // An empty dir disables the cache (every lookup misses, store does nothing).

@@ -1,0 +1,179 @@
+// A real HTTP cache server for the remote-cache tests: Debian's nginx with WebDAV PUT
+// (installed by scripts/install-deps.sh), started on 127.0.0.1 at a free port in a scratch
+// directory, in the foreground as one process, and stopped when the object goes. Its access
+// log gives exact request counts. Two locations share one blob root:
+//   /       GET, PUT (create_full_put_path), as bazel-remote or ccache expect
+//   /ro/    GET only (PUT answers 405), a read-only cache
+#pragma once
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+extern char** environ;
+
+namespace mb::test {
+
+// The tests talk to 127.0.0.1 directly, whatever proxy the environment names (libcurl
+// honours http_proxy unless no_proxy excludes the host); children inherit it.
+inline void bypassProxyForLocalhost() {
+  static const bool done = [] {
+    std::string hosts = "127.0.0.1,localhost";
+    for (const char* name : {"no_proxy", "NO_PROXY"})
+      if (const char* v = std::getenv(name); v && *v) hosts += std::string(",") + v;
+    ::setenv("no_proxy", hosts.c_str(), 1);
+    ::setenv("NO_PROXY", hosts.c_str(), 1);
+    return true;
+  }();
+  (void)done;
+}
+
+// A port on 127.0.0.1 nothing listens on right now (the kernel's pick, then released).
+inline int unusedLocalPort() {
+  int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  socklen_t len = sizeof a;
+  if (fd < 0 || ::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 ||
+      ::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len) != 0)
+    throw std::runtime_error("no free local port");
+  ::close(fd);
+  return ntohs(a.sin_port);
+}
+
+inline bool acceptsConnections(int port) {
+  int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_port = htons(static_cast<uint16_t>(port));
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  const bool ok = ::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0;
+  ::close(fd);
+  return ok;
+}
+
+// A listening socket that never accepts and never answers: connections complete in the
+// kernel's backlog, then every request waits until the client's timeout.
+class SilentServer {
+ public:
+  SilentServer() {
+    bypassProxyForLocalhost();
+    fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t len = sizeof a;
+    if (fd_ < 0 || ::bind(fd_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 || ::listen(fd_, 64) != 0 ||
+        ::getsockname(fd_, reinterpret_cast<sockaddr*>(&a), &len) != 0)
+      throw std::runtime_error("cannot listen on 127.0.0.1");
+    port_ = ntohs(a.sin_port);
+  }
+  ~SilentServer() { ::close(fd_); }
+  std::string url() const { return "http://127.0.0.1:" + std::to_string(port_) + "/cache"; }
+
+ private:
+  int fd_ = -1;
+  int port_ = 0;
+};
+
+class DavServer {
+ public:
+  explicit DavServer(const std::filesystem::path& dir) : dir_(dir) {
+    bypassProxyForLocalhost();
+    std::filesystem::create_directories(dir_ / "root");
+    std::filesystem::create_directories(dir_ / "tmp");
+    for (int attempt = 0; attempt < 5 && pid_ <= 0; ++attempt) start(unusedLocalPort());
+    if (pid_ <= 0) throw std::runtime_error("nginx did not start; see " + (dir_ / "error.log").string());
+  }
+  ~DavServer() {
+    if (pid_ > 0) {
+      ::kill(pid_, SIGTERM);
+      ::waitpid(pid_, nullptr, 0);
+    }
+  }
+  DavServer(const DavServer&) = delete;
+  DavServer& operator=(const DavServer&) = delete;
+
+  std::string url(const std::string& location = "") const {
+    return "http://127.0.0.1:" + std::to_string(port_) + "/" + location;
+  }
+  const std::filesystem::path root() const { return dir_ / "root"; }
+
+  // Requests so far by "<METHOD> <status>", e.g. {"GET 404", 3}, {"PUT 201", 3}.
+  std::map<std::string, int> requests() const {
+    std::map<std::string, int> counts;
+    std::ifstream log(dir_ / "access.log");
+    for (std::string line; std::getline(log, line);) {
+      std::istringstream in(line);
+      std::string method, path, status;
+      in >> method >> path >> status;
+      ++counts[method + " " + status];
+    }
+    return counts;
+  }
+  int total() const {
+    int n = 0;
+    for (const auto& [what, count] : requests()) n += count;
+    return n;
+  }
+
+ private:
+  void start(int port) {
+    port_ = port;
+    const std::string d = dir_.string();
+    std::ofstream conf(dir_ / "nginx.conf");
+    conf << "daemon off;\nmaster_process off;\nworker_processes 1;\n"
+         << "pid " << d << "/nginx.pid;\nerror_log " << d << "/error.log;\n"
+         << "events { worker_connections 256; }\n"
+         << "http {\n"
+         << "  log_format counts '$request_method $uri $status';\n"
+         << "  access_log " << d << "/access.log counts;\n"
+         << "  client_body_temp_path " << d << "/tmp/body;\n  proxy_temp_path " << d << "/tmp/proxy;\n"
+         << "  fastcgi_temp_path " << d << "/tmp/fastcgi;\n  uwsgi_temp_path " << d << "/tmp/uwsgi;\n"
+         << "  scgi_temp_path " << d << "/tmp/scgi;\n"
+         << "  client_max_body_size 64m;\n"
+         << "  server {\n    listen 127.0.0.1:" << port << ";\n    root " << d << "/root;\n"
+         << "    location /ro/ { alias " << d << "/root/; }\n"
+         << "    location / { dav_methods PUT; create_full_put_path on; dav_access user:rw group:r all:r; }\n"
+         << "  }\n}\n";
+    conf.close();
+    const std::string confPath = (dir_ / "nginx.conf").string(), errPath = (dir_ / "error.log").string();
+    std::vector<std::string> args{"nginx", "-p", d, "-c", confPath, "-e", errPath};
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    if (::posix_spawnp(&pid, "nginx", nullptr, nullptr, argv.data(), environ) != 0) return;
+    for (int i = 0; i < 200; ++i) {  // up to 10 s on a loaded machine
+      if (acceptsConnections(port)) {
+        pid_ = pid;
+        return;
+      }
+      int status = 0;
+      if (::waitpid(pid, &status, WNOHANG) == pid) return;  // exited: port taken meanwhile, retry
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    ::kill(pid, SIGTERM);
+    ::waitpid(pid, nullptr, 0);
+  }
+
+  std::filesystem::path dir_;
+  int port_ = 0;
+  pid_t pid_ = -1;
+};
+
+}  // namespace mb::test

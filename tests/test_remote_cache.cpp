@@ -1,0 +1,239 @@
+// The remote HTTP compile cache (compile/remote_cache.hpp) against a real server: nginx with
+// WebDAV PUT on 127.0.0.1 (support/dav_server.hpp). Request counts come from the server's
+// access log, so "bounded" means an exact number of GETs and PUTs.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+#include "compile/remote_cache.hpp"
+#include "support/build_support.hpp"
+#include "support/dav_server.hpp"
+
+using namespace mb;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<Permutation> remotePermutations() {
+  const auto& mats = test::loadedMaterials(test::shippedLibrary(), {"filament_plastic", "satin_sheen", "ue4_metal"});
+  return test::permutationsOf(mats, {"dir", "point"}, "sh");
+}
+
+struct RemoteBuild {
+  std::vector<BuiltPermutation> built;
+  BuildStats stats;
+  size_t requests = 0;
+};
+
+// One build with a local cache in `localDir` (empty: none) behind the remote cache at `url`.
+RemoteBuild buildWithRemote(const std::string& url, const fs::path& localDir, double timeout = 10) {
+  RemoteCache remote({url, "subdirs", timeout});
+  BuildOptions o;
+  o.targets = {"spirv", "glsl450"};
+  o.cacheDir = localDir;
+  o.jobs = 2;
+  o.remote = &remote;
+  RemoteBuild r;
+  r.built = buildPermutations(test::shippedLibrary(), remotePermutations(), o, &r.stats);
+  r.requests = remote.requests();
+  return r;
+}
+
+std::vector<fs::path> blobsUnder(const fs::path& root) {
+  std::vector<fs::path> out;
+  for (const auto& e : fs::recursive_directory_iterator(root))
+    if (e.is_regular_file()) out.push_back(e.path());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a remote cache fills on a miss, serves a fresh machine, and the local cache stays in front",
+          "[remote-cache][cache]") {
+  test::ScratchDir dir("remote_fill");
+  test::DavServer server(test::rootOf(dir) / "server");
+  const size_t n = remotePermutations().size();
+
+  RemoteBuild first = buildWithRemote(server.url("cache"), test::rootOf(dir) / "local_a");
+  CHECK(first.stats.compiled == n);
+  CHECK(first.stats.remoteUploads == n);
+  CHECK(first.stats.remoteWarning.empty());
+  CHECK(server.requests() == std::map<std::string, int>{{"GET 404", int(n)}, {"PUT 201", int(n)}});
+  // subdirs layout: <key[0:2]>/<key>, one blob per unit.
+  const auto blobs = blobsUnder(server.root() / "cache");
+  REQUIRE(blobs.size() == n);
+  for (const auto& b : blobs) CHECK(b.parent_path().filename().string() == b.filename().string().substr(0, 2));
+
+  // A second machine: an empty local cache; everything comes from the server, nothing compiles.
+  RemoteBuild second = buildWithRemote(server.url("cache"), test::rootOf(dir) / "local_b");
+  CHECK(second.stats.compiled == 0);
+  CHECK(second.stats.remoteHits == n);
+  CHECK(second.stats.remoteUploads == 0);
+  test::requireIdentical(first.built, second.built);
+  CHECK(server.requests()["GET 200"] == int(n));
+
+  // The same machine again: the local cache answers, the server sees no request.
+  const int before = server.total();
+  RemoteBuild third = buildWithRemote(server.url("cache"), test::rootOf(dir) / "local_b");
+  CHECK(third.requests == 0);
+  CHECK(server.total() == before);
+  test::requireIdentical(first.built, third.built);
+}
+
+TEST_CASE("a corrupt, truncated or misplaced remote blob is detected, ignored and replaced", "[remote-cache][cache]") {
+  test::ScratchDir dir("remote_corrupt");
+  test::DavServer server(test::rootOf(dir) / "server");
+  RemoteBuild clean = buildWithRemote(server.url("cache"), {});
+  const auto blobs = blobsUnder(server.root() / "cache");
+  REQUIRE(blobs.size() == 3);
+  std::string flipped = test::readFile(blobs[0]);
+  flipped[flipped.size() / 2] ^= 0x20;
+  std::ofstream(blobs[0], std::ios::binary | std::ios::trunc) << flipped;
+  const std::string whole = test::readFile(blobs[1]);
+  std::ofstream(blobs[1], std::ios::binary | std::ios::trunc) << whole.substr(0, whole.size() - 100);
+  // A whole, valid blob, but of another key: its key check fails.
+  std::ofstream(blobs[2], std::ios::binary | std::ios::trunc) << whole;
+
+  RemoteBuild repaired = buildWithRemote(server.url("cache"), {});
+  CHECK(repaired.stats.remoteCorrupt == 3);
+  CHECK(repaired.stats.compiled == 3);
+  CHECK(repaired.stats.remoteUploads == 3);  // the rebuilt blobs replace the bad ones
+  CHECK(repaired.stats.remoteWarning.empty());
+  test::requireIdentical(clean.built, repaired.built);
+
+  RemoteBuild after = buildWithRemote(server.url("cache"), {});
+  CHECK(after.stats.remoteHits == 3);
+  CHECK(after.stats.compiled == 0);
+}
+
+TEST_CASE("a remote cache that is down or silent costs one request and one warning", "[remote-cache][cache]") {
+  test::ScratchDir dir("remote_down");
+  const test::SilentServer silent;
+  RemoteBuild reference = buildWithRemote(silent.url(), {}, 0.2);  // compiles everything
+  CHECK(reference.requests == 1);
+  CHECK(reference.stats.compiled == 3);
+  CHECK(reference.stats.remoteWarning.find("timed out") != std::string::npos);
+  CHECK(reference.stats.remoteWarning.find("compiling locally") != std::string::npos);
+
+  const int port = test::unusedLocalPort();
+  RemoteBuild down = buildWithRemote("http://127.0.0.1:" + std::to_string(port) + "/cache", {});
+  CHECK(down.requests == 1);
+  CHECK(down.stats.compiled == 3);
+  CHECK(down.stats.remoteUploads == 0);
+  CHECK(!down.stats.remoteWarning.empty());
+  test::requireIdentical(reference.built, down.built);
+}
+
+TEST_CASE("a remote cache that refuses uploads is still read", "[remote-cache][cache]") {
+  test::ScratchDir dir("remote_readonly");
+  test::DavServer server(test::rootOf(dir) / "server");
+  // Fill one blob through the writable location, then use the read-only one.
+  RemoteBuild filled = buildWithRemote(server.url("cache"), {});
+  fs::remove(blobsUnder(server.root() / "cache").front());
+  const auto before = server.requests();
+  RemoteBuild readOnly = buildWithRemote(server.url("ro/cache"), {});
+  CHECK(readOnly.stats.remoteHits == 2);
+  CHECK(readOnly.stats.compiled == 1);
+  CHECK(readOnly.stats.remoteUploads == 0);
+  CHECK(readOnly.stats.remoteWarning.find("HTTP 405") != std::string::npos);
+  CHECK(readOnly.stats.remoteWarning.find("only read") != std::string::npos);
+  auto after = server.requests();
+  auto added = [&](const std::string& what) { return after[what] - (before.count(what) ? before.at(what) : 0); };
+  CHECK(added("PUT 405") == 1);
+  CHECK(added("GET 200") == 2);
+  CHECK(added("GET 404") == 1);
+  test::requireIdentical(filled.built, readOnly.built);
+}
+
+TEST_CASE("the bazel and flat layouts put blobs where those servers expect them", "[remote-cache]") {
+  RemoteCache bazel({"http://h:1/c/", "bazel", 1}), flat({"https://h/c", "flat", 1}), subdirs({"http://h", "subdirs", 1});
+  const std::string key = "0123456789abcdef0123456789abcdef";
+  CHECK(bazel.blobUrl(key) == "http://h:1/c/ac/" + key + std::string(32, '0'));
+  CHECK(flat.blobUrl(key) == "https://h/c/" + key);
+  CHECK(subdirs.blobUrl(key) == "http://h/01/" + key);
+  for (const char* bad : {"ftp://h/c", "h/c", "http://", "http:///c", "http://h/a b"})
+    CHECK_THROWS_AS(RemoteCache({bad, "subdirs", 1}), DiagnosticError);
+  CHECK_THROWS_AS(RemoteCache({"http://h", "nested", 1}), DiagnosticError);
+}
+
+TEST_CASE("concurrent matbricks processes writing one remote cache leave only whole blobs", "[remote-cache][cli]") {
+  test::ScratchDir dir("remote_concurrent");
+  test::DavServer server(test::rootOf(dir) / "server");
+  const std::string root = test::rootOf(dir).string(), scene = (test::sourceDir() / "examples/scenes/showroom.json").string();
+  const std::string compile = std::string(std::getenv("MATBRICKS_CLI")) + " compile -q -j 1 --scene " + scene +
+                              " --cache-url " + server.url("cache");
+  // Two processes, two empty local caches, one server, started together; each exit status
+  // is kept in a file.
+  auto one = [&](const std::string& n) {
+    return "(" + compile + " --cache-dir " + root + "/l" + n + " -o " + root + "/p" + n + " > " + root + "/out" + n +
+           " 2>&1; echo $? > " + root + "/rc" + n + ")";
+  };
+  REQUIRE(std::system((one("1") + " & " + one("2") + " & wait").c_str()) == 0);
+  for (const char* n : {"1", "2"}) {
+    INFO(test::readFile(root + "/out" + n));
+    CHECK(test::readFile(root + "/rc" + n) == "0\n");
+    CHECK(test::readFile(root + "/out" + n).find("W-CACHE-REMOTE") == std::string::npos);
+  }
+  for (const auto& e : fs::recursive_directory_iterator(root + "/p1"))
+    if (e.is_regular_file()) CHECK(test::readFile(e.path()) == test::readFile(root + "/p2/" + fs::relative(e.path(), root + "/p1").string()));
+  // Every blob on the server is whole: a third machine compiles nothing.
+  auto third = test::runCli("compile --scene " + scene + " --cache-url " + server.url("cache") + " --cache-dir " +
+                            root + "/l3 -o " + root + "/p3");
+  INFO(third.output);
+  REQUIRE(third.exitCode == 0);
+  CHECK(third.output.find("0 compiled") != std::string::npos);
+  CHECK(third.output.find("0 uploaded") != std::string::npos);
+}
+
+TEST_CASE("compile --cache-url: usage errors exit 2; a dead server warns once and the build succeeds",
+          "[remote-cache][cli]") {
+  test::ScratchDir dir("remote_cli");
+  test::bypassProxyForLocalhost();
+  const std::string root = test::rootOf(dir).string();
+  const std::string mat = (test::sourceDir() / "materials/ue4_metal.json").string();
+  auto bad = test::runCli("compile " + mat + " --cache-url ftp://x/y -o " + root + "/p");
+  CHECK(bad.exitCode == 2);
+  CHECK(bad.output.find("http:// or https://") != std::string::npos);
+  CHECK(test::runCli("compile " + mat + " --cache-url http://x --no-cache -o " + root + "/p").exitCode == 2);
+  CHECK(test::runCli("compile " + mat + " --cache-url http://x --cache-url-layout nested -o " + root + "/p").exitCode == 2);
+  CHECK(!fs::exists(root + "/p"));
+
+  auto down = test::runCli("compile " + mat + " --no-cache -o " + root + "/p");  // reference
+  REQUIRE(down.exitCode == 0);
+  auto r = test::runCli("compile " + mat + " --cache-dir " + root + "/l -o " + root + "/q --cache-url http://127.0.0.1:" +
+                            std::to_string(test::unusedLocalPort()) + "/c");
+  INFO(r.output);
+  CHECK(r.exitCode == 0);
+  size_t warnings = 0;
+  for (size_t at = 0; (at = r.output.find("W-CACHE-REMOTE", at)) != std::string::npos; ++at) ++warnings;
+  CHECK(warnings == 1);
+  CHECK(test::readFile(root + "/p/manifest.json") == test::readFile(root + "/q/manifest.json"));
+}
+
+TEST_CASE("shards of a build farm share one remote cache: a fresh machine then compiles nothing",
+          "[remote-cache][shards][cli]") {
+  test::ScratchDir dir("remote_shards");
+  test::DavServer server(test::rootOf(dir) / "server");
+  const std::string root = test::rootOf(dir).string(), scene = (test::sourceDir() / "examples/scenes/showroom.json").string();
+  const std::string remote = " --cache-url " + server.url("cache");
+  for (const char* i : {"1", "2", "3"}) {
+    auto r = test::runCli("compile -q --scene " + scene + remote + " --shard " + i + "/3 --cache-dir " + root + "/l" + i +
+                          " -o " + root + "/s" + i);
+    INFO(r.output);
+    REQUIRE(r.exitCode == 0);
+  }
+  const auto filled = server.requests();
+  auto whole = test::runCli("compile --scene " + scene + remote + " --cache-dir " + root + "/l4 -o " + root + "/p");
+  INFO(whole.output);
+  REQUIRE(whole.exitCode == 0);
+  CHECK(whole.output.find(" 0 compiled, 10 cached, 10 of them from the remote cache, 0 uploaded") != std::string::npos);
+  auto after = server.requests();
+  CHECK(after["GET 200"] == 10);
+  CHECK(after["PUT 201"] == filled.at("PUT 201"));
+  // And it equals the merge of the same shards.
+  REQUIRE(test::runCli("merge -q " + root + "/s1 " + root + "/s2 " + root + "/s3 -o " + root + "/m").exitCode == 0);
+  for (const auto& e : fs::recursive_directory_iterator(root + "/p"))
+    if (e.is_regular_file())
+      CHECK(test::readFile(e.path()) == test::readFile(root + "/m/" + fs::relative(e.path(), root + "/p").string()));
+}
