@@ -6,6 +6,7 @@
 #include <spirv-tools/libspirv.hpp>
 
 #include "compile/targets.hpp"
+#include "write/package_contents.hpp"
 #include "support/build_support.hpp"
 
 using namespace mb;
@@ -96,4 +97,75 @@ TEST_CASE("every failing permutation is reported, in input order, and nothing is
       CHECK(e.diagnostics()[k].where.file == ShaderLibrary::displayPath(brick->file));
     }
   }
+}
+
+TEST_CASE("a streamed build in small windows writes the same package as one window, and compiles a unit once",
+          "[build][package]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  const auto& mats = test::loadedMaterials(lib, {"brushed_metal", "clearcoat_metal", "filament_plastic", "satin_sheen",
+                                                 "worn_car_paint", "ue4_metal", "velvet_green"});
+  ScenePlan plan;
+  plan.required = test::permutationsOf(mats, {"dir", "point"}, "sh");
+  for (const auto& p : test::permutationsOf(mats, {"dir"}, "none", "fp16")) plan.required.push_back(p);
+  const test::ScratchDir dir("stream_windows");
+  PackageInputs in;
+  in.lib = &lib;
+  in.plan = &plan;
+  in.targets = {"spirv", "glsl450", "msl"};
+  BuildOptions o;
+  o.targets = in.targets;
+  o.jobs = 2;
+
+  BuildStats whole;
+  auto built = buildPermutations(lib, plan.required, o, &whole);
+  in.built = &built;
+  PackageWriter buffered;
+  addPackageFiles(buffered, in);
+  buffered.commit(test::rootOf(dir) / "one");
+
+  o.window = 3;  // 14 permutations: five windows, the last one short
+  PackageWriter streamed;
+  streamed.stage(test::rootOf(dir) / "three");
+  PackageStream stream(streamed, in);
+  size_t next = 0;
+  BuildStats windowed;
+  buildPermutationsStreaming(
+      lib, plan.required, o,
+      [&](size_t i, BuiltPermutation& b) {
+        CHECK(i == next++);  // in input order
+        CHECK(!b.artifacts.spirv.empty());
+        stream.add(plan.required[i], b);
+      },
+      &windowed);
+  stream.finish();
+  streamed.commit(test::rootOf(dir) / "three");
+  CHECK(next == plan.required.size());
+  CHECK(windowed.compiled == whole.compiled);
+  CHECK(windowed.uniqueSpirv == whole.uniqueSpirv);
+  size_t files = 0;
+  for (const auto& e : fs::recursive_directory_iterator(test::rootOf(dir) / "one")) {
+    if (!e.is_regular_file()) continue;
+    ++files;
+    const fs::path rel = fs::relative(e.path(), test::rootOf(dir) / "one");
+    INFO(rel);
+    CHECK(test::readFile(e.path()) == test::readFile(test::rootOf(dir) / "three" / rel));
+  }
+  CHECK(files == 3 + plan.required.size() + 3 * whole.uniqueSpirv);
+
+  // A permutation repeated in a later window reuses its unit: not compiled again, and it
+  // carries the unit's hash, instruction count and reflection but not its code.
+  std::vector<Permutation> repeated{plan.required[0], plan.required[1], plan.required[0]};
+  o.window = 2;
+  std::vector<BuiltPermutation> got(3);
+  BuildStats s;
+  buildPermutationsStreaming(
+      lib, repeated, o, [&](size_t i, BuiltPermutation& b) { got[i] = b; }, &s);
+  CHECK(s.compiled == 2);
+  CHECK(s.units == 2);
+  CHECK(got[2].artifacts.spirv.empty());
+  CHECK(got[2].spirvHash == got[0].spirvHash);
+  CHECK(got[2].spirvInstructions == got[0].spirvInstructions);
+  CHECK(got[2].artifacts.reflection == got[0].artifacts.reflection);
+  CHECK(got[2].artifacts.targets.size() == got[0].artifacts.targets.size());
+  CHECK(got[2].compileMs == 0);
 }

@@ -147,7 +147,8 @@ TEST_CASE("a remote cache that refuses uploads is still read", "[remote-cache][c
 }
 
 TEST_CASE("the bazel and flat layouts put blobs where those servers expect them", "[remote-cache]") {
-  RemoteCache bazel({"http://h:1/c/", "bazel", 1}), flat({"https://h/c", "flat", 1}), subdirs({"http://h", "subdirs", 1});
+  RemoteCache bazel({"http://h:1/c/", "bazel", 1}), flat({"https://h/c", "flat", 1}),
+      subdirs({"http://h", "subdirs", 1});
   const std::string key = "0123456789abcdef0123456789abcdef";
   CHECK(bazel.blobUrl(key) == "http://h:1/c/ac/" + key + std::string(32, '0'));
   CHECK(flat.blobUrl(key) == "https://h/c/" + key);
@@ -160,7 +161,8 @@ TEST_CASE("the bazel and flat layouts put blobs where those servers expect them"
 TEST_CASE("concurrent matbricks processes writing one remote cache leave only whole blobs", "[remote-cache][cli]") {
   test::ScratchDir dir("remote_concurrent");
   test::DavServer server(test::rootOf(dir) / "server");
-  const std::string root = test::rootOf(dir).string(), scene = (test::sourceDir() / "examples/scenes/showroom.json").string();
+  const std::string root = test::rootOf(dir).string(),
+                    scene = (test::sourceDir() / "examples/scenes/showroom.json").string();
   const std::string compile = std::string(std::getenv("MATBRICKS_CLI")) + " compile -q -j 1 --scene " + scene +
                               " --cache-url " + server.url("cache");
   // Two processes, two empty local caches, one server, started together; each exit status
@@ -176,7 +178,8 @@ TEST_CASE("concurrent matbricks processes writing one remote cache leave only wh
     CHECK(test::readFile(root + "/out" + n).find("W-CACHE-REMOTE") == std::string::npos);
   }
   for (const auto& e : fs::recursive_directory_iterator(root + "/p1"))
-    if (e.is_regular_file()) CHECK(test::readFile(e.path()) == test::readFile(root + "/p2/" + fs::relative(e.path(), root + "/p1").string()));
+    if (e.is_regular_file())
+      CHECK(test::readFile(e.path()) == test::readFile(root + "/p2/" + fs::relative(e.path(), root + "/p1").string()));
   // Every blob on the server is whole: a third machine compiles nothing.
   auto third = test::runCli("compile --scene " + scene + " --cache-url " + server.url("cache") + " --cache-dir " +
                             root + "/l3 -o " + root + "/p3");
@@ -196,13 +199,14 @@ TEST_CASE("compile --cache-url: usage errors exit 2; a dead server warns once an
   CHECK(bad.exitCode == 2);
   CHECK(bad.output.find("http:// or https://") != std::string::npos);
   CHECK(test::runCli("compile " + mat + " --cache-url http://x --no-cache -o " + root + "/p").exitCode == 2);
-  CHECK(test::runCli("compile " + mat + " --cache-url http://x --cache-url-layout nested -o " + root + "/p").exitCode == 2);
+  CHECK(test::runCli("compile " + mat + " --cache-url http://x --cache-url-layout nested -o " + root + "/p").exitCode ==
+        2);
   CHECK(!fs::exists(root + "/p"));
 
   auto down = test::runCli("compile " + mat + " --no-cache -o " + root + "/p");  // reference
   REQUIRE(down.exitCode == 0);
-  auto r = test::runCli("compile " + mat + " --cache-dir " + root + "/l -o " + root + "/q --cache-url http://127.0.0.1:" +
-                            std::to_string(test::unusedLocalPort()) + "/c");
+  auto r = test::runCli("compile " + mat + " --cache-dir " + root + "/l -o " + root +
+                        "/q --cache-url http://127.0.0.1:" + std::to_string(test::unusedLocalPort()) + "/c");
   INFO(r.output);
   CHECK(r.exitCode == 0);
   size_t warnings = 0;
@@ -215,11 +219,12 @@ TEST_CASE("shards of a build farm share one remote cache: a fresh machine then c
           "[remote-cache][shards][cli]") {
   test::ScratchDir dir("remote_shards");
   test::DavServer server(test::rootOf(dir) / "server");
-  const std::string root = test::rootOf(dir).string(), scene = (test::sourceDir() / "examples/scenes/showroom.json").string();
+  const std::string root = test::rootOf(dir).string(),
+                    scene = (test::sourceDir() / "examples/scenes/showroom.json").string();
   const std::string remote = " --cache-url " + server.url("cache");
   for (const char* i : {"1", "2", "3"}) {
-    auto r = test::runCli("compile -q --scene " + scene + remote + " --shard " + i + "/3 --cache-dir " + root + "/l" + i +
-                          " -o " + root + "/s" + i);
+    auto r = test::runCli("compile -q --scene " + scene + remote + " --shard " + i + "/3 --cache-dir " + root + "/l" +
+                          i + " -o " + root + "/s" + i);
     INFO(r.output);
     REQUIRE(r.exitCode == 0);
   }

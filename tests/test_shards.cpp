@@ -38,7 +38,8 @@ void compileShards(const fs::path& root, unsigned n, const std::string& extra = 
   for (unsigned i = 1; i <= n; ++i) {
     const std::string spec = std::to_string(i) + "/" + std::to_string(n);
     auto r = test::runCli("compile -q --scene " + kScene + extra + " --shard " + spec + " --cache-dir " +
-                          (root / ("c" + std::to_string(i))).string() + " -o " + (root / ("s" + std::to_string(i))).string());
+                          (root / ("c" + std::to_string(i))).string() + " -o " +
+                          (root / ("s" + std::to_string(i))).string());
     INFO(r.output);
     REQUIRE(r.exitCode == 0);
   }
@@ -102,7 +103,8 @@ TEST_CASE("three shards merged equal the single-process package, byte for byte",
 
   // One shard of one is the whole build too.
   compileShards(root / "single", 1);
-  REQUIRE(test::runCli("merge -q " + (root / "single/s1").string() + " -o " + (root / "merged1").string()).exitCode == 0);
+  REQUIRE(test::runCli("merge -q " + (root / "single/s1").string() + " -o " + (root / "merged1").string()).exitCode ==
+          0);
   requireSameTree(root / "whole", root / "merged1");
   fs::remove_all(root);
 }
@@ -119,7 +121,7 @@ TEST_CASE("merge refuses an incomplete, mixed, stale or damaged set of shards an
     CHECK(r.output.find(code) != std::string::npos);
     CHECK(!fs::exists(out));
   };
-  expectRefused(s1 + " " + s3, "E-SHARD-INCOMPLETE");  // shard 2 missing
+  expectRefused(s1 + " " + s3, "E-SHARD-INCOMPLETE");                        // shard 2 missing
   expectRefused(s1 + " " + s2 + " " + s3 + " " + s2, "E-SHARD-INCOMPLETE");  // given twice
   expectRefused((test::sourceDir() / "materials").string(), "E-SHARD-NOT-SHARD");
   expectRefused((root / "nowhere").string(), "E-SHARD-NOT-SHARD");
@@ -165,7 +167,8 @@ TEST_CASE("merge refuses an incomplete, mixed, stale or damaged set of shards an
   CHECK(fs::exists(root / "s2/shard.json"));
   fs::create_directories(root / "mine");
   std::ofstream(root / "mine/notes.txt") << "mine";
-  auto refused = test::runCli("compile -q --scene " + kScene + " --shard 1/2 --no-cache -o " + (root / "mine").string());
+  auto refused =
+      test::runCli("compile -q --scene " + kScene + " --shard 1/2 --no-cache -o " + (root / "mine").string());
   CHECK(refused.exitCode == 3);
   CHECK(test::readFile(root / "mine/notes.txt") == "mine");
 

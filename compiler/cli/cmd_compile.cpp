@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <map>
+#include <set>
 #include <thread>
 
 #include "cli/cli_common.hpp"
@@ -56,22 +57,6 @@ void refuseUnsafeOutputs(const CompileArgs& a, const ShaderLibrary& lib, const S
     inputs.push_back({a.out, "output directory"});
     checkFileOutput(a.depfile, "depfile", inputs);
   }
-}
-
-// --shard: the shard directory (compile/shard.hpp) instead of a package.
-void writeShard(const CompileArgs& a, const GlobalOptions& g, const ShardSpec& spec,
-                const std::vector<BuiltPermutation>& built, const BuildStats& stats) {
-  std::vector<ShardEntry> entries;
-  std::map<std::string, size_t> byKey;
-  for (const auto& b : built) {
-    if (!b.inShard) continue;
-    auto [it, fresh] = byKey.emplace(b.cacheKey, entries.size());
-    if (fresh) entries.push_back({b.cacheKey, &b.artifacts, {}});
-    entries[it->second].permutations.push_back(b.shader.key);
-  }
-  PackageWriter writer("shard");
-  addShardFiles(writer, spec, stats.planDigest, stats.units, compileCommandJson(a, g), entries);
-  writer.commit(a.out);
 }
 
 std::unique_ptr<RemoteCache> openRemoteCache(const CompileArgs& a) {
@@ -183,55 +168,65 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
   std::unique_ptr<RemoteCache> remote = mergeFrom ? nullptr : openRemoteCache(a);
   options.remote = remote.get();
   refuseUnsafeOutputs(a, lib, scene, materials, options.cacheDir, protectedInputs);
+  // Streamed: each window of permutations goes to the staged package (or shard) as soon as it
+  // is built, so memory stays flat however large the scene (docs/targets.md "Memory").
+  options.window = a.streamWindow;
+  PackageInputs in;
+  in.lib = &lib;
+  in.plan = &plan;
+  in.targets = targets;
+  in.sceneFile = a.scene;
+  in.headerName = a.headerName;
+  in.cppNamespace = a.cppNamespace;
+  PackageWriter writer(shard.whole() ? "package" : "shard");
+  if (!a.out.empty()) writer.stage(a.out);
+  std::unique_ptr<PackageStream> package;
+  std::unique_ptr<ShardWriter> shardWriter;
+  if (!a.out.empty() && shard.whole()) package = std::make_unique<PackageStream>(writer, in);
+  if (!a.out.empty() && !shard.whole())
+    shardWriter = std::make_unique<ShardWriter>(writer, shard, compileCommandJson(a, g));
+  std::set<std::string> glslInputs;
   BuildStats stats;
-  std::vector<BuiltPermutation> built = buildPermutations(lib, plan.required, options, &stats);
+  buildPermutationsStreaming(
+      lib, plan.required, options,
+      [&](size_t i, BuiltPermutation& b) {
+        if (!b.inShard) return;
+        if (!a.quiet && !a.explain)
+          std::printf("compiled %-52s %7.2f ms  %5zu instructions  %s%s\n", b.shader.key.c_str(), b.compileMs,
+                      b.spirvInstructions, b.spirvHash.c_str(),
+                      b.fromCache ? (mergeFrom ? "  (from its shard)" : "  (cached)") : "");
+        if (package) package->add(plan.required[i], b);
+        if (shardWriter) shardWriter->add(b.cacheKey, b.artifacts, b.shader.key);
+        if (!a.depfile.empty()) addGlslInputs(lib, b.shader.glsl, glslInputs);
+      },
+      &stats);
   if (!stats.remoteWarning.empty())
     printDiagnostics({{Severity::Warning,
                        "W-CACHE-REMOTE",
                        {a.cacheUrl.empty() ? "MATBRICKS_CACHE_URL" : a.cacheUrl, 0, 0},
                        stats.remoteWarning}},
                      g);
-
-  if (!a.quiet && !a.explain)
-    for (const auto& b : built)
-      if (b.inShard)
-        std::printf("compiled %-52s %7.2f ms  %5zu instructions  %s%s\n", b.shader.key.c_str(), b.compileMs,
-                    spirvInstructionCount(b.artifacts.spirv), b.spirvHash.c_str(),
-                    b.fromCache ? (mergeFrom ? "  (from its shard)" : "  (cached)") : "");
   if (a.explain) {
-    // Every required permutation is in `built`; say how many glslang built now and how many
-    // the cache or an identical emitted GLSL supplied.
+    // Every required permutation was built; say how many glslang built now and how many the
+    // cache or an identical emitted GLSL supplied.
     const size_t sharedGlsl = stats.permutations - stats.compiled - stats.cacheHits;
     std::string how = std::to_string(stats.compiled) + " built now, " + std::to_string(stats.cacheHits) +
                       " from the cache" +
                       (sharedGlsl ? ", " + std::to_string(sharedGlsl) + " sharing another's identical GLSL" : "");
-    std::fputs(explainText(plan, built.size(), stats.uniqueSpirv, how).c_str(), stdout);
+    std::fputs(explainText(plan, stats.permutations, stats.uniqueSpirv, how).c_str(), stdout);
   }
-
-  if (!a.out.empty() && !shard.whole()) {
-    writeShard(a, g, shard, built, stats);
-  } else if (!a.out.empty()) {
-    PackageWriter pkg;
-    PackageInputs in;
-    in.lib = &lib;
-    in.plan = &plan;
-    in.built = &built;
-    in.targets = targets;
-    in.sceneFile = a.scene;
-    in.headerName = a.headerName;
-    in.cppNamespace = a.cppNamespace;
-    addPackageFiles(pkg, in);
-    pkg.commit(a.out);
-  }
+  if (package) package->finish();
+  if (shardWriter) shardWriter->finish(stats.planDigest, stats.units);
+  if (!a.out.empty()) writer.commit(a.out);
   if (!a.depfile.empty()) {
     // After the package, so a failed compile leaves the previous depfile with its package.
     const std::string absTarget =
         std::filesystem::absolute(std::filesystem::path(a.out) / "manifest.json").lexically_normal().generic_string();
-    PackageWriter::writeFileAtomically(a.depfile,
-                                       makeDepfile(absTarget, compileInputs(lib, plan.required, built, {a.scene})));
+    PackageWriter::writeFileAtomically(
+        a.depfile, makeDepfile(absTarget, compileInputs(lib, plan.required, glslInputs, {a.scene})));
   }
   if (!a.quiet) {
-    std::string what = std::to_string(built.size()) + " permutation(s)";
+    std::string what = std::to_string(stats.permutations) + " permutation(s)";
     if (!shard.whole())
       what = "shard " + shard.text() + ": " + std::to_string(stats.shardUnits) + " of " + std::to_string(stats.units) +
              " compile unit(s) of " + what;
@@ -296,6 +291,9 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--cache-timeout", args->cacheTimeout,
                   "Seconds a remote cache request may take before the remote cache is skipped (default 10)")
       ->check(CLI::Range(0.05, 3600.0));
+  cmd->add_option("--stream-window", args->streamWindow,
+                  "Permutations built per streamed window (default 256; 0: all at once). Memory grows with the "
+                  "window, not the scene; output is identical at every window");
   cmd->add_option("--shard", args->shard,
                   "Compile only shard i of N (i/N) of the required permutations into a shard directory; "
                   "'matbricks merge' joins the N shards into the package");

@@ -31,6 +31,10 @@ struct CompileArgs {
   std::string cacheUrlLayout = "subdirs";
   double cacheTimeout = 10;
   std::string shard;  // "i/N"; empty: the whole build
+  // Permutations emitted and compiled per streamed window (docs/targets.md "Memory"): enough
+  // units to keep every job busy between windows, few enough that a window's GLSL and
+  // artifacts stay a few tens of MB. 0: the whole build at once.
+  size_t streamWindow = 256;
   std::string headerName = "matbricks_materials.hpp";
   std::string cppNamespace = "matbricks_materials";
   std::string depfile;

@@ -17,7 +17,9 @@
 #include <exception>
 #include <map>
 #include <set>
+#include <memory>
 #include <thread>
+#include <unordered_map>
 
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
@@ -173,101 +175,183 @@ std::string buildCacheKey(const ShaderLibrary& lib, const EmittedShader& shader,
   return unitKey(lib, shader, co, targets);
 }
 
-std::vector<BuiltPermutation> buildPermutations(const ShaderLibrary& lib, const std::vector<Permutation>& perms,
-                                                const BuildOptions& options, BuildStats* stats) {
-  const auto t0 = Clock::now();
-  const std::vector<std::string> targets = crossTargets(options.targets);
-  const ShaderCache cache(options.cacheDir);
+namespace {
 
-  std::vector<BuiltPermutation> out(perms.size());
-  std::vector<size_t> unitOf(perms.size());
-  std::vector<CompileUnit> units;
-  std::map<std::pair<bool, std::string>, size_t> unitByGlsl;
-  std::vector<Diagnostic> errors;
-  for (size_t i = 0; i < perms.size(); ++i) {
-    try {
-      out[i].shader = emitPermutation(lib, perms[i], false, options.mode);
-    } catch (const DiagnosticError& e) {
-      errors.insert(errors.end(), e.diagnostics().begin(), e.diagnostics().end());
-      continue;
+// What later windows need of a unit built in an earlier one (a permutation whose emitted GLSL
+// an earlier permutation already had): everything the package and manifest read, without the
+// code itself, whose files the unit's first permutation already wrote.
+struct UnitSummary {
+  size_t index = 0;  // in first-occurrence order: shards deal these out
+  bool owned = true;
+  bool reported = false;  // its compile time was reported on its first permutation
+  ShaderCache::Lookup lookup = ShaderCache::Lookup::Miss;
+  std::string spirvHash;
+  size_t instructions = 0;
+  std::shared_ptr<const nlohmann::json> reflection;  // interned: few distinct ones
+  std::vector<std::string> targets;                  // names of the non-spirv targets built
+};
+
+// One window of permutations: emitted on the calling thread, its new units compiled by the
+// pool, then handed to the sink in order.
+class StreamingBuild {
+ public:
+  StreamingBuild(const ShaderLibrary& lib, const std::vector<Permutation>& perms, const BuildOptions& options)
+      : lib_(lib), perms_(perms), options_(options), targets_(crossTargets(options.targets)), cache_(options.cacheDir) {
+    jobs_ = options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
+  }
+
+  void run(size_t first, size_t last, const BuiltSink& sink) {
+    std::vector<EmittedShader> shaders(last - first);
+    std::vector<UnitSummary*> unitOf(last - first, nullptr);
+    std::vector<CompileUnit> fresh;
+    std::map<UnitSummary*, size_t> freshSlot;
+    for (size_t i = first; i < last; ++i) {
+      try {
+        shaders[i - first] = emitPermutation(lib_, perms_[i], false, options_.mode);
+      } catch (const DiagnosticError& e) {
+        emitFailed_ = true;
+        errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
+        continue;
+      }
+      CompileUnit u = unitFor(perms_[i], shaders[i - first]);
+      auto [it, isNew] = units_.try_emplace(u.cacheKey);
+      if (isNew) {
+        it->second.index = unitKeys_.size();
+        it->second.owned = options_.shard.owns(it->second.index);
+        u.owned = it->second.owned;
+        unitKeys_.push_back(u.cacheKey);
+        freshSlot[&it->second] = fresh.size();
+        fresh.push_back(std::move(u));
+      }
+      unitOf[i - first] = &it->second;
     }
-    CompileOptions co;
+    // As before streaming: an emission error stops compiling, the rest is still emitted so
+    // that every emission error is reported at once.
+    if (emitFailed_) return;
+    const unsigned jobs = static_cast<unsigned>(std::min<size_t>(jobs_, std::max<size_t>(fresh.size(), 1)));
+    runPool(fresh, jobs, targets_, {cache_, options_.remote, options_.mergeFrom});
+    for (auto& [summary, slot] : freshSlot) summarize(*summary, fresh[slot]);
+    if (!errors_.empty()) return;
+    for (size_t i = first; i < last; ++i) {
+      UnitSummary& unit = *unitOf[i - first];
+      BuiltPermutation b;
+      b.shader = std::move(shaders[i - first]);
+      b.cacheKey = unitKeys_[unit.index];
+      b.inShard = unit.owned;
+      if (unit.owned) {
+        const auto slot = freshSlot.find(&unit);
+        if (slot != freshSlot.end()) {
+          b.artifacts = fresh[slot->second].artifacts;
+          b.compileMs = unit.reported || unit.lookup == ShaderCache::Lookup::Hit ? 0 : fresh[slot->second].compileMs;
+        } else {
+          b.artifacts.reflection = *unit.reflection;
+          for (const auto& t : unit.targets) b.artifacts.targets[t];
+        }
+        unit.reported = true;
+        b.spirvHash = unit.spirvHash;
+        b.spirvInstructions = unit.instructions;
+        b.fromCache = unit.lookup == ShaderCache::Lookup::Hit;
+        hashes_.insert(b.spirvHash);
+      }
+      sink(i, b);
+    }
+  }
+
+  void finish(BuildStats* stats) {
+    BuildStats s = stats_;
+    s.permutations = perms_.size();
+    s.units = unitKeys_.size();
+    const unsigned splitInto = options_.mergeFrom ? options_.mergeFrom->count() : std::max(options_.shard.count, 1u);
+    s.planDigest = planDigest(splitInto, unitKeys_);
+    // Shards of another build lack units: say that, not which entries are missing.
+    if (options_.mergeFrom && !emitFailed_) options_.mergeFrom->requirePlan(s.planDigest);
+    if (failure_) std::rethrow_exception(failure_);
+    if (!errors_.empty()) throw DiagnosticError(errors_);
+    s.uniqueSpirv = hashes_.size();
+    if (options_.remote) s.remoteWarning = options_.remote->warning();
+    if (stats) *stats = s;
+  }
+
+ private:
+  CompileUnit unitFor(const Permutation& perm, const EmittedShader& shader) {
+    CompileUnit u;
     // fp16 skips spirv-opt: SPIRV-Tools v2023.1's constant folding emits invalid 16-bit
     // constants (spirv-val then rejects the module), so fp16 ships glslang's SPIR-V as is.
-    co.optimize = perms[i].precision == "fp32";
-    auto [it, fresh] = unitByGlsl.emplace(std::make_pair(co.optimize, out[i].shader.glsl), units.size());
-    if (fresh) {
-      CompileUnit u;
-      u.glsl = out[i].shader.glsl;
-      u.displayName = out[i].shader.fileName;
-      u.compile = co;
-      if (perms[i].precision == "fp16" && std::find(targets.begin(), targets.end(), "essl310") != targets.end()) {
-        try {
-          EmittedShader relaxed = emitPermutation(lib, perms[i], false, options.mode, true);
-          u.mediumpGlsl = relaxed.glsl;
-          u.mediumpDisplayName = relaxed.fileName;
-        } catch (const DiagnosticError& e) {
-          errors.insert(errors.end(), e.diagnostics().begin(), e.diagnostics().end());
-        }
+    u.compile.optimize = perm.precision == "fp32";
+    u.glsl = shader.glsl;
+    u.displayName = shader.fileName;
+    if (perm.precision == "fp16" && std::find(targets_.begin(), targets_.end(), "essl310") != targets_.end()) {
+      try {
+        EmittedShader relaxed = emitPermutation(lib_, perm, false, options_.mode, true);
+        u.mediumpGlsl = relaxed.glsl;
+        u.mediumpDisplayName = relaxed.fileName;
+      } catch (const DiagnosticError& e) {
+        errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
       }
-      u.cacheKey = unitKey(lib, out[i].shader, co, targets, u.mediumpGlsl);
-      units.push_back(std::move(u));
     }
-    unitOf[i] = it->second;
+    u.cacheKey = unitKey(lib_, shader, u.compile, targets_, u.mediumpGlsl);
+    return u;
   }
-  if (!errors.empty()) throw DiagnosticError(errors);
 
-  std::vector<std::string> unitKeys;
-  for (const auto& u : units) unitKeys.push_back(u.cacheKey);
-  const unsigned splitInto = options.mergeFrom ? options.mergeFrom->count() : std::max(options.shard.count, 1u);
-  const std::string digest = planDigest(splitInto, unitKeys);
-  if (options.mergeFrom) options.mergeFrom->requirePlan(digest);
-  for (size_t i = 0; i < units.size(); ++i) units[i].owned = options.shard.owns(i);
-
-  unsigned jobs = options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
-  jobs = static_cast<unsigned>(std::min<size_t>(jobs, std::max<size_t>(units.size(), 1)));
-  runPool(units, jobs, targets, {cache, options.remote, options.mergeFrom});
-
-  for (const auto& u : units) {
-    if (u.failure) std::rethrow_exception(u.failure);
-    errors.insert(errors.end(), u.errors.begin(), u.errors.end());
+  void summarize(UnitSummary& summary, const CompileUnit& u) {
+    if (u.failure && !failure_) failure_ = u.failure;
+    errors_.insert(errors_.end(), u.errors.begin(), u.errors.end());
+    if (!u.owned || u.failure || !u.errors.empty()) return;
+    summary.lookup = u.lookup;
+    summary.spirvHash = contentHash(u.artifacts.spirv.data(), u.artifacts.spirv.size() * sizeof(uint32_t));
+    summary.instructions = spirvInstructionCount(u.artifacts.spirv);
+    const std::string text = u.artifacts.reflection.dump();
+    auto [it, isNew] = reflections_.try_emplace(text);
+    if (isNew) it->second = std::make_shared<const nlohmann::json>(u.artifacts.reflection);
+    summary.reflection = it->second;
+    for (const auto& [t, text] : u.artifacts.targets) summary.targets.push_back(t);
+    ++stats_.shardUnits;
+    stats_.compiled += u.lookup != ShaderCache::Lookup::Hit;
+    stats_.cacheHits += u.lookup == ShaderCache::Lookup::Hit;
+    stats_.cacheCorrupt += u.lookup == ShaderCache::Lookup::Corrupt;
+    stats_.remoteHits += u.fromRemote;
+    stats_.remoteCorrupt += u.remoteCorrupt;
+    stats_.remoteUploads += u.uploaded;
   }
-  if (!errors.empty()) throw DiagnosticError(errors);
 
+  const ShaderLibrary& lib_;
+  const std::vector<Permutation>& perms_;
+  const BuildOptions& options_;
+  const std::vector<std::string> targets_;
+  const ShaderCache cache_;
+  unsigned jobs_ = 1;
+  std::unordered_map<std::string, UnitSummary> units_;  // by cache key
+  std::vector<std::string> unitKeys_;                   // in first-occurrence order
+  std::map<std::string, std::shared_ptr<const nlohmann::json>> reflections_;
+  std::set<std::string> hashes_;
+  std::vector<Diagnostic> errors_;
+  std::exception_ptr failure_;
+  bool emitFailed_ = false;
+  BuildStats stats_;
+};
+
+}  // namespace
+
+void buildPermutationsStreaming(const ShaderLibrary& lib, const std::vector<Permutation>& perms,
+                                const BuildOptions& options, const BuiltSink& sink, BuildStats* stats) {
+  const auto t0 = Clock::now();
+  StreamingBuild build(lib, perms, options);
+  const size_t window = options.window ? options.window : std::max<size_t>(perms.size(), 1);
+  for (size_t first = 0; first < perms.size(); first += window)
+    build.run(first, std::min(perms.size(), first + window), sink);
   BuildStats s;
-  s.permutations = perms.size();
-  std::set<std::string> hashes;
-  std::vector<bool> reported(units.size(), false);
-  s.units = units.size();
-  s.planDigest = digest;
-  for (const auto& u : units) {
-    if (!u.owned) continue;
-    ++s.shardUnits;
-    s.compiled += u.lookup != ShaderCache::Lookup::Hit;
-    s.cacheHits += u.lookup == ShaderCache::Lookup::Hit;
-    s.cacheCorrupt += u.lookup == ShaderCache::Lookup::Corrupt;
-    s.remoteHits += u.fromRemote;
-    s.remoteCorrupt += u.remoteCorrupt;
-    s.remoteUploads += u.uploaded;
-  }
-  if (options.remote) s.remoteWarning = options.remote->warning();
-  for (size_t i = 0; i < perms.size(); ++i) {
-    const CompileUnit& u = units[unitOf[i]];
-    BuiltPermutation& b = out[i];
-    b.cacheKey = u.cacheKey;
-    b.inShard = u.owned;
-    if (!u.owned) continue;
-    b.artifacts = u.artifacts;
-    b.spirvHash = contentHash(b.artifacts.spirv.data(), b.artifacts.spirv.size() * sizeof(uint32_t));
-    b.fromCache = u.lookup == ShaderCache::Lookup::Hit;
-    // A unit's compile time is reported once, on the first permutation that emitted it.
-    b.compileMs = reported[unitOf[i]] || b.fromCache ? 0 : u.compileMs;
-    reported[unitOf[i]] = true;
-    hashes.insert(b.spirvHash);
-  }
-  s.uniqueSpirv = hashes.size();
+  build.finish(&s);
   s.wallMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   if (stats) *stats = s;
+}
+
+std::vector<BuiltPermutation> buildPermutations(const ShaderLibrary& lib, const std::vector<Permutation>& perms,
+                                                const BuildOptions& options, BuildStats* stats) {
+  BuildOptions whole = options;
+  whole.window = 0;  // one window: every permutation gets its unit's full artifacts
+  std::vector<BuiltPermutation> out(perms.size());
+  buildPermutationsStreaming(
+      lib, perms, whole, [&](size_t i, BuiltPermutation& b) { out[i] = std::move(b); }, stats);
   return out;
 }
 

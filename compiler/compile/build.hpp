@@ -3,6 +3,7 @@
 // on-disk cache; identical emitted GLSL is compiled once. Results come back in input order
 // and are bit-identical at every job count.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,14 +26,19 @@ struct BuildOptions {
   // merge: every unit's artifacts come from these shards; nothing is compiled, no cache is
   // used, and a unit the shards lack is an error (E-SHARD-MISSING).
   const ShardSet* mergeFrom = nullptr;
+  // buildPermutationsStreaming: permutations emitted and compiled per window of this many, so
+  // that memory is bounded by the window, not the build; 0: one window. Output is the same at
+  // every window size (a unit seen in an earlier window is not compiled again).
+  size_t window = 0;
 };
 
 struct BuiltPermutation {
   EmittedShader shader;  // key, GLSL, layout, bricks
   CompiledArtifacts artifacts;
   std::string spirvHash;  // contentHash() of the SPIR-V words (16 hex digits)
-  std::string cacheKey;   // of its compile unit
-  bool inShard = true;    // false: another shard builds it (artifacts empty, nothing to write)
+  size_t spirvInstructions = 0;
+  std::string cacheKey;  // of its compile unit
+  bool inShard = true;   // false: another shard builds it (artifacts empty, nothing to write)
   bool fromCache = false;
   double compileMs = 0;  // 0 for a cache hit, and for a permutation whose GLSL an
                          // earlier one already emitted (compiled once, reported once)
@@ -59,6 +65,17 @@ struct BuildStats {
 // their options (targets.hpp targetOptions), the GLSL, and each included brick's file hash.
 std::string buildCacheKey(const ShaderLibrary& lib, const EmittedShader& shader, bool optimize,
                           const std::vector<std::string>& targets);
+
+// Called for every permutation in input order, after its window is built; it may move from
+// `built`. A permutation whose unit an earlier window built carries that unit's hash,
+// instruction count, reflection and target names, but no code (artifacts.spirv empty, target
+// texts empty): its files were already handed over with the unit's first permutation.
+using BuiltSink = std::function<void(size_t index, BuiltPermutation& built)>;
+
+// The build, streamed window by window (options.window). Errors as buildPermutations; once
+// there is one, the sink is not called again, and the whole list is thrown at the end.
+void buildPermutationsStreaming(const ShaderLibrary& lib, const std::vector<Permutation>& perms,
+                                const BuildOptions& options, const BuiltSink& sink, BuildStats* stats = nullptr);
 
 // Throws DiagnosticError collecting every permutation's errors (GLSL errors at the user's
 // file:line:column, E-TARGET-FAILED, ...); nothing is returned partially.

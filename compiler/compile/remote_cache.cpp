@@ -28,7 +28,10 @@ constexpr size_t kKeyDigits = 32;
 constexpr size_t kMaxBlobBytes = size_t(256) << 20;
 
 [[noreturn]] void badUrl(const std::string& url, const std::string& what) {
-  throw DiagnosticError({{Severity::Error, "E-CACHE-URL", {url, 0, 0}, what,
+  throw DiagnosticError({{Severity::Error,
+                          "E-CACHE-URL",
+                          {url, 0, 0},
+                          what,
                           "give a base URL such as http://cache.example:8080/matbricks"}});
 }
 
@@ -106,7 +109,8 @@ RemoteCache::~RemoteCache() = default;
 
 std::string RemoteCache::blobUrl(const std::string& key) const {
   if (options_.layout == "flat") return options_.url + "/" + key;
-  if (options_.layout == "bazel") return options_.url + "/ac/" + key + std::string(64 - std::min<size_t>(key.size(), 64), '0');
+  if (options_.layout == "bazel")
+    return options_.url + "/ac/" + key + std::string(64 - std::min<size_t>(key.size(), 64), '0');
   return options_.url + "/" + key.substr(0, 2) + "/" + key;
 }
 

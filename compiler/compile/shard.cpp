@@ -56,21 +56,30 @@ std::string planDigest(unsigned count, const std::vector<std::string>& unitKeys)
   return contentHash(text.data(), text.size());
 }
 
-void addShardFiles(PackageWriter& writer, const ShardSpec& spec, const std::string& digest, size_t units,
-                   const nlohmann::json& command, const std::vector<ShardEntry>& entries) {
+ShardWriter::ShardWriter(PackageWriter& writer, const ShardSpec& spec, nlohmann::json command)
+    : writer_(writer), spec_(spec), command_(std::move(command)) {}
+
+void ShardWriter::add(const std::string& cacheKey, const CompiledArtifacts& artifacts,
+                      const std::string& permutationKey) {
+  auto [it, fresh] = byKey_.emplace(cacheKey, entries_.size());
+  if (fresh) {
+    // The first permutation of a unit always carries its code (build.hpp BuiltSink).
+    entries_.push_back({{"key", cacheKey}, {"permutations", nlohmann::json::array()}});
+    writer_.addFile("entries/" + cacheKey + ".mbc", encodeCacheEntry(artifacts));
+  }
+  entries_[it->second]["permutations"].push_back(permutationKey);
+}
+
+void ShardWriter::finish(const std::string& digest, size_t units) {
   nlohmann::json j;
   j["format"] = kShardFormat;
-  j["shard"] = spec.index;
-  j["of"] = spec.count;
+  j["shard"] = spec_.index;
+  j["of"] = spec_.count;
   j["plan"] = digest;
   j["units"] = units;
-  j["command"] = command;
-  j["entries"] = nlohmann::json::array();
-  for (const auto& e : entries) {
-    j["entries"].push_back({{"key", e.key}, {"permutations", e.permutations}});
-    writer.addFile("entries/" + e.key + ".mbc", encodeCacheEntry(*e.artifacts));
-  }
-  writer.addFile("shard.json", j.dump(2) + "\n");
+  j["command"] = command_;
+  j["entries"] = entries_;
+  writer_.addFile("shard.json", j.dump(2) + "\n");
 }
 
 ShardSet ShardSet::open(const std::vector<fs::path>& dirs) {
@@ -105,21 +114,25 @@ ShardSet ShardSet::open(const std::vector<fs::path>& dirs) {
     const nlohmann::json& command = field("command", nlohmann::json::value_t::object);
     const nlohmann::json& entries = field("entries", nlohmann::json::value_t::array);
     if (count == 0 || count > kMaxShards || index == 0 || index > count)
-      shardError("E-SHARD-NOT-SHARD", doc.valueAt("/shard"), "shard " + std::to_string(index) + " of " +
-                                                                 std::to_string(count) + " is not a valid shard");
+      shardError("E-SHARD-NOT-SHARD", doc.valueAt("/shard"),
+                 "shard " + std::to_string(index) + " of " + std::to_string(count) + " is not a valid shard");
     if (firstFile.empty()) {
       firstFile = file.string();
       set.count_ = count;
       set.digest_ = digest;
       set.command_ = command;
     } else if (count != set.count_ || digest != set.digest_ || command != set.command_) {
-      shardError("E-SHARD-MISMATCH", doc.valueAt(count != set.count_ ? "/of" : digest != set.digest_ ? "/plan" : "/command"),
-                 "this shard belongs to another build than " + firstFile + " (" +
-                     (count != set.count_ ? "a split into " + std::to_string(count) + ", not " + std::to_string(set.count_)
-                      : digest != set.digest_ ? "another plan: other inputs, options or tool versions"
-                                              : "another command line") +
-                     ")",
-                 "merge the shards of one 'compile --shard i/N' run");
+      shardError(
+          "E-SHARD-MISMATCH",
+          doc.valueAt(count != set.count_     ? "/of"
+                      : digest != set.digest_ ? "/plan"
+                                              : "/command"),
+          "this shard belongs to another build than " + firstFile + " (" +
+              (count != set.count_     ? "a split into " + std::to_string(count) + ", not " + std::to_string(set.count_)
+               : digest != set.digest_ ? "another plan: other inputs, options or tool versions"
+                                       : "another command line") +
+              ")",
+          "merge the shards of one 'compile --shard i/N' run");
     }
     if (!byIndex.emplace(index, dir).second)
       shardError("E-SHARD-INCOMPLETE", doc.valueAt("/shard"),

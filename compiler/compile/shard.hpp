@@ -41,17 +41,24 @@ inline constexpr const char* kShardFormat = "matbricks-shard-1";
 // Digest of a build's split (see above): 16 hex digits.
 std::string planDigest(unsigned count, const std::vector<std::string>& unitKeys);
 
-// One entry of a shard: a unit's cache key, its artifacts and the permutations using it.
-struct ShardEntry {
-  std::string key;
-  const CompiledArtifacts* artifacts = nullptr;
-  std::vector<std::string> permutations;
-};
+// Writes a shard directory as a streaming build hands its permutations over: each unit's
+// entry when its first permutation arrives, shard.json at the end. `writer` was constructed
+// with kind "shard"; `command` is what `merge` needs to rebuild the plan (the compile
+// command's inputs, cli/compile_run.hpp).
+class ShardWriter {
+ public:
+  ShardWriter(PackageWriter& writer, const ShardSpec& spec, nlohmann::json command);
+  // A permutation of this shard (BuiltPermutation::inShard) with its unit's cache key.
+  void add(const std::string& cacheKey, const CompiledArtifacts& artifacts, const std::string& permutationKey);
+  void finish(const std::string& digest, size_t units);
 
-// Adds shard.json and entries/ to `writer` (constructed with kind "shard"). `command` is what
-// `merge` needs to rebuild the plan: the compile command's inputs (cli/compile_run.hpp).
-void addShardFiles(PackageWriter& writer, const ShardSpec& spec, const std::string& digest, size_t units,
-                   const nlohmann::json& command, const std::vector<ShardEntry>& entries);
+ private:
+  PackageWriter& writer_;
+  ShardSpec spec_;
+  nlohmann::json command_;
+  nlohmann::json entries_ = nlohmann::json::array();
+  std::map<std::string, size_t> byKey_;
+};
 
 // Shard directories given to `merge`: checked to be shards 1..N of one split, each once.
 class ShardSet {
@@ -76,7 +83,7 @@ class ShardSet {
   unsigned count_ = 0;
   std::string digest_;
   nlohmann::json command_;
-  std::vector<std::filesystem::path> dirs_;          // by shard index - 1
+  std::vector<std::filesystem::path> dirs_;               // by shard index - 1
   std::map<std::string, std::filesystem::path> entries_;  // cache key -> entry file
 };
 

@@ -142,62 +142,58 @@ const nlohmann::json* materialParamsBlock(const nlohmann::json& reflection) {
   return nullptr;
 }
 
-std::string packageHeader(const PackageInputs& in, const std::vector<PackagedPermutation>& perms) {
-  std::ostringstream structs, tables;
-  std::map<std::string, std::string> byLayout;  // members + asserts -> struct name
-  std::map<std::string, std::string> declared;  // struct name -> layout, to detect clashes
-  std::vector<std::string> structOf;            // per permutation
-  for (size_t i = 0; i < perms.size(); ++i) {
-    const PackagedPermutation& p = perms[i];
-    const nlohmann::json* reflected = materialParamsBlock(p.built->artifacts.reflection);
-    // No block although the material has run-time parameters: none of them reaches this
-    // permutation's output (an occlusion texture without an environment to occlude, every
-    // texture of an emission-only permutation), so the optimizer removed the block. The module
-    // binds nothing at set 0, binding 2: paramsStruct "" and paramsSize 0 (docs/package.md).
-    if (!reflected) {
-      structOf.emplace_back();
-      continue;
-    }
+HeaderWriter::HeaderWriter(const PackageInputs& in) : in_(in) {}
+
+void HeaderWriter::add(const PackagedPermutation& p) {
+  const nlohmann::json* reflected = materialParamsBlock(p.built->artifacts.reflection);
+  // No block although the material has run-time parameters: none of them reaches this
+  // permutation's output (an occlusion texture without an environment to occlude, every
+  // texture of an emission-only permutation), so the optimizer removed the block. The module
+  // binds nothing at set 0, binding 2: paramsStruct "" and paramsSize 0 (docs/package.md).
+  std::string structName;
+  if (reflected) {
     Block b = blockOf(p, *reflected);
     const std::string layout = b.members + b.asserts;
-    std::string name = identifier(p.perm->material->name) + "_Params";
-    for (int n = 2; declared.count(name) && declared[name] != layout; ++n)
-      name = identifier(p.perm->material->name) + "_Params_" + std::to_string(n);
-    if (!declared.count(name)) {
-      declared[name] = layout;
-      auto [first, fresh] = byLayout.emplace(layout, name);
+    structName = identifier(p.perm->material->name) + "_Params";
+    for (int n = 2; declared_.count(structName) && declared_[structName] != layout; ++n)
+      structName = identifier(p.perm->material->name) + "_Params_" + std::to_string(n);
+    if (!declared_.count(structName)) {
+      declared_[structName] = layout;
+      auto [first, fresh] = byLayout_.emplace(layout, structName);
+      std::ostringstream decl;
       if (fresh)
-        structs << "// std140 block MaterialParamsBlock (set 0, binding 2) of material '" << p.perm->material->name
-                << "'.\nstruct alignas(16) " << name << " {\n"
-                << b.members << "};\n"
-                << replaceName(b.asserts, name) << "\n";
+        decl << "// std140 block MaterialParamsBlock (set 0, binding 2) of material '" << p.perm->material->name
+             << "'.\nstruct alignas(16) " << structName << " {\n"
+             << b.members << "};\n"
+             << replaceName(b.asserts, structName) << "\n";
       else
-        structs << "using " << name << " = " << first->second << ";  // the same block\n\n";
+        decl << "using " << structName << " = " << first->second << ";  // the same block\n\n";
+      structs_ += decl.str();
     }
-    structOf.push_back(name);
   }
-  for (size_t i = 0; i < perms.size(); ++i) {
-    tables << "inline constexpr RecordInput kInputs" << i << "[] = {";
-    for (const auto& r : perms[i].built->shader.layout.inputs)
-      tables << "{" << quoted(r.name) << ", " << r.offset << "u, " << componentCount(r.type) << "u}, ";
-    tables << "};\n";
-  }
-  tables << "\ninline constexpr Permutation kPermutations[] = {\n";
-  for (size_t i = 0; i < perms.size(); ++i) {
-    const PackagedPermutation& p = perms[i];
-    const nlohmann::json* reflected = materialParamsBlock(p.built->artifacts.reflection);
-    const ProbeLayout& l = p.built->shader.layout;
-    tables << "    {" << quoted(p.built->shader.key) << ", " << quoted(p.perm->material->name) << ", "
-           << quoted(p.files.at("spirv")) << ", " << quoted(p.include) << ", " << quoted(structOf[i]) << ", "
-           << (reflected ? reflected->at("size").get<uint64_t>() : 0) << "u, " << l.inStride << "u, " << l.outStride
-           << "u, kInputs" << i << ", " << l.inputs.size() << "u},\n";
-  }
-  tables << "};\n";
-  std::ostringstream out;
+  const size_t i = count_++;
+  const ProbeLayout& l = p.built->shader.layout;
+  std::ostringstream inputs, row;
+  inputs << "inline constexpr RecordInput kInputs" << i << "[] = {";
+  for (const auto& r : l.inputs)
+    inputs << "{" << quoted(r.name) << ", " << r.offset << "u, " << componentCount(r.type) << "u}, ";
+  inputs << "};\n";
+  inputs_.append(inputs.str());
+  row << "    {" << quoted(p.built->shader.key) << ", " << quoted(p.perm->material->name) << ", "
+      << quoted(p.files.at("spirv")) << ", " << quoted(p.include) << ", " << quoted(structName) << ", "
+      << (reflected ? reflected->at("size").get<uint64_t>() : 0) << "u, " << l.inStride << "u, " << l.outStride
+      << "u, kInputs" << i << ", " << l.inputs.size() << "u},\n";
+  rows_.append(row.str());
+}
+
+void HeaderWriter::write(std::ostream& out) const {
   out << "// Generated by matbricks " MB_VERSION " (docs/package.md \"C++ header\"). Do not edit.\n"
-      << kPreamble << "namespace " << in.cppNamespace << " {\n\n"
-      << structs.str() << kTypes << tables.str() << kLookups << "\n}  // namespace " << in.cppNamespace << "\n";
-  return out.str();
+      << kPreamble << "namespace " << in_.cppNamespace << " {\n\n"
+      << structs_ << kTypes;
+  inputs_.copyTo(out);
+  out << "\ninline constexpr Permutation kPermutations[] = {\n";
+  rows_.copyTo(out);
+  out << "};\n" << kLookups << "\n}  // namespace " << in_.cppNamespace << "\n";
 }
 
 }  // namespace mb

@@ -11,9 +11,13 @@ namespace fs = std::filesystem;
 
 std::string absolutePath(const fs::path& p) { return fs::absolute(p).lexically_normal().generic_string(); }
 
+std::string escaped(const std::string& path);
+
+}  // namespace
+
 // Files named by `#line N "file"` directives: shader library files appear as
 // "shaderlib/<relative>" (ShaderLibrary::displayPath), user surface code as its own path.
-void addLineFiles(const ShaderLibrary& lib, const std::string& glsl, std::set<std::string>& out) {
+void addGlslInputs(const ShaderLibrary& lib, const std::string& glsl, std::set<std::string>& out) {
   std::istringstream in(glsl);
   const std::string libPrefix = ShaderLibrary::displayPath("");
   for (std::string line; std::getline(in, line);) {
@@ -28,6 +32,8 @@ void addLineFiles(const ShaderLibrary& lib, const std::string& glsl, std::set<st
   }
 }
 
+namespace {
+
 std::string escaped(const std::string& path) {
   std::string e;
   for (char c : path) {
@@ -41,9 +47,8 @@ std::string escaped(const std::string& path) {
 }  // namespace
 
 std::vector<std::string> compileInputs(const ShaderLibrary& lib, const std::vector<Permutation>& perms,
-                                       const std::vector<BuiltPermutation>& built,
-                                       const std::vector<std::string>& extra) {
-  std::set<std::string> files;
+                                       const std::set<std::string>& glslInputs, const std::vector<std::string>& extra) {
+  std::set<std::string> files = glslInputs;
   for (const auto& e : extra)
     if (!e.empty()) files.insert(absolutePath(e));
   files.insert(absolutePath(lib.root() / "manifest.json"));
@@ -58,7 +63,6 @@ std::vector<std::string> compileInputs(const ShaderLibrary& lib, const std::vect
     if (m.surface.present() && fs::exists(m.surface.where.file)) files.insert(absolutePath(m.surface.where.file));
     files.insert(absolutePath(lib.root() / "models" / (m.model + ".json")));
   }
-  for (const auto& b : built) addLineFiles(lib, b.shader.glsl, files);
   return {files.begin(), files.end()};
 }
 

@@ -2,6 +2,7 @@
 // Makefile syntax, so that a build system (CMake's add_custom_command DEPFILE) reruns the
 // compile when any of them changes.
 #pragma once
+#include <set>
 #include <string>
 #include <vector>
 
@@ -11,12 +12,15 @@
 
 namespace mb {
 
+// Adds every GLSL file an emitted permutation includes (from its #line directives), as an
+// absolute path, to `out`: called per permutation as a streaming build hands them over.
+void addGlslInputs(const ShaderLibrary& lib, const std::string& glsl, std::set<std::string>& out);
+
 // Absolute, sorted, each once: `extra` (the scene file), every permutation's material source,
-// its macro-form #includes and surface file, the shader library's manifest.json, slot.json files and model JSONs, and
-// every GLSL file the emitted permutations include (from their #line directives).
+// its macro-form #includes and surface file, the shader library's manifest.json, slot.json
+// files and model JSONs, and `glslInputs` (addGlslInputs over the emitted permutations).
 std::vector<std::string> compileInputs(const ShaderLibrary& lib, const std::vector<Permutation>& perms,
-                                       const std::vector<BuiltPermutation>& built,
-                                       const std::vector<std::string>& extra);
+                                       const std::set<std::string>& glslInputs, const std::vector<std::string>& extra);
 
 // "target: dep1 \\\n  dep2\n" with spaces, '#' and '$' escaped the way Make and Ninja read them.
 std::string makeDepfile(const std::string& target, const std::vector<std::string>& deps);

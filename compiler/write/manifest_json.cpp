@@ -43,7 +43,7 @@ nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutatio
       {"bricks_included", b.shader.bricks},
       {"parameters", nlohmann::json::array()},
       {"spirv_hash_xxh64", b.spirvHash},
-      {"spirv_instructions", spirvInstructionCount(b.artifacts.spirv)},
+      {"spirv_instructions", b.spirvInstructions},
       {"files", p.files},
       {"include", p.include},
       {"needs_fetch_hooks", needsFetchHooks(perm)},
@@ -68,35 +68,59 @@ nlohmann::json recordLayoutJson(const ProbeLayout& layout) {
           {"output_stride", layout.outStride}};
 }
 
-nlohmann::json packageManifest(const PackageInputs& in, const std::vector<PackagedPermutation>& perms) {
-  std::vector<std::string> hashes;
-  for (const auto& p : perms) hashes.push_back(p.built->spirvHash);
-  std::sort(hashes.begin(), hashes.end());
-  const size_t unique = static_cast<size_t>(std::unique(hashes.begin(), hashes.end()) - hashes.begin());
+ManifestWriter::ManifestWriter(const PackageInputs& in) : in_(in) {}
+
+void ManifestWriter::add(const PackagedPermutation& p) {
+  hashes_.insert(p.built->spirvHash);
+  // The entry as dump(2) prints it two levels deep (an element of the top-level array).
+  std::string text = permutationJson(in_, p).dump(2);
+  std::string indented = count_ ? ",\n    " : "    ";
+  for (char c : text) {
+    indented += c;
+    if (c == '\n') indented += "    ";
+  }
+  entries_.append(indented);
+  ++count_;
+}
+
+void ManifestWriter::write(std::ostream& out) const {
   nlohmann::json targets = nlohmann::json::array();
   for (const auto& t : allTargets())
-    if (t == "spirv" || std::find(in.targets.begin(), in.targets.end(), t) != in.targets.end()) targets.push_back(t);
+    if (t == "spirv" || std::find(in_.targets.begin(), in_.targets.end(), t) != in_.targets.end()) targets.push_back(t);
+  // The permutations are spliced in where this placeholder is printed: the document is what
+  // nlohmann's dump(2) gives for the whole manifest, without holding it in memory.
+  const std::string placeholder = "@@matbricks-permutations@@";
   nlohmann::json manifest{{"format", 1},
                           {"generator", "matbricks " MB_VERSION},
                           {"toolchain", toolchainVersion()},
-                          {"header", in.headerName},
-                          {"namespace", in.cppNamespace},
+                          {"header", in_.headerName},
+                          {"namespace", in_.cppNamespace},
                           {"targets", std::move(targets)},
-                          {"counts", {{"required", perms.size()}, {"unique_spirv", unique}}},
+                          {"counts", {{"required", count_}, {"unique_spirv", hashes_.size()}}},
                           {"kernel",
                            {{"records", {{"set", 0}, {"binding", 0}}},
                             {"results", {{"set", 0}, {"binding", 1}}},
                             {"material_params", {{"set", 0}, {"binding", 2}, {"layout", "std140"}}},
                             {"push_constant", "uint count"}}},
-                          {"permutations", nlohmann::json::array()}};
-  if (!in.sceneFile.empty()) {
-    manifest["scene"] = {{"file", in.sceneFile},
-                         {"possible", in.plan->possible},
-                         {"possible_axes", axesJson(in.plan->possibleAxes)},
-                         {"required_axes", axesJson(in.plan->requiredAxes)}};
+                          {"permutations", placeholder}};
+  if (!in_.sceneFile.empty()) {
+    manifest["scene"] = {{"file", in_.sceneFile},
+                         {"possible", in_.plan->possible},
+                         {"possible_axes", axesJson(in_.plan->possibleAxes)},
+                         {"required_axes", axesJson(in_.plan->requiredAxes)}};
   }
-  for (const auto& p : perms) manifest["permutations"].push_back(permutationJson(in, p));
-  return manifest;
+  const std::string text = manifest.dump(2);
+  const std::string quoted = "\"permutations\": \"" + placeholder + "\"";
+  const size_t at = text.find(quoted);
+  out << text.substr(0, at) << "\"permutations\": ";
+  if (count_ == 0) {
+    out << "[]";
+  } else {
+    out << "[\n";
+    entries_.copyTo(out);
+    out << "\n  ]";
+  }
+  out << text.substr(at + quoted.size()) << "\n";
 }
 
 }  // namespace mb

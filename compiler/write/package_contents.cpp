@@ -11,34 +11,46 @@
 
 namespace mb {
 
-void addPackageFiles(PackageWriter& pkg, const PackageInputs& in) {
-  std::vector<PackagedPermutation> perms;
-  std::set<std::string> written;  // SPIR-V hashes whose files are already added
-  for (size_t i = 0; i < in.built->size(); ++i) {
-    PackagedPermutation p;
-    p.perm = &in.plan->required[i];
-    p.built = &(*in.built)[i];
-    const std::string& hash = p.built->spirvHash;
-    const bool fresh = written.insert(hash).second;
-    for (const auto& target : allTargets()) {
-      const bool isSpirv = target == "spirv";
-      auto text = p.built->artifacts.targets.find(target);
-      if (!isSpirv && text == p.built->artifacts.targets.end()) continue;
-      std::string path = target + "/" + hash + targetExtension(target);
-      p.files[target] = path;
-      // Identical SPIR-V gives identical cross-compiled text: one file serves every permutation.
-      if (!fresh) continue;
-      if (isSpirv)
-        pkg.addFile(path, p.built->artifacts.spirv);
-      else
-        pkg.addFile(path, text->second);
-    }
-    p.include = "include/" + p.built->shader.key + ".glsl";
-    pkg.addFile(p.include, engineInclude(p));
-    perms.push_back(std::move(p));
+PackageStream::PackageStream(PackageWriter& pkg, const PackageInputs& in)
+    : pkg_(pkg), in_(in), manifest_(new ManifestWriter(in)), header_(new HeaderWriter(in)) {}
+
+PackageStream::~PackageStream() = default;
+
+void PackageStream::add(const Permutation& perm, const BuiltPermutation& built) {
+  PackagedPermutation p;
+  p.perm = &perm;
+  p.built = &built;
+  const std::string& hash = built.spirvHash;
+  const bool fresh = written_.insert(hash).second;
+  for (const auto& target : allTargets()) {
+    const bool isSpirv = target == "spirv";
+    auto text = built.artifacts.targets.find(target);
+    if (!isSpirv && text == built.artifacts.targets.end()) continue;
+    std::string path = target + "/" + hash + targetExtension(target);
+    p.files[target] = path;
+    // Identical SPIR-V gives identical cross-compiled text: one file serves every permutation.
+    // The first permutation of a hash always carries its code (build.hpp BuiltSink).
+    if (!fresh) continue;
+    if (isSpirv)
+      pkg_.addFile(path, built.artifacts.spirv);
+    else
+      pkg_.addFile(path, text->second);
   }
-  pkg.addFile("manifest.json", packageManifest(in, perms).dump(2) + "\n");
-  pkg.addFile(in.headerName, packageHeader(in, perms));
+  p.include = "include/" + built.shader.key + ".glsl";
+  pkg_.addFile(p.include, engineInclude(p));
+  manifest_->add(p);
+  header_->add(p);
+}
+
+void PackageStream::finish() {
+  pkg_.addFileStreamed("manifest.json", [&](std::ostream& out) { manifest_->write(out); });
+  pkg_.addFileStreamed(in_.headerName, [&](std::ostream& out) { header_->write(out); });
+}
+
+void addPackageFiles(PackageWriter& pkg, const PackageInputs& in) {
+  PackageStream stream(pkg, in);
+  for (size_t i = 0; i < in.built->size(); ++i) stream.add(in.plan->required[i], (*in.built)[i]);
+  stream.finish();
 }
 
 }  // namespace mb

@@ -9,6 +9,8 @@
 //                                 with static_asserts on every offset (from the reflection),
 //                                 and a constexpr table of permutation keys -> SPIR-V file
 #pragma once
+#include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -29,7 +31,31 @@ struct PackageInputs {
   std::string cppNamespace = "matbricks_materials";
 };
 
-// Adds every file above to `pkg`; the caller commits it atomically.
+class ManifestWriter;
+class HeaderWriter;
+
+// The package, one permutation at a time, as a streaming build hands them over
+// (build.hpp buildPermutationsStreaming): each permutation's files go to `pkg` at once (into
+// its staging directory when pkg.stage() was called), and only what the manifest and header
+// need of it is kept, on disk. `in.built` is not used.
+class PackageStream {
+ public:
+  PackageStream(PackageWriter& pkg, const PackageInputs& in);
+  ~PackageStream();
+  // In plan order; `perm` and `built` need only live during the call.
+  void add(const Permutation& perm, const BuiltPermutation& built);
+  // manifest.json and the header; then the caller commits `pkg`.
+  void finish();
+
+ private:
+  PackageWriter& pkg_;
+  const PackageInputs& in_;
+  std::set<std::string> written_;  // SPIR-V hashes whose files are already added
+  std::unique_ptr<ManifestWriter> manifest_;
+  std::unique_ptr<HeaderWriter> header_;
+};
+
+// Adds every file above to `pkg` for a whole build (`in.built`); the caller commits it.
 void addPackageFiles(PackageWriter& pkg, const PackageInputs& in);
 
 }  // namespace mb

@@ -5,12 +5,15 @@
 // package_contents.cpp decides the file names (deduplicated by SPIR-V hash) and adds them.
 #pragma once
 #include <map>
+#include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "write/package_contents.hpp"
+#include "write/spill_file.hpp"
 
 namespace mb {
 
@@ -30,10 +33,39 @@ bool needsFetchHooks(const Permutation& perm);
 
 // The Engine record layout (offsets in floats) as the manifest stores it.
 nlohmann::json recordLayoutJson(const ProbeLayout& layout);
-nlohmann::json packageManifest(const PackageInputs& in, const std::vector<PackagedPermutation>& perms);
 
-// The C++17 header; its struct offsets come from each module's SPIRV-Cross reflection.
-std::string packageHeader(const PackageInputs& in, const std::vector<PackagedPermutation>& perms);
+// manifest.json, one permutation at a time: each entry is printed when added and kept in a
+// spill file, so memory stays flat at any package size. write() gives the bytes nlohmann's
+// dump(2) gives for the whole document (sorted keys, 2-space indent).
+class ManifestWriter {
+ public:
+  explicit ManifestWriter(const PackageInputs& in);
+  void add(const PackagedPermutation& p);
+  void write(std::ostream& out) const;
+
+ private:
+  const PackageInputs& in_;
+  std::set<std::string> hashes_;
+  size_t count_ = 0;
+  SpillFile entries_;
+};
+
+// The C++17 header, one permutation at a time; its struct offsets come from each module's
+// SPIRV-Cross reflection. Only the distinct parameter structs stay in memory.
+class HeaderWriter {
+ public:
+  explicit HeaderWriter(const PackageInputs& in);
+  void add(const PackagedPermutation& p);
+  void write(std::ostream& out) const;
+
+ private:
+  const PackageInputs& in_;
+  std::map<std::string, std::string> byLayout_;  // members + asserts -> struct name
+  std::map<std::string, std::string> declared_;  // struct name -> layout, to detect clashes
+  std::string structs_;
+  size_t count_ = 0;
+  SpillFile inputs_, rows_;
+};
 
 // The material parameter block (set 0, binding 2) in a module's reflection, or null.
 const nlohmann::json* materialParamsBlock(const nlohmann::json& reflection);

@@ -73,15 +73,18 @@ void cleanLeftovers(const fs::path& target) {
     for (const auto& p : list) fs::remove_all(p, ec);
 }
 
-void writeStaged(const fs::path& staging, const std::string& marker, const std::map<std::string, std::string>& files) {
-  auto writeOne = [](const fs::path& p, const std::string& bytes) {
-    std::ofstream out(p, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) ioError(p, "cannot write file");
-  };
-  // The marker first: from now on a leftover staging directory is recognisably ours.
-  writeOne(staging / kOutputMarkerName, marker);
+void writeOne(const fs::path& p, const std::function<void(std::ostream&)>& write) {
+  std::ofstream out(p, std::ios::binary);
+  write(out);
+  out.close();
+  if (!out) ioError(p, "cannot write file");
+}
+
+void writeOne(const fs::path& p, const std::string& bytes) {
+  writeOne(p, [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
+}
+
+void writeStaged(const fs::path& staging, const std::map<std::string, std::string>& files) {
   size_t written = 0;
   for (const auto& [rel, bytes] : files) {
     if (written++ == files.size() / 2) faultPoint("staging-half");
@@ -91,34 +94,99 @@ void writeStaged(const fs::path& staging, const std::string& marker, const std::
   }
 }
 
-}  // namespace
-
-void PackageWriter::addFile(const std::string& relativePath, std::string bytes) {
-  files_[relativePath] = std::move(bytes);
-}
-
-void PackageWriter::addFile(const std::string& relativePath, const std::vector<uint32_t>& words) {
-  files_[relativePath] = std::string(reinterpret_cast<const char*>(words.data()), words.size() * 4);
-}
-
-void PackageWriter::commit(const fs::path& dir) const {
-  fs::path target = fs::absolute(dir).lexically_normal();
-  if (target.filename().empty()) target = target.parent_path();
-  // The CLI checked before any work; checked again here, right before replacing anything.
-  checkOutputDirectory(target);
+// Runs `write`; if it fails, the staging directory goes and the failure is reported as E-IO.
+void writeIntoStaging(const fs::path& staging, const std::function<void()>& write) {
   std::error_code ec;
-  fs::create_directories(target.parent_path(), ec);
-  cleanLeftovers(target);
-  const fs::path staging = temporaryPath(target, "new");
   try {
-    fs::create_directory(staging);
-    writeStaged(staging, outputMarkerText(kind_), files_);
+    write();
   } catch (const fs::filesystem_error& e) {
     fs::remove_all(staging, ec);
     ioError(e.path1(), std::string("cannot write package: ") + e.code().message());
   } catch (...) {
     fs::remove_all(staging, ec);
     throw;
+  }
+}
+
+// A staging directory beside `target` holding only the marker, written first: from then on a
+// leftover staging directory is recognisably ours.
+fs::path createStaging(const fs::path& target, const std::string& marker) {
+  checkOutputDirectory(target);
+  std::error_code ec;
+  fs::create_directories(target.parent_path(), ec);
+  cleanLeftovers(target);
+  const fs::path staging = temporaryPath(target, "new");
+  writeIntoStaging(staging, [&] {
+    fs::create_directory(staging);
+    writeOne(staging / kOutputMarkerName, marker);
+  });
+  return staging;
+}
+
+fs::path normalTarget(const fs::path& dir) {
+  fs::path target = fs::absolute(dir).lexically_normal();
+  if (target.filename().empty()) target = target.parent_path();
+  return target;
+}
+
+}  // namespace
+
+PackageWriter::~PackageWriter() {
+  std::error_code ec;
+  if (!staging_.empty()) fs::remove_all(staging_, ec);
+}
+
+void PackageWriter::stage(const fs::path& dir) {
+  stagedFor_ = normalTarget(dir);
+  staging_ = createStaging(stagedFor_, outputMarkerText(kind_));
+}
+
+void PackageWriter::addFileStreamed(const std::string& relativePath, const std::function<void(std::ostream&)>& write) {
+  if (staging_.empty()) {
+    std::ostringstream text;
+    write(text);
+    files_[relativePath] = text.str();
+    return;
+  }
+  // As the buffered writer's "staging-half": some files written, not all.
+  if (++streamed_ == 2) faultPoint("staging-half");
+  const fs::path p = staging_ / relativePath;
+  std::error_code ec;
+  fs::create_directories(p.parent_path(), ec);
+  try {
+    writeOne(p, write);
+  } catch (const fs::filesystem_error& e) {
+    ioError(e.path1(), std::string("cannot write package: ") + e.code().message());
+  }
+}
+
+void PackageWriter::addFile(const std::string& relativePath, std::string bytes) {
+  if (staging_.empty()) {
+    files_[relativePath] = std::move(bytes);
+    return;
+  }
+  addFileStreamed(relativePath,
+                  [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
+}
+
+void PackageWriter::addFile(const std::string& relativePath, const std::vector<uint32_t>& words) {
+  addFile(relativePath, std::string(reinterpret_cast<const char*>(words.data()), words.size() * 4));
+}
+
+void PackageWriter::commit(const fs::path& dir) {
+  const fs::path target = normalTarget(dir);
+  std::error_code ec;
+  fs::path staging;
+  if (!staging_.empty()) {
+    if (target != stagedFor_) ioError(target, "internal: committed to another directory than staged");
+    // The CLI checked before any work, stage() when it began; checked again right before
+    // replacing anything.
+    checkOutputDirectory(target);
+    staging = staging_;
+    staging_.clear();  // from here on, this function owns it
+  } else {
+    staging = createStaging(target, outputMarkerText(kind_));
+    writeIntoStaging(staging, [&] { writeStaged(staging, files_); });
   }
   faultPoint("before-swap");
   const bool replacing = fs::exists(target) && !fs::is_empty(target, ec);

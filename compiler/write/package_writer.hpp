@@ -2,6 +2,8 @@
 // directory and renamed into place at the end, so a failure never leaves a partial package.
 #pragma once
 #include <filesystem>
+#include <functional>
+#include <ostream>
 #include <map>
 #include <string>
 #include <utility>
@@ -13,13 +15,24 @@ class PackageWriter {
  public:
   // `kind` goes into the directory's marker (write/output_paths.hpp): "package", "bench".
   explicit PackageWriter(std::string kind = "package") : kind_(std::move(kind)) {}
+  // Removes the staging directory of a streaming writer that was never committed.
+  ~PackageWriter();
+  PackageWriter(const PackageWriter&) = delete;
+  PackageWriter& operator=(const PackageWriter&) = delete;
+
+  // Streaming: checks `dir` as commit does, then creates the staging directory beside it and
+  // its marker; from then on every file goes straight to disk, so memory does not grow with
+  // the package. Without it, files are kept in memory until commit. Throws DiagnosticError.
+  void stage(const std::filesystem::path& dir);
   void addFile(const std::string& relativePath, std::string bytes);
   void addFile(const std::string& relativePath, const std::vector<uint32_t>& words);
-  // Writes all files and the marker to `dir`: creates it, fills it when empty, or replaces it
-  // in one atomic step when it carries the marker (E-OUTPUT-NOT-PACKAGE otherwise). Temporaries
-  // a killed run left beside it are removed first. Throws DiagnosticError on I/O failure,
-  // leaving `dir` as it was.
-  void commit(const std::filesystem::path& dir) const;
+  // A large file written piece by piece (the manifest of 10^5 permutations).
+  void addFileStreamed(const std::string& relativePath, const std::function<void(std::ostream&)>& write);
+  // Writes all files and the marker to `dir` (the staged one, when streaming): creates it,
+  // fills it when empty, or replaces it in one atomic step when it carries the marker
+  // (E-OUTPUT-NOT-PACKAGE otherwise). Temporaries a killed run left beside it are removed
+  // first. Throws DiagnosticError on I/O failure, leaving `dir` as it was.
+  void commit(const std::filesystem::path& dir);
   // Writes one file via a temporary sibling and a rename (replaceFileAtomically); throws
   // DiagnosticError (E-IO) when that fails.
   static void writeFileAtomically(const std::filesystem::path& file, const std::string& bytes);
@@ -27,6 +40,9 @@ class PackageWriter {
  private:
   std::string kind_;
   std::map<std::string, std::string> files_;
+  std::filesystem::path staging_;  // streaming: where files go; empty otherwise
+  std::filesystem::path stagedFor_;
+  size_t streamed_ = 0;
 };
 
 // Writes `bytes` to a temporary sibling of `file` whose name no other writer uses (process id,
