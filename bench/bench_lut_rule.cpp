@@ -60,19 +60,32 @@ void parallelFor(size_t n, const F& f) {
 
 bool setField(lut::QuadratureRule& r, const std::string& key, double v) {
   const int n = static_cast<int>(v);
-  if (key == "ggxFullOuter") r.ggxFullOuter = n;
-  else if (key == "ggxFullInner") r.ggxFullInner = n;
-  else if (key == "ggxPartialOuter") r.ggxPartialOuter = n;
-  else if (key == "ggxPartialInner") r.ggxPartialInner = n;
-  else if (key == "clothOuter") r.clothOuter = n;
-  else if (key == "clothInner") r.clothInner = n;
-  else if (key == "ggxPanelWidth") r.ggxPanelWidth = v;
-  else if (key == "clothPanelWidth") r.clothPanelWidth = v;
-  else if (key == "ggxBelowPeak") r.ggxBelowPeak = v;
-  else if (key == "ggxAbovePeak") r.ggxAbovePeak = v;
-  else if (key == "clothBelowPeak") r.clothBelowPeak = v;
-  else if (key == "clothAbovePeak") r.clothAbovePeak = v;
-  else return false;
+  if (key == "ggxFullOuter")
+    r.ggxFullOuter = n;
+  else if (key == "ggxFullInner")
+    r.ggxFullInner = n;
+  else if (key == "ggxPartialOuter")
+    r.ggxPartialOuter = n;
+  else if (key == "ggxPartialInner")
+    r.ggxPartialInner = n;
+  else if (key == "clothOuter")
+    r.clothOuter = n;
+  else if (key == "clothInner")
+    r.clothInner = n;
+  else if (key == "ggxPanelWidth")
+    r.ggxPanelWidth = v;
+  else if (key == "clothPanelWidth")
+    r.clothPanelWidth = v;
+  else if (key == "ggxBelowPeak")
+    r.ggxBelowPeak = v;
+  else if (key == "ggxAbovePeak")
+    r.ggxAbovePeak = v;
+  else if (key == "clothBelowPeak")
+    r.clothBelowPeak = v;
+  else if (key == "clothAbovePeak")
+    r.clothAbovePeak = v;
+  else
+    return false;
   return true;
 }
 
@@ -84,17 +97,18 @@ nlohmann::json measure(const std::string& name, const lut::QuadratureRule& rule,
     const auto r = lut::evaluateQuadratureRule(rule, lut::texelCentre(t.i, t.size), lut::texelCentre(t.j, t.size),
                                                &evaluations[k]);
     for (uint32_t c = 0; c < lut::kChannels; ++c)
-      ratio[k][c] = std::fabs(r[c] - t.exact[c]) / (c == lut::kChannelCloth
-                                                        ? lut::kClothRelBound * std::fabs(t.exact[c]) + lut::kClothAbsFloor
-                                                        : lut::kExactAbsBound);
+      ratio[k][c] = std::fabs(r[c] - t.exact[c]) /
+                    (c == lut::kChannelCloth ? lut::kClothRelBound * std::fabs(t.exact[c]) + lut::kClothAbsFloor
+                                             : lut::kExactAbsBound);
   });
   nlohmann::json channels = nlohmann::json::object();
   for (uint32_t c = 0; c < lut::kChannels; ++c) {
     size_t worst = 0;
     for (size_t k = 0; k < texels.size(); ++k)
       if (ratio[k][c] > ratio[worst][c]) worst = k;
-    channels[lut::kChannelNames[c]] = {{"max_error_over_bound", ratio[worst][c]},
-                                       {"at", {{"size", texels[worst].size}, {"i", texels[worst].i}, {"j", texels[worst].j}}}};
+    channels[lut::kChannelNames[c]] = {
+        {"max_error_over_bound", ratio[worst][c]},
+        {"at", {{"size", texels[worst].size}, {"i", texels[worst].i}, {"j", texels[worst].j}}}};
   }
   double sum64 = 0;
   long count64 = 0, most = 0;
@@ -122,8 +136,8 @@ nlohmann::json measure(const std::string& name, const lut::QuadratureRule& rule,
 int main(int argc, char** argv) {
   std::vector<Texel> texels = texelSet();
   parallelFor(texels.size(), [&](size_t k) {
-    texels[k].exact = lut::quadrature(lut::texelCentre(texels[k].i, texels[k].size),
-                                      lut::texelCentre(texels[k].j, texels[k].size));
+    texels[k].exact =
+        lut::quadrature(lut::texelCentre(texels[k].i, texels[k].size), lut::texelCentre(texels[k].j, texels[k].size));
   });
   std::vector<std::pair<std::string, lut::QuadratureRule>> rules;
   if (argc > 1) {
