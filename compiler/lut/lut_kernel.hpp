@@ -35,7 +35,8 @@ struct LutBricks {
 // mb_bench_lut_rule (bench/README.md) whose error *in double* stays below 1/8 of the LUT's
 // bounds (1e-4 absolute, 1e-3 relative) at every texel centre tested (16^2 and 64^2 whole, the
 // first and last four rows and columns and a 32-per-axis sub-grid of 128^2 ... 4096^2). The
-// other 7/8 are left for the kernel's fp32 rounding (measured: ~0.05 of the bound) and margin.
+// other 7/8 are left for the kernel's fp32 rounding (measured: the GPU table is within 3.9e-7
+// absolute and 1.3e-6 relative of the double rule at 16^2, test_lut.cpp) and margin.
 struct QuadratureRule {
   // GGX where every azimuth has n.l > 0 (theta_h <= thetaFull): the integrand is analytic in
   // x, so plain Gauss-Legendre; the azimuth range is [0, pi], whose node cosines are constants.
