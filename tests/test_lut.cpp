@@ -108,6 +108,38 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("the quadrature kernel computes the rule that mb_bench_lut_rule measures in double", "[lut][vulkan]") {
+  // The node counts are chosen from the double evaluation of the rule (evaluateQuadratureRule,
+  // bench/bench_lut_rule.cpp); this ties it to the kernel: the GPU table differs from it by
+  // fp32 rounding only, far below the quadrature errors that separate the candidate rules
+  // (~1e-5 absolute and up; docs/lut.md). Changing any node count moves values by more.
+  const GpuLut lut = quadratureLut(16);
+  const std::vector<float> inputs = texelInputs(16);
+  double worstAbs = 0, worstRel = 0;
+  for (uint32_t t = 0; t < 16 * 16; ++t) {
+    const auto rule = evaluateQuadratureRule({}, inputs[2 * t], inputs[2 * t + 1]);
+    for (uint32_t c = 0; c < kChannels; ++c) {
+      const double d = std::abs(lut.table.values[3 * t + c] - rule[c]);
+      if (c == kChannelCloth)
+        worstRel = std::max(worstRel, d / std::max(std::abs(rule[c]), kClothAbsFloor));
+      else
+        worstAbs = std::max(worstAbs, d);
+    }
+  }
+  INFO("GPU - double rule: channels 0/1 max abs " << worstAbs << ", cloth max rel " << worstRel);
+  CHECK(worstAbs < 2e-6);
+  CHECK(worstRel < 2e-5);
+  // The comparison separates rules: one count lower moves the table by more than that.
+  QuadratureRule coarser;
+  coarser.ggxPartialOuter = 12;
+  double moved = 0;
+  for (uint32_t t = 0; t < 16 * 16; ++t)
+    moved = std::max(moved, std::abs(evaluateQuadratureRule(coarser, inputs[2 * t], inputs[2 * t + 1])[kChannelGv] -
+                                     lut.table.values[3 * t + kChannelGv]));
+  INFO("ggxPartialOuter 12 instead of 16 moves channel 1 by up to " << moved);
+  CHECK(moved > 1e-5);
+}
+
 TEST_CASE("the quadrature kernel meets the bounds at the extreme texels of 1024^2 and 4096^2 tables", "[lut][vulkan]") {
   // The grazing column and the smoothest rows of the largest tables (alpha down to
   // (0.5/4096)^2 = 1.5e-8), run as single records without generating the whole table.

@@ -1,9 +1,12 @@
 #include "lut/lut_kernel.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <set>
 
 #include "common/quadrature_reference.hpp"
+#include "common/reference.hpp"
 #include "emit/glsl_writer.hpp"
 
 namespace mb::lut {
@@ -35,20 +38,8 @@ void includeOnce(const ShaderLibrary& lib, const std::string& id, std::set<std::
 
 std::string fmt(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", v);
+  std::snprintf(buf, sizeof buf, "%.2f", v);
   return buf;
-}
-
-// `const float name[N] = float[](...)` with shortest round-trip literals.
-template <size_t N>
-std::string floatArray(const char* name, const std::array<double, N>& v) {
-  std::string out = "const float " + std::string(name) + "[" + std::to_string(N) + "] = float[](";
-  char buf[32];
-  for (size_t k = 0; k < N; ++k) {
-    std::snprintf(buf, sizeof buf, "%.9g", v[k]);
-    out += std::string(k ? ", " : "") + buf;
-  }
-  return out + ");";
 }
 
 void writeKernelHead(GlslWriter& w, const ShaderLibrary& lib, const std::vector<std::string>& bricks,
@@ -73,60 +64,232 @@ void setKernelLayout(EmittedShader& out) {
 
 }  // namespace
 
-EmittedShader emitDfgQuadratureKernel(const ShaderLibrary& lib, const LutBricks& bricks) {
+namespace {
+
+// Nodes and weights of a rule on [0, 1] (Int_0^1 f ~ sum w_k f(s_k)).
+struct Nodes {
+  std::vector<double> s, w;
+};
+enum class Spacing { Plain, Cosine, Sine };
+
+// Gauss-Legendre at u_k on [0, 1], after a substitution s(u): plain s = u; cosine s = (1 -
+// cos(pi u))/2 (dense at both ends: removes square-root behaviour there); sine s = sin(pi u/2)
+// (dense at s = 1 only).
+Nodes ruleNodes(int n, Spacing spacing) {
+  std::vector<double> x(n), w(n);
+  ref::detail_quad::gaussLegendreNodes(n, x.data(), w.data());
+  Nodes out;
+  for (int k = 0; k < n; ++k) {
+    const double u = 0.5 * (1.0 + x[k]), wu = 0.5 * w[k];
+    switch (spacing) {
+      case Spacing::Plain:
+        out.s.push_back(u), out.w.push_back(wu);
+        break;
+      case Spacing::Cosine:
+        out.s.push_back(0.5 * (1.0 - std::cos(ref::kPi * u))),
+            out.w.push_back(wu * 0.5 * ref::kPi * std::sin(ref::kPi * u));
+        break;
+      case Spacing::Sine:
+        out.s.push_back(std::sin(0.5 * ref::kPi * u)),
+            out.w.push_back(wu * 0.5 * ref::kPi * std::cos(0.5 * ref::kPi * u));
+        break;
+    }
+  }
+  return out;
+}
+
+// The rule's node tables, shared by the GLSL emitter and the double evaluation.
+struct RuleNodes {
+  Nodes ggxFull, ggxPartial, cloth;                 // outer, on [0, 1] of a panel
+  Nodes ggxFullInner, ggxPartialInner, clothInner;  // inner, on [0, 1] of [0, phiMax]
+  explicit RuleNodes(const QuadratureRule& r)
+      : ggxFull(ruleNodes(r.ggxFullOuter, Spacing::Plain)),
+        ggxPartial(ruleNodes(r.ggxPartialOuter, Spacing::Cosine)),
+        cloth(ruleNodes(r.clothOuter, Spacing::Cosine)),
+        ggxFullInner(ruleNodes(r.ggxFullInner, Spacing::Plain)),
+        ggxPartialInner(ruleNodes(r.ggxPartialInner, Spacing::Sine)),
+        clothInner(ruleNodes(r.clothInner, Spacing::Plain)) {}
+};
+
+std::string floatArray(const std::string& name, const std::vector<double>& v) {
+  std::string out = "const float " + name + "[" + std::to_string(v.size()) + "] = float[](";
+  char buf[32];
+  for (size_t k = 0; k < v.size(); ++k) {
+    std::snprintf(buf, sizeof buf, "%.9g", v[k]);
+    out += std::string(k ? ", " : "") + buf;
+  }
+  return out + ");";
+}
+
+// The composite rule over [a, b]: panels no wider than `width`, each with the nodes q.
+template <class G>
+void composite(double a, double b, double width, const Nodes& q, const G& g) {
+  if (!(b > a)) return;
+  const int panels = static_cast<int>(std::max(1.0, std::ceil((b - a) / width)));
+  const double span = (b - a) / panels;
+  for (int p = 0; p < panels; ++p)
+    for (size_t k = 0; k < q.s.size(); ++k) g(a + span * (p + q.s[k]), span * q.w[k]);
+}
+
+}  // namespace
+
+std::array<double, 3> evaluateQuadratureRule(const QuadratureRule& rule, double NoV, double perceptualRoughness,
+                                             long* evaluations) {
+  const RuleNodes nodes(rule);
+  const double alpha = perceptualRoughness * perceptualRoughness, a2 = alpha * alpha;
+  const double sinV = std::sqrt(1.0 - NoV * NoV);
+  long count = 0;
+  auto azimuthLimit = [&](double t) {
+    return std::acos(std::clamp(-(1.0 - t) * NoV / (2.0 * std::sqrt(t) * sinV), -1.0, 1.0));
+  };
+  // Sum over the inner nodes of f(VoH, NoL) at phi = phiMax s_k, n.l > 0 only.
+  auto inner = [&](const Nodes& q, double phiMax, double sinH, double NoH, const auto& f) {
+    std::array<double, 2> acc{};
+    for (size_t k = 0; k < q.s.size(); ++k, ++count) {
+      const double VoH = sinV * sinH * std::cos(phiMax * q.s[k]) + NoV * NoH;
+      const double NoL = std::min(2.0 * VoH * NoH - NoV, 1.0);
+      if (NoL <= 0.0) continue;
+      const std::array<double, 2> v = f(VoH, NoL);
+      acc[0] += q.w[k] * v[0], acc[1] += q.w[k] * v[1];
+    }
+    return acc;
+  };
+  auto ggx = [&](double VoH, double NoL) -> std::array<double, 2> {
+    const double V =
+        0.5 / (NoL * std::sqrt(NoV * NoV * (1.0 - a2) + a2) + NoV * std::sqrt(NoL * NoL * (1.0 - a2) + a2));
+    const double Gv = 4.0 * V * NoL * VoH;  // / n.h after the sum
+    return {Gv * std::pow(1.0 - VoH, 5.0), Gv};
+  };
+  auto cloth = [&](double VoH, double NoL) -> std::array<double, 2> {
+    return {NoL * VoH / (NoL + NoV * (1.0 - NoL)), 0.0};  // 4 V_Ashikhmin n.l v.h
+  };
+  std::array<double, 3> r{};
+  const double thetaFull = 0.5 * std::asin(NoV);
+  const double xFull = std::log(std::tan(thetaFull)), lnAlpha = std::log(alpha);
+  const double xLo = lnAlpha - rule.ggxBelowPeak, xHi = std::min(lnAlpha + rule.ggxAbovePeak, -xFull);
+  const double xCut = std::clamp(xFull, xLo, xHi);
+  auto ggxOuter = [&](double x, double w, bool full) {
+    const double t = std::exp(2.0 * x), weight = 2.0 * (a2 / (a2 + t)) * (t / (a2 + t));
+    const double NoH = 1.0 / std::sqrt(1.0 + t), sinH = std::sqrt(t) * NoH;
+    if (full) {
+      const std::array<double, 2> m = inner(nodes.ggxFullInner, ref::kPi, sinH, NoH, ggx);
+      r[0] += w * weight * m[0] / NoH, r[1] += w * weight * m[1] / NoH;
+    } else {
+      const double phiMax = azimuthLimit(t);
+      if (phiMax <= 0.0) return;
+      const std::array<double, 2> m = inner(nodes.ggxPartialInner, phiMax, sinH, NoH, ggx);
+      const double scale = w * weight * phiMax / (ref::kPi * NoH);
+      r[0] += scale * m[0], r[1] += scale * m[1];
+    }
+  };
+  composite(xLo, xCut, rule.ggxPanelWidth, nodes.ggxFull, [&](double x, double w) { ggxOuter(x, w, true); });
+  composite(xCut, xHi, rule.ggxPanelWidth, nodes.ggxPartial, [&](double x, double w) { ggxOuter(x, w, false); });
+  const double zFull = std::log(std::cos(thetaFull)), zNone = std::log(std::sin(thetaFull));
+  const double zLo = std::max(zNone, 0.5 * lnAlpha - rule.clothBelowPeak);
+  const double zHi = std::min(0.0, 0.5 * lnAlpha + rule.clothAbovePeak), zCut = std::clamp(zFull, zLo, zHi);
+  auto clothOuter = [&](double z, double w) {
+    const double c = std::exp(z), c2 = c * c;
+    if (c2 >= 1.0) return;
+    const double phiMax = azimuthLimit((1.0 - c2) / c2);
+    if (phiMax <= 0.0) return;
+    const double D = (2.0 + 1.0 / alpha) * std::exp(std::log1p(-c2) / (2.0 * alpha)) / (2.0 * ref::kPi);
+    r[2] += w * 2.0 * D * c * phiMax * inner(nodes.clothInner, phiMax, std::sqrt(1.0 - c2), c, cloth)[0];
+  };
+  composite(zLo, zCut, rule.clothPanelWidth, nodes.cloth, clothOuter);
+  composite(zCut, zHi, rule.clothPanelWidth, nodes.cloth, clothOuter);
+  if (evaluations) *evaluations = count;
+  return r;
+}
+
+EmittedShader emitDfgQuadratureKernel(const ShaderLibrary& lib, const LutBricks& bricks, const QuadratureRule& rule) {
   EmittedShader out;
   out.key = "lut.dfg.quadrature";
   out.fileName = out.key + ".glsl";
   setKernelLayout(out);
   out.bricks = {bricks.visibility, bricks.clothD, bricks.clothV};
   auto fn = [&](const std::string& id) { return requireBrick(lib, id).function; };
-  static const ref::detail_quad::GaussLegendre<kQuadratureOuterNodes> outer;
-  static const ref::detail_quad::GaussLegendre<kQuadratureInnerNodes> inner;
+  const RuleNodes nodes(rule);
+  auto count = [](const Nodes& q) { return std::to_string(q.s.size()) + "u"; };
+  std::vector<double> fullCos, fullSin;
+  for (double s : nodes.ggxFullInner.s)
+    fullCos.push_back(std::cos(ref::kPi * s)), fullSin.push_back(std::sin(ref::kPi * s));
 
   GlslWriter w(out.fileName);
   writeKernelHead(w, lib, out.bricks, "deterministic quadrature");
-  w.line(floatArray("kOuterX", outer.x));
-  w.line(floatArray("kOuterW", outer.w));
-  w.line(floatArray("kInnerX", inner.x));
-  w.line(floatArray("kInnerW", inner.w));
-  const std::string nOuter = std::to_string(kQuadratureOuterNodes) + "u",
-                    nInner = std::to_string(kQuadratureInnerNodes) + "u";
+  w.line("// Nodes s and weights w on [0, 1] (lut_kernel.hpp QuadratureRule), substitutions applied.");
+  // Nodes s and weights w per rule; the full azimuth [0, pi]'s nodes as their cos and sin
+  // (constants there).
+  const std::vector<std::pair<std::string, const std::vector<double>*>> tables{
+      {"kGgxFullS", &nodes.ggxFull.s},
+      {"kGgxFullW", &nodes.ggxFull.w},
+      {"kGgxPartialS", &nodes.ggxPartial.s},
+      {"kGgxPartialW", &nodes.ggxPartial.w},
+      {"kClothS", &nodes.cloth.s},
+      {"kClothW", &nodes.cloth.w},
+      {"kFullInnerCos", &fullCos},
+      {"kFullInnerSin", &fullSin},
+      {"kFullInnerW", &nodes.ggxFullInner.w},
+      {"kPartialInnerS", &nodes.ggxPartialInner.s},
+      {"kPartialInnerW", &nodes.ggxPartialInner.w},
+      {"kClothInnerS", &nodes.clothInner.s},
+      {"kClothInnerW", &nodes.clothInner.w}};
+  for (const auto& [name, values] : tables) w.line(floatArray(name, *values));
   w.line("vec3 n = vec3(0.0, 0.0, 1.0);");
   w.line("vec3 v;");
-  w.line("float NoV, sinV, alpha;");
+  w.line("float NoV, sinV, alpha, a2;");
   w.line("// n.l > 0 <=> cos(phi) > kappa (docs/lut.md): the azimuth half-range at tan^2(theta_h) = t.");
   w.line("float azimuthLimit(float t) {");
   w.line("    float kappa = -(1.0 - t) * NoV / (2.0 * sqrt(t) * sinV);");
   w.line("    return acos(clamp(kappa, -1.0, 1.0));");
   w.line("}");
-  w.line("// Int_0^phiMax over the inner Gauss-Legendre nodes at the half-vector angle (sinH, NoH):");
-  w.line("// channels 0, 1: Gv Fc and Gv with Gv = 4 V n.l v.h / n.h; channel 2: 4 V_cloth n.l v.h.");
-  w.line("vec3 azimuthal(float sinH, float NoH, float phiMax, bool cloth) {");
-  w.line("    vec3 acc = vec3(0.0);");
-  w.line("    for (uint k = 0u; k < " + nInner + "; ++k) {");
-  w.line("        float phi = 0.5 * phiMax * (1.0 + kInnerX[k]);");
-  w.line("        vec3 h = vec3(sinH * cos(phi), sinH * sin(phi), NoH);");
-  w.line("        Geometry g = makeGeometry(n, v, 2.0 * dot(v, h) * h - v);");
-  w.line("        if (g.NoL <= 0.0) continue;");
-  w.line("        if (cloth) {");
-  w.line("            acc.z += kInnerW[k] * 4.0 * " + fn(bricks.clothV) + "(g, alpha) * g.NoL * g.VoH;");
-  w.line("        } else {");
-  w.line("            float Gv = 4.0 * " + fn(bricks.visibility) + "(g, alpha) * g.NoL * g.VoH / g.NoH;");
-  w.line("            acc.xy += kInnerW[k] * vec2(Gv * mb_pow5(1.0 - g.VoH), Gv);");
-  w.line("        }");
-  w.line("    }");
-  w.line("    return acc * (0.5 * phiMax);");
+  w.line("// The geometry of h = (sinH cos(phi), sinH sin(phi), n.h) and l = 2 (v.h) h - v, with");
+  w.line("// v = (sinV, 0, n.v) and n = z, from its dot products in closed form: what makeGeometry");
+  w.line("// gives from the vectors, without normalizing three of them per node. n.l <= 0: skipped.");
+  w.line("Geometry halfVectorGeometry(float sinH, float NoH, float cosPhi, float sinPhi) {");
+  w.line("    Geometry g;");
+  w.line("    g.n = n; g.v = v;");
+  w.line("    g.h = vec3(sinH * cosPhi, sinH * sinPhi, NoH);");
+  w.line("    g.VoH = sinV * sinH * cosPhi + NoV * NoH;");
+  w.line("    g.LoH = g.VoH;");
+  w.line("    g.l = 2.0 * g.VoH * g.h - v;");
+  w.line("    g.NoL = min(2.0 * g.VoH * NoH - NoV, 1.0);");
+  w.line("    g.NoH = NoH; g.NoV = NoV;");
+  w.line("    return g;");
   w.line("}");
-  w.line("// GGX: x = ln tan(theta_h), t = e^(2x); D(h)(n.h) dw = 2 alpha^2 t/(alpha^2 + t)^2 dx dphi/(2 pi).");
-  w.line("vec2 ggxAt(float x) {");
-  w.line("    float t = exp(2.0 * x), a2 = alpha * alpha;");
+  w.line("// (Gv Fc, Gv) n.h with Gv = 4 V n.l v.h / n.h (the 1/n.h after the azimuth sum).");
+  w.line("vec2 ggxTerm(Geometry g) {");
+  w.line("    float GvNoH = 4.0 * " + fn(bricks.visibility) + "(g, alpha) * g.NoL * g.VoH;");
+  w.line("    return GvNoH * vec2(mb_pow5(1.0 - g.VoH), 1.0);");
+  w.line("}");
+  w.line("// 4 V_cloth n.l v.h.");
+  w.line("float clothTerm(Geometry g) {");
+  w.line("    return 4.0 * " + fn(bricks.clothV) + "(g, alpha) * g.NoL * g.VoH;");
+  w.line("}");
+  w.line("// GGX: x = ln tan(theta_h), t = e^(2x); D(h)(n.h) dw = 2 alpha^2 t/(alpha^2 + t)^2 dx dphi/(2 pi);");
+  w.line("// returns that weight times (1/pi) Int over the azimuths with n.l > 0 of (Gv Fc, Gv).");
+  w.line("vec2 ggxAt(float x, bool full) {");
+  w.line("    float t = exp(2.0 * x);");
   w.line("    float weight = 2.0 * (a2 / (a2 + t)) * (t / (a2 + t));");
+  w.line("    float NoH = inversesqrt(1.0 + t), sinH = sqrt(t) * NoH;");
+  w.line("    vec2 acc = vec2(0.0);");
+  w.line("    if (full) {");
+  w.line("        for (uint k = 0u; k < " + count(nodes.ggxFullInner) + "; ++k) {");
+  w.line("            Geometry g = halfVectorGeometry(sinH, NoH, kFullInnerCos[k], kFullInnerSin[k]);");
+  w.line("            if (g.NoL > 0.0) acc += kFullInnerW[k] * ggxTerm(g);");
+  w.line("        }");
+  w.line("        return acc * (weight / NoH);");
+  w.line("    }");
   w.line("    float phiMax = azimuthLimit(t);");
-  w.line("    if (phiMax <= 0.0 || weight <= 0.0) return vec2(0.0);");
-  w.line("    float NoH = inversesqrt(1.0 + t);");
-  w.line("    return weight * azimuthal(sqrt(t) * NoH, NoH, phiMax, false).xy / MB_PI;");
+  w.line("    if (phiMax <= 0.0) return vec2(0.0);");
+  w.line("    for (uint k = 0u; k < " + count(nodes.ggxPartialInner) + "; ++k) {");
+  w.line("        float phi = phiMax * kPartialInnerS[k];");
+  w.line("        Geometry g = halfVectorGeometry(sinH, NoH, cos(phi), sin(phi));");
+  w.line("        if (g.NoL > 0.0) acc += kPartialInnerW[k] * ggxTerm(g);");
+  w.line("    }");
+  w.line("    return acc * (weight * phiMax / (MB_PI * NoH));");
   w.line("}");
-  w.line("// Charlie: z = ln cos(theta_h); D(h) dw_h = D(c) c dz dphi, D from the brick at h.");
+  w.line("// Charlie: z = ln cos(theta_h); D(h) dw_h = D(c) c dz dphi, D from the brick at h;");
+  w.line("// returns 2 D c Int_0^phiMax 4 V n.l v.h dphi.");
   w.line("float clothAt(float z) {");
   w.line("    float c = exp(z), c2 = c * c;");
   w.line("    if (c2 >= 1.0) return 0.0;");
@@ -138,44 +301,57 @@ EmittedShader emitDfgQuadratureKernel(const ShaderLibrary& lib, const LutBricks&
   w.line("    gh.NoV = NoV; gh.NoL = 1.0; gh.NoH = c; gh.LoH = c; gh.VoH = dot(v, gh.h);");
   w.line("    float D = " + fn(bricks.clothD) + "(gh, alpha);");
   w.line("    if (D <= 0.0) return 0.0;");
-  w.line("    return 2.0 * D * c * azimuthal(sinH, c, phiMax, true).z;");
-  w.line("}");
-  w.line("// Composite Gauss-Legendre over [lo, hi] cut at `cut` (when inside), panels no wider than");
-  w.line("// `width`, each after the substitution x = p + (q - p)(1 - cos(pi u))/2.");
-  w.line("vec3 integrate(float lo, float cut, float hi, float width, bool cloth) {");
-  w.line("    vec3 sum = vec3(0.0);");
-  w.line("    float ends[3] = float[](lo, clamp(cut, lo, hi), hi);");
-  w.line("    for (uint seg = 0u; seg < 2u; ++seg) {");
-  w.line("        float a = ends[seg], b = ends[seg + 1u];");
-  w.line("        if (b <= a) continue;");
-  w.line("        uint panels = uint(max(1.0, ceil((b - a) / width)));");
-  w.line("        for (uint p = 0u; p < panels; ++p) {");
-  w.line("            float pa = a + (b - a) * float(p) / float(panels), span = (b - a) / float(panels);");
-  w.line("            for (uint k = 0u; k < " + nOuter + "; ++k) {");
-  w.line("                float u = 0.5 * (1.0 + kOuterX[k]);");
-  w.line("                float x = pa + span * 0.5 * (1.0 - cos(MB_PI * u));");
-  w.line("                float wq = 0.5 * kOuterW[k] * span * 0.5 * MB_PI * sin(MB_PI * u);");
-  w.line("                if (cloth) sum.z += wq * clothAt(x); else sum.xy += wq * ggxAt(x);");
-  w.line("            }");
-  w.line("        }");
+  w.line("    float acc = 0.0;");
+  w.line("    for (uint k = 0u; k < " + count(nodes.clothInner) + "; ++k) {");
+  w.line("        float phi = phiMax * kClothInnerS[k];");
+  w.line("        Geometry g = halfVectorGeometry(sinH, c, cos(phi), sin(phi));");
+  w.line("        if (g.NoL > 0.0) acc += kClothInnerW[k] * clothTerm(g);");
   w.line("    }");
-  w.line("    return sum;");
+  w.line("    return 2.0 * D * c * phiMax * acc;");
   w.line("}");
+  w.line("// Composite rules over [a, b]: panels no wider than the width, nodes on [0, 1] of a panel.");
+  const std::string width = fmt(rule.ggxPanelWidth), clothWidth = fmt(rule.clothPanelWidth);
+  w.line("uint panelCount(float a, float b, float width) { return uint(max(1.0, ceil((b - a) / width))); }");
+  // `type name(float a, float b)`: sum of span w_k f(a + span (p + s_k)) over the panels p,
+  // f(x) written as `call` with x in place of X.
+  auto compositeFunction = [&](const std::string& type, const std::string& name, const std::string& panelWidth,
+                               const Nodes& q, const std::string& table, const std::string& call) {
+    const std::string x = "a + span * (float(p) + k" + table + "S[k])";
+    w.line(type + " " + name + "(float a, float b) {");
+    w.line("    " + type + " sum = " + type + "(0.0);");
+    w.line("    if (b <= a) return sum;");
+    w.line("    uint panels = panelCount(a, b, " + panelWidth + ");");
+    w.line("    float span = (b - a) / float(panels);");
+    w.line("    for (uint p = 0u; p < panels; ++p)");
+    w.line("        for (uint k = 0u; k < " + count(q) + "; ++k)");
+    w.line("            sum += span * k" + table + "W[k] * " + call.substr(0, call.find('X')) + x +
+           call.substr(call.find('X') + 1) + ";");
+    w.line("    return sum;");
+    w.line("}");
+  };
+  compositeFunction("vec2", "ggxFullPart", width, nodes.ggxFull, "GgxFull", "ggxAt(X, true)");
+  compositeFunction("vec2", "ggxPartialPart", width, nodes.ggxPartial, "GgxPartial", "ggxAt(X, false)");
+  compositeFunction("float", "clothPart", clothWidth, nodes.cloth, "Cloth", "clothAt(X)");
   w.line("void main() {");
   w.line("    uint t = gl_GlobalInvocationID.x;");
   w.line("    if (t >= mbPush.count) return;");
   w.line("    NoV = mbIn[2u * t];");
   w.line("    alpha = mbIn[2u * t + 1u] * mbIn[2u * t + 1u];");
+  w.line("    a2 = alpha * alpha;");
   w.line("    sinV = sqrt(1.0 - NoV * NoV);");
   w.line("    v = vec3(sinV, 0.0, NoV);");
   w.line("    // thetaFull = asin(n.v)/2 (every azimuth below), thetaNone = pi/2 - thetaFull (none above).");
   w.line("    float thetaFull = 0.5 * asin(NoV);");
   w.line("    float xFull = log(tan(thetaFull)), lnAlpha = log(alpha);");
-  w.line("    vec3 r = integrate(lnAlpha - " + fmt(kGgxBelowPeak) + ", xFull, min(lnAlpha + " + fmt(kGgxAbovePeak) +
-         ", -xFull), " + fmt(kGgxPanelWidth) + ", false);");
+  w.line("    float xLo = lnAlpha - " + fmt(rule.ggxBelowPeak) + ", xHi = min(lnAlpha + " + fmt(rule.ggxAbovePeak) +
+         ", -xFull);");
+  w.line("    float xCut = clamp(xFull, xLo, xHi);");
+  w.line("    vec3 r = vec3(ggxFullPart(xLo, xCut) + ggxPartialPart(xCut, xHi), 0.0);");
   w.line("    float zFull = log(cos(thetaFull)), zNone = log(sin(thetaFull));");
-  w.line("    r += integrate(max(zNone, 0.5 * lnAlpha - " + fmt(kClothBelowPeak) +
-         "), zFull, min(0.0, 0.5 * lnAlpha + " + fmt(kClothAbovePeak) + "), " + fmt(kClothPanelWidth) + ", true);");
+  w.line("    float zLo = max(zNone, 0.5 * lnAlpha - " + fmt(rule.clothBelowPeak) +
+         "), zHi = min(0.0, 0.5 * lnAlpha + " + fmt(rule.clothAbovePeak) + ");");
+  w.line("    float zCut = clamp(zFull, zLo, zHi);");
+  w.line("    r.z = clothPart(zLo, zCut) + clothPart(zCut, zHi);");
   w.line("    for (uint c = 0u; c < 3u; ++c) mbOut[3u * t + c] = r[c];");
   w.line("}");
   out.glsl = w.str();

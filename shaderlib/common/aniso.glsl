@@ -33,3 +33,21 @@ vec3 mb_aniso_tangent(vec3 n, vec3 t) {
     float a = -1.0 / (s + n.z);
     return vec3(1.0 + s * n.x * n.x * a, s * n.x * n.y * a, -s * n.x);
 }
+
+// (t.l, b.l): the tangent-plane part of the light direction of the *clamped* geometry, for the
+// anisotropic visibilities. makeGeometry clamps n.l at 0 but leaves l below the horizon as it
+// is, and such an l does reach them: the direction to a sphere or tube light's centre (or a
+// tube's equivalent point) below the horizon while the light still crosses it, where the
+// horizon wrap is > 0. The geometry V is evaluated at is then l's azimuth at n.l = 0, whose
+// tangent part is a unit vector: the limit the reference takes (v_aniso_reference.hpp, theta =
+// acos of the clamped n.l) and what the isotropic bricks give, which see only n.l (V = 0.5 /
+// (n.v alpha) at n.l = 0). l's own tangent part has length sqrt(1 - (n.l)^2) < 1 there and
+// made V too large by 1 / sqrt(1 - (n.l)^2) (2.9e-3 at n.l = -0.076: brushed_metal with the
+// tube light, docs/accuracy.md). No tangent part at all (l = -n): azimuth along t, as the
+// reference's cos(phi) = 1. Above the horizon l is returned as it is.
+vec2 mb_aniso_light_tangent(Geometry g, vec3 tangent, vec3 bitangent) {
+    vec2 p = vec2(dot(tangent, g.l), dot(bitangent, g.l));
+    if (dot(g.n, g.l) >= 0.0) return p;
+    float len2 = dot(p, p);
+    return len2 > 0.0 ? p * inversesqrt(len2) : vec2(1.0, 0.0);
+}

@@ -13,32 +13,36 @@ namespace mb::ref {
 
 namespace detail_quad {
 
-// Gauss-Legendre nodes/weights on [-1, 1] (computed once by Newton on P_n).
-template <int N>
-struct GaussLegendre {
-  std::array<double, N> x{}, w{};
-  GaussLegendre() {
-    constexpr double kPiLocal = 3.14159265358979323846;
-    for (int i = 0; i < N; ++i) {
-      double z = std::cos(kPiLocal * (i + 0.75) / (N + 0.5));
-      for (int it = 0; it < 100; ++it) {
-        double p0 = 1, p1 = 0;
-        for (int k = 1; k <= N; ++k) {
-          double p2 = p1;
-          p1 = p0;
-          p0 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p2) / k;
-        }
-        double dp = N * (z * p0 - p1) / (z * z - 1.0);
-        double dz = p0 / dp;
-        z -= dz;
-        if (std::fabs(dz) < 1e-16) {
-          x[i] = z;
-          w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
-          break;
-        }
+// Gauss-Legendre nodes/weights on [-1, 1] by Newton on P_n, for an n known at run time
+// (the DFG LUT kernel's rule, lut_kernel.hpp, chooses its node counts as data).
+inline void gaussLegendreNodes(int n, double* x, double* w) {
+  constexpr double kPiLocal = 3.14159265358979323846;
+  for (int i = 0; i < n; ++i) {
+    double z = std::cos(kPiLocal * (i + 0.75) / (n + 0.5));
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1, p1 = 0;
+      for (int k = 1; k <= n; ++k) {
+        double p2 = p1;
+        p1 = p0;
+        p0 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p2) / k;
+      }
+      double dp = n * (z * p0 - p1) / (z * z - 1.0);
+      double dz = p0 / dp;
+      z -= dz;
+      if (std::fabs(dz) < 1e-16) {
+        x[i] = z;
+        w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
+        break;
       }
     }
   }
+}
+
+// The same nodes for a compile-time N (computed once).
+template <int N>
+struct GaussLegendre {
+  std::array<double, N> x{}, w{};
+  GaussLegendre() { gaussLegendreNodes(N, x.data(), w.data()); }
 };
 
 }  // namespace detail_quad

@@ -10,6 +10,7 @@ float mb_v_smith_ggx_correlated_aniso(Geometry g, vec3 t, float at, float ab) {
     vec3 tangent = mb_aniso_tangent(g.n, t);
     vec3 bitangent = cross(g.n, tangent);
     float lambdaV = g.NoL * length(vec3(at * dot(tangent, g.v), ab * dot(bitangent, g.v), g.NoV));
-    float lambdaL = g.NoV * length(vec3(at * dot(tangent, g.l), ab * dot(bitangent, g.l), g.NoL));
+    vec2 lt = mb_aniso_light_tangent(g, tangent, bitangent);  // l below the horizon: see aniso.glsl
+    float lambdaL = g.NoV * length(vec3(at * lt.x, ab * lt.y, g.NoL));
     return 0.5 / (lambdaV + lambdaL);
 }

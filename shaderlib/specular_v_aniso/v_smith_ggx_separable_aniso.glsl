@@ -8,6 +8,7 @@ float mb_v_smith_ggx_separable_aniso(Geometry g, vec3 t, float at, float ab) {
     vec3 tangent = mb_aniso_tangent(g.n, t);
     vec3 bitangent = cross(g.n, tangent);
     float maskV = g.NoV + length(vec3(at * dot(tangent, g.v), ab * dot(bitangent, g.v), g.NoV));
-    float maskL = g.NoL + length(vec3(at * dot(tangent, g.l), ab * dot(bitangent, g.l), g.NoL));
+    vec2 lt = mb_aniso_light_tangent(g, tangent, bitangent);  // l below the horizon: see aniso.glsl
+    float maskL = g.NoL + length(vec3(at * lt.x, ab * lt.y, g.NoL));
     return 1.0 / (maskV * maskL);
 }
