@@ -84,6 +84,7 @@ void buildUnit(CompileUnit& u, const std::vector<std::string>& targets, const Sh
       if (t == "essl310" && !u.mediumpGlsl.empty()) {
         // RelaxedPrecision survives spirv-opt's passes, and no 16-bit constant is involved.
         CompileOptions relaxed;
+        relaxed.pipeline = u.compile.pipeline;
         a.targets[t] = crossCompile(compileComputeGlsl(u.mediumpGlsl, u.mediumpDisplayName, relaxed).spirv, t,
                                     u.mediumpDisplayName);
       } else {
@@ -144,6 +145,7 @@ std::vector<BuiltPermutation> buildPermutations(const ShaderLibrary& lib, const 
     // fp16 skips spirv-opt: SPIRV-Tools v2023.1's constant folding emits invalid 16-bit
     // constants (spirv-val then rejects the module), so fp16 ships glslang's SPIR-V as is.
     co.optimize = perms[i].precision == "fp32";
+    co.pipeline = options.pipeline;
     auto [it, fresh] = unitByGlsl.emplace(std::make_pair(co.optimize, out[i].shader.glsl), units.size());
     if (fresh) {
       CompileUnit u;

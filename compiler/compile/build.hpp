@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "compile/glsl_compiler.hpp"
 #include "compile/shader_cache.hpp"
 #include "emit/emitter.hpp"
 #include "library/shader_library.hpp"
@@ -18,6 +19,8 @@ struct BuildOptions {
   std::vector<std::string> targets{"spirv"};  // subset of allTargets(); spirv always built
   std::filesystem::path cacheDir;             // empty: no cache
   EmitMode mode = EmitMode::Engine;           // what the package ships (emit/emitter.hpp)
+  // Same outputs either way (glsl_compiler.hpp); Legacy only for the benchmark's comparison.
+  CompilePipeline pipeline = CompilePipeline::Lean;
 };
 
 struct BuiltPermutation {
