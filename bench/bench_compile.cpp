@@ -1,13 +1,17 @@
-// Compile benchmarks of issue 5 item 7 (docs/performance-compile.md explains the method):
-//   a. throughput, permutations/s: in-process buildPermutations (-j1, -j2, no cache) against
-//      one glslangValidator -V + spirv-opt -O process pair per permutation on the same GLSL;
+// Compile benchmarks of issues 5 and 15 (docs/performance-compile.md explains the method):
+//   a. throughput, permutations/s: in-process buildPermutations (-j1, -j2, no cache) with the
+//      lean and the legacy driving of spirv-val / spirv-opt (same SPIR-V, checked), against one
+//      glslangValidator -V + spirv-opt -O process pair per permutation on the same GLSL;
 //   b. no-op rebuild with a warm cache: buildPermutations a second time (all hits), and the
 //      whole `matbricks compile --scene` CLI run a second time;
 //   c. cold compile time against scene size (1 .. 10000 distinct permutations), -j2;
 //   d. GPU time of a specialized (folded) permutation against its feature-complete form, with
 //      the features' inputs as constants and as run-time inputs (compiler/bench/cost.hpp, as
-//      `matbricks bench`), and the three SPIR-V instruction counts.
-// Usage: mb_bench_compile REPEATS MAX_SIZE OUT_DIR SCENE  (writes OUT_DIR/compile.{json,md}).
+//      `matbricks bench`), and the three SPIR-V instruction counts;
+//   e. (--breakdown) where one permutation's time goes, stage by stage, on one thread;
+//   f. (--recipes=FILE) spirv-opt recipes against RegisterPerformancePasses: time, instructions.
+// Usage: mb_bench_compile REPEATS MAX_SIZE OUT_DIR SCENE [--breakdown] [--recipes=FILE]
+//        [--sections=LETTERS]  (writes OUT_DIR/compile.{json,md}).
 // Medians of REPEATS runs (fewer for the largest sizes; the JSON records how many).
 #include <sys/resource.h>
 #include <unistd.h>
@@ -19,12 +23,22 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <sstream>
 #include <nlohmann/json.hpp>
+#include <spirv-tools/libspirv.hpp>
+#include <spirv-tools/optimizer.hpp>
 #include <thread>
+#include <type_traits>
 
 #include "bench/cost.hpp"
 #include "compile/build.hpp"
 #include "compile/glsl_compiler.hpp"
+#include "compile/target_checks.hpp"
+#include "compile/targets.hpp"
+#include "load/scene_desc.hpp"
+#include "permute/scene_plan.hpp"
+#include "write/package_contents.hpp"
 #include "emit/bench_probe.hpp"
 #include "permute/specialize.hpp"
 #include "validate/probe_program.hpp"
@@ -121,21 +135,43 @@ double externalPairsMs(const ShaderLibrary& lib, const std::vector<Permutation>&
   return msSince(t0);
 }
 
+BuildOptions options(unsigned jobs, CompilePipeline pipeline, fs::path cacheDir = {}) {
+  BuildOptions o = options(jobs, std::move(cacheDir));
+  o.pipeline = pipeline;
+  return o;
+}
+
+// a: the current pipeline (Lean) and the one before issue 15 (Legacy) in the same run, their
+// repeats interleaved so that a change of load hits both; both must give identical SPIR-V.
 json benchThroughput(const ShaderLibrary& lib, const std::vector<Permutation>& perms, int repeats,
                      const fs::path& tmp) {
   json out{{"permutations", perms.size()}};
   for (unsigned jobs : {1u, 2u}) {
+    const std::string j = std::to_string(jobs);
     BuildStats stats;
-    double ms = bench::median(timeRepeats(repeats, [&] { buildPermutations(lib, perms, options(jobs), &stats); }));
-    out["in_process_j" + std::to_string(jobs)] = json{{"ms_median", ms},
-                                                      {"permutations_per_s", perms.size() * 1000.0 / ms},
-                                                      {"compiled", stats.compiled},
-                                                      {"unique_spirv", stats.uniqueSpirv}};
-    double ext = bench::median(
-        timeRepeats(repeats, [&] { externalPairsMs(lib, perms, tmp / ("ext" + std::to_string(jobs)), jobs); }));
-    out["process_pairs_j" + std::to_string(jobs)] =
-        json{{"ms_median", ext}, {"permutations_per_s", perms.size() * 1000.0 / ext}};
-    out["speedup_j" + std::to_string(jobs)] = ext / ms;
+    std::vector<double> lean, legacy;
+    std::vector<BuiltPermutation> leanBuilt, legacyBuilt;
+    for (int r = 0; r < repeats; ++r) {
+      auto t0 = Clock::now();
+      legacyBuilt = buildPermutations(lib, perms, options(jobs, CompilePipeline::Legacy), &stats);
+      legacy.push_back(msSince(t0));
+      t0 = Clock::now();
+      leanBuilt = buildPermutations(lib, perms, options(jobs, CompilePipeline::Lean), &stats);
+      lean.push_back(msSince(t0));
+    }
+    for (size_t i = 0; i < perms.size(); ++i)
+      if (leanBuilt[i].artifacts.spirv != legacyBuilt[i].artifacts.spirv ||
+          leanBuilt[i].artifacts.reflection != legacyBuilt[i].artifacts.reflection)
+        throw std::runtime_error("the lean and legacy pipelines differ on " + perms[i].key());
+    for (auto [name, ms] : {std::pair{"in_process_j", bench::median(lean)}, {"legacy_j", bench::median(legacy)}})
+      out[name + j] = json{{"ms_median", ms},
+                           {"permutations_per_s", perms.size() * 1000.0 / ms},
+                           {"compiled", stats.compiled},
+                           {"unique_spirv", stats.uniqueSpirv}};
+    out["lean_over_legacy_j" + j] = bench::median(legacy) / bench::median(lean);
+    double ext = bench::median(timeRepeats(repeats, [&] { externalPairsMs(lib, perms, tmp / ("ext" + j), jobs); }));
+    out["process_pairs_j" + j] = json{{"ms_median", ext}, {"permutations_per_s", perms.size() * 1000.0 / ext}};
+    out["speedup_j" + j] = ext / bench::median(lean);
   }
   return out;
 }
@@ -279,52 +315,332 @@ json benchRuntime(const ShaderLibrary& lib, const std::vector<MaterialDesc>& mat
       {"device", gpu.deviceName()}, {"iterations_per_record", o.iterations}, {"repeats", o.repeats}, {"rows", rows}};
 }
 
+// e (opt-in, --breakdown): where one permutation's compile time goes. Every stage that
+// buildPermutations and the package writer run, called one at a time on one thread for each
+// permutation of the throughput list; per stage, the median over REPEATS of its total over
+// the list, per permutation. The spirv-opt passes of RegisterPerformancePasses are also run
+// one optimizer per pass (checked to give the same module as one optimizer running them all),
+// which adds a parse-to-IR and write-back per pass: that overhead is measured on its own
+// ("no pass") and is included in each pass's figure.
+struct StageClock {
+  std::vector<std::string> order;
+  std::map<std::string, double> total;  // of the current repeat
+  std::map<std::string, std::vector<double>> perRepeat;
+  void add(const std::string& stage, double ms) {
+    if (!perRepeat.count(stage) && !total.count(stage)) order.push_back(stage);
+    total[stage] += ms;
+  }
+  template <class F>
+  auto time(const std::string& stage, F&& f) {
+    auto t0 = Clock::now();
+    if constexpr (std::is_void_v<decltype(f())>) {
+      f();
+      add(stage, msSince(t0));
+    } else {
+      auto r = f();
+      add(stage, msSince(t0));
+      return r;
+    }
+  }
+  void endRepeat() {
+    for (auto& [k, v] : total) perRepeat[k].push_back(v);
+    total.clear();
+  }
+  json rows(size_t perms) const {
+    json out = json::array();
+    for (const auto& k : order)
+      out.push_back({{"stage", k},
+                     {"ms_per_permutation", bench::median(perRepeat.at(k)) / double(perms)},
+                     {"ms_total_all_repeats", perRepeat.at(k)}});
+    return out;
+  }
+};
+
+std::vector<uint32_t> runPasses(const std::vector<uint32_t>& in, const std::vector<std::string>& flags) {
+  spvtools::Optimizer o(SPV_ENV_VULKAN_1_1);
+  if (!o.RegisterPassesFromFlags(flags)) throw std::runtime_error("spirv-opt flags rejected");
+  spvtools::OptimizerOptions oo;
+  oo.set_run_validator(false);  // validated once by the caller
+  std::vector<uint32_t> out;
+  if (!o.Run(in.data(), in.size(), &out, oo)) throw std::runtime_error("spirv-opt failed");
+  return out;
+}
+
+json benchBreakdown(const ShaderLibrary& lib, const std::vector<Permutation>& perms, int repeats, const fs::path& tmp,
+                    const std::string& scene) {
+  std::vector<std::string> passes;
+  {
+    spvtools::Optimizer o(SPV_ENV_VULKAN_1_1);
+    o.RegisterPerformancePasses();
+    for (const char* n : o.GetPassNames()) passes.push_back(n);
+  }
+  const std::vector<std::string> crossTargets{"glsl450", "essl310", "hlsl", "msl"};
+  StageClock clock, passClock, legacyClock;
+  bool passesMatch = true, passesSameCount = true;
+  for (int r = 0; r < repeats; ++r) {
+    const fs::path cacheDir = tmp / ("breakdown-cache-" + std::to_string(r));
+    const ShaderCache cache(cacheDir);
+    for (const auto& p : perms) {
+      EmittedShader s = clock.time("emit GLSL", [&] { return emitPermutation(lib, p, false, EmitMode::Engine); });
+      std::string key = clock.time("cache key (XXH3 over GLSL, brick hashes, versions)",
+                                   [&] { return buildCacheKey(lib, s, true, {"spirv"}); });
+      CompileOptions lean;
+      lean.optimize = p.precision == "fp32";
+      CompileResult c = compileComputeGlsl(s.glsl, s.fileName, lean);
+      clock.add("glslang parse", c.stages.parseMs);
+      clock.add("glslang link", c.stages.linkMs);
+      clock.add("glslang GlslangToSpv", c.stages.codegenMs);
+      clock.add("spirv-val of glslang's module (friendly names off)", c.stages.validateMs);
+      clock.add("spirv-opt performance passes (no re-validation)", c.stages.optimizeMs);
+      clock.add("spirv-val of spirv-opt's module (friendly names off)", c.stages.validateOptimizedMs);
+      CompiledArtifacts a;
+      a.spirv = c.spirv;
+      a.reflection = clock.time("SPIRV-Cross reflection", [&] { return reflectSpirv(a.spirv); });
+      clock.time("SPIR-V content hash (XXH64)", [&] { return contentHash(a.spirv.data(), a.spirv.size() * 4); });
+      clock.time("cache store (serialize, write, rename)", [&] { return cache.store(key, a); });
+      clock.time("cache load (read, check, parse)", [&] {
+        CompiledArtifacts back;
+        return cache.load(key, back);
+      });
+
+      // The legacy pipeline's stages, on the same GLSL (its SPIR-V must be the same).
+      CompileOptions legacy = lean;
+      legacy.pipeline = CompilePipeline::Legacy;
+      CompileResult l = compileComputeGlsl(s.glsl, s.fileName, legacy);
+      if (l.spirv != c.spirv) throw std::runtime_error("legacy and lean SPIR-V differ: " + s.key);
+      legacyClock.add("glslang parse + link + GlslangToSpv", l.frontEndMs);
+      legacyClock.add("spirv-val of glslang's module (friendly names on)", l.stages.validateMs);
+      legacyClock.add("spirv-opt performance passes (re-validating the input, friendly names on)", l.stages.optimizeMs);
+      legacyClock.add("spirv-val of spirv-opt's module (friendly names on)", l.stages.validateOptimizedMs);
+
+      // Cross-compilation to each other target, and its check separately.
+      for (const auto& t : crossTargets) {
+        if (t == "essl310" && p.precision != "fp32") continue;
+        std::string out = clock.time("SPIRV-Cross + check: " + t, [&] { return crossCompile(a.spirv, t, s.fileName); });
+        if (t == "glsl450" || t == "essl310")
+          clock.time("  of which the check: " + t, [&] { return checkGlsl(out, t == "essl310"); });
+        if (t == "hlsl") clock.time("  of which the check: hlsl", [&] { return checkHlsl(out); });
+      }
+
+      // spirv-opt pass by pass, summed per pass name over its occurrences in the recipe.
+      if (lean.optimize) {
+        CompileOptions raw;
+        raw.optimize = raw.validate = false;
+        std::vector<uint32_t> m = compileComputeGlsl(s.glsl, s.fileName, raw).spirv;
+        passClock.time("no pass (parse to IR, write back)", [&] { return runPasses(m, {}); });
+        for (const auto& pass : passes) m = passClock.time(pass, [&] { return runPasses(m, {"--" + pass}); });
+        passesMatch = passesMatch && m == c.spirv;
+        passesSameCount = passesSameCount && spirvInstructionCount(m) == spirvInstructionCount(c.spirv);
+      }
+    }
+    fs::remove_all(cacheDir);
+    clock.endRepeat();
+    passClock.endRepeat();
+    legacyClock.endRepeat();
+  }
+  json out{{"permutations", perms.size()},
+           {"repeats", repeats},
+           {"stages", clock.rows(perms.size())},
+           {"legacy_stages", legacyClock.rows(perms.size())},
+           {"spirv_opt_passes", passClock.rows(perms.size())},
+           {"spirv_opt_recipe", passes},
+           {"pass_by_pass_equals_one_optimizer", passesMatch},
+           {"pass_by_pass_same_instruction_count", passesSameCount}};
+
+  // Package writing, for the scene (its own permutations), -j1 without a cache.
+  if (!scene.empty()) {
+    SceneDesc desc = loadScene(scene, lib);
+    ScenePlan plan = planScene(desc, lib);
+    std::vector<double> buildMs, writeMs;
+    for (int r = 0; r < repeats; ++r) {
+      auto t0 = Clock::now();
+      BuildOptions o = options(1);
+      o.targets = desc.targets;
+      std::vector<BuiltPermutation> built = buildPermutations(lib, plan.required, o);
+      buildMs.push_back(msSince(t0));
+      t0 = Clock::now();
+      PackageWriter pkg;
+      PackageInputs in;
+      in.lib = &lib;
+      in.plan = &plan;
+      in.built = &built;
+      in.targets = desc.targets;
+      in.sceneFile = scene;
+      addPackageFiles(pkg, in);
+      pkg.commit(tmp / "breakdown-pkg");
+      writeMs.push_back(msSince(t0));
+    }
+    const double n = double(plan.required.size());
+    out["package"] = {{"scene", scene},
+                      {"permutations", plan.required.size()},
+                      {"targets", desc.targets},
+                      {"build_j1_ms_per_permutation", bench::median(buildMs) / n},
+                      {"write_package_ms_per_permutation", bench::median(writeMs) / n}};
+  }
+  return out;
+}
+
 std::string fmt(double v, int digits = 3) {
   char b[64];
   std::snprintf(b, sizeof b, "%.*g", digits, v);
   return b;
 }
 
+// f (opt-in, --recipes=FILE): spirv-opt recipes against RegisterPerformancePasses on the
+// glslang output of every permutation of the list: optimizer time (one thread, median over
+// REPEATS of the total) and SPIR-V instruction counts. FILE: one recipe per line,
+// "name: --pass --pass ...".
+json benchRecipes(const ShaderLibrary& lib, const std::vector<Permutation>& perms, int repeats,
+                  const std::string& file) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> recipes{{"performance", {"-O"}}};
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream words(line.substr(line.find(':') + 1));
+    std::vector<std::string> flags;
+    for (std::string w; words >> w;) flags.push_back(w);
+    recipes.push_back({line.substr(0, line.find(':')), flags});
+  }
+  std::vector<std::vector<uint32_t>> inputs;
+  for (const auto& p : perms) {
+    EmittedShader s = emitPermutation(lib, p, false, EmitMode::Engine);
+    CompileOptions raw;
+    raw.optimize = false;
+    inputs.push_back(compileComputeGlsl(s.glsl, s.fileName, raw).spirv);
+  }
+  // Repeats interleaved across the recipes, so that a change of load hits all of them.
+  std::vector<std::vector<double>> ms(recipes.size());
+  std::vector<std::vector<size_t>> counts(recipes.size());
+  for (int r = 0; r < repeats; ++r)
+    for (size_t k = 0; k < recipes.size(); ++k) {
+      counts[k].clear();
+      auto t0 = Clock::now();
+      for (const auto& m : inputs) counts[k].push_back(spirvInstructionCount(runPasses(m, recipes[k].second)));
+      ms[k].push_back(msSince(t0));
+    }
+  const std::vector<size_t>& reference = counts[0];
+  json rows = json::array();
+  for (size_t k = 0; k < recipes.size(); ++k) {
+    const auto& [name, flags] = recipes[k];
+    size_t total = 0, more = 0, fewer = 0;
+    long worst = 0;
+    for (size_t i = 0; i < counts[k].size(); ++i) {
+      total += counts[k][i];
+      more += counts[k][i] > reference[i];
+      fewer += counts[k][i] < reference[i];
+      worst = std::max(worst, long(counts[k][i]) - long(reference[i]));
+    }
+    spvtools::Optimizer registered(SPV_ENV_VULKAN_1_1);
+    registered.RegisterPassesFromFlags(flags);
+    const double perPermutation = bench::median(ms[k]) / double(inputs.size());
+    rows.push_back({{"recipe", name},
+                    {"flags", flags},
+                    {"passes", registered.GetPassNames().size()},
+                    {"optimizer_ms_per_permutation", perPermutation},
+                    {"optimizer_ms_all_repeats", ms[k]},
+                    {"instructions_total", total},
+                    {"permutations_with_more_instructions", more},
+                    {"permutations_with_fewer_instructions", fewer},
+                    {"largest_increase", worst}});
+    std::cerr << "  " << name << ": " << perPermutation << " ms, " << total << " instructions, " << more << " more, "
+              << fewer << " fewer, worst +" << worst << "\n";
+  }
+  return rows;
+}
+
+std::string markdownBreakdown(const json& b) {
+  std::string s = "## e. Where the time goes, one thread (" + std::to_string(b["permutations"].get<size_t>()) +
+                  " permutations, median of " + std::to_string(b["repeats"].get<int>()) +
+                  " repeats)\n\nms per permutation, each stage run on its own.\n\n| stage | ms |\n|---|---|\n";
+  for (const auto& row : b["stages"])
+    s += "| " + row["stage"].get<std::string>() + " | " + fmt(row["ms_per_permutation"]) + " |\n";
+  s += "\nThe legacy pipeline (before issue 15) on the same GLSL and SPIR-V:\n\n| stage | ms |\n|---|---|\n";
+  for (const auto& row : b["legacy_stages"])
+    s += "| " + row["stage"].get<std::string>() + " | " + fmt(row["ms_per_permutation"]) + " |\n";
+  s += "\nspirv-opt pass by pass (one optimizer per pass, each including a parse to IR and write-back; "
+       "summed over a pass's occurrences in the recipe; the same module as one optimizer running them all: " +
+       std::string(b["pass_by_pass_equals_one_optimizer"].get<bool>() ? "yes" : "no") +
+       ", the same instruction count: " +
+       std::string(b["pass_by_pass_same_instruction_count"].get<bool>() ? "yes" : "no") +
+       "):\n\n| pass | ms |\n|---|---|\n";
+  for (const auto& row : b["spirv_opt_passes"])
+    s += "| " + row["stage"].get<std::string>() + " | " + fmt(row["ms_per_permutation"]) + " |\n";
+  if (b.contains("package")) {
+    const json& p = b["package"];
+    std::string targets;
+    for (const auto& t : p["targets"]) targets += (targets.empty() ? "" : ",") + t.get<std::string>();
+    s += "\nPackage of " + p["scene"].get<std::string>() + " (" + std::to_string(p["permutations"].get<size_t>()) +
+         " permutations, targets " + targets + "): buildPermutations -j1 " + fmt(p["build_j1_ms_per_permutation"]) +
+         " ms per permutation, addPackageFiles + commit " + fmt(p["write_package_ms_per_permutation"]) +
+         " ms per permutation.\n";
+  }
+  return s;
+}
+
 std::string markdown(const json& r) {
   std::string s = "# Compile benchmarks\n\n" + r["command"].get<std::string>() +
                   "\n\nMachine: " + r["machine"].get<std::string>() + "\n\n";
-  const json& t = r["throughput"];
-  s += "## a. Throughput (" + std::to_string(t["permutations"].get<size_t>()) +
-       " permutations)\n\n"
-       "| jobs | in-process perm/s | process pairs perm/s | speedup |\n|---|---|---|---|\n";
-  for (int j : {1, 2}) {
-    std::string k = std::to_string(j);
-    s += "| " + k + " | " + fmt(t["in_process_j" + k]["permutations_per_s"]) + " | " +
-         fmt(t["process_pairs_j" + k]["permutations_per_s"]) + " | " + fmt(t["speedup_j" + k]) + " |\n";
+  if (r.contains("throughput")) {
+    const json& t = r["throughput"];
+    s += "## a. Throughput (" + std::to_string(t["permutations"].get<size_t>()) +
+         " permutations, SPIR-V, optimized and validated, no cache)\n\n"
+         "Legacy: the pipeline before issue 15 (friendly names in spirv-val, spirv-opt re-validating its input), "
+         "measured in the same run, repeats interleaved; its SPIR-V is identical.\n\n"
+         "| jobs | in-process perm/s | legacy perm/s | lean / legacy | process pairs perm/s | in-process / pairs |\n"
+         "|---|---|---|---|---|---|\n";
+    for (int j : {1, 2}) {
+      std::string k = std::to_string(j);
+      s += "| " + k + " | " + fmt(t["in_process_j" + k]["permutations_per_s"]) + " | " +
+           fmt(t["legacy_j" + k]["permutations_per_s"]) + " | " + fmt(t["lean_over_legacy_j" + k]) + " | " +
+           fmt(t["process_pairs_j" + k]["permutations_per_s"]) + " | " + fmt(t["speedup_j" + k]) + " |\n";
+    }
   }
-  const json& n = r["noop"];
-  s += "\n## b. No-op rebuild, warm cache\n\n| what | cold ms | warm ms |\n|---|---|---|\n| buildPermutations, " +
-       std::to_string(n["permutations"].get<size_t>()) + " permutations, -j2 | " + fmt(n["cold_ms"]) + " | " +
-       fmt(n["warm_ms_median"]) + " |\n";
-  if (n.contains("cli"))
-    s += "| `" + n["cli"]["command"].get<std::string>() + "` | " + fmt(n["cli"]["cold_ms"]) + " | " +
-         fmt(n["cli"]["noop_ms_median"]) + " |\n";
-  s +=
-      "\n## c. Cold compile time against scene size (-j2)\n\n| permutations | repeats | ms | ms per permutation | peak RSS MiB |\n|---|---|---|---|---|\n";
-  for (const auto& row : r["scaling"])
-    s += "| " + std::to_string(row["permutations"].get<size_t>()) + " | " + std::to_string(row["repeats"].get<int>()) +
-         " | " + fmt(row["ms_median"], 5) + " | " + fmt(row["ms_per_permutation"]) + " | " + fmt(row["peak_rss_mib"]) +
-         " |\n";
-  s +=
-      "\n## d. Specialized against feature-complete, on " + r["runtime"]["device"].get<std::string>() +
-      "\n\nns per evaluation (ratio to specialized) and SPIR-V instructions after spirv-opt. Full (constants): every "
-      "feature on, the folded or absent features' inputs compile-time constants at the scene's values. Full (run-time): "
-      "the same inputs read from the record, as a uniform-driven uber shader.\n\n"
-      "| material | specialized | full (constants) | full (run-time) | instr. specialized | full (constants) | full (run-time) |\n"
-      "|---|---|---|---|---|---|---|\n";
-  auto instr = [](const json& j) { return std::to_string(j["spirv_instructions"].get<size_t>()); };
-  for (const auto& row : r["runtime"]["rows"])
-    s += "| " + row["material"].get<std::string>() + " | " + fmt(row["specialized"]["ns_per_eval"]) + " ns | " +
-         fmt(row["feature_complete_constant"]["ns_per_eval"]) + " ns (" +
-         fmt(row["time_ratio_constant_over_specialized"]) + "x) | " +
-         fmt(row["feature_complete_runtime"]["ns_per_eval"]) + " ns (" +
-         fmt(row["time_ratio_runtime_over_specialized"]) + "x) | " + instr(row["specialized"]) + " | " +
-         instr(row["feature_complete_constant"]) + " | " + instr(row["feature_complete_runtime"]) + " |\n";
+  if (r.contains("noop")) {
+    const json& n = r["noop"];
+    s += "\n## b. No-op rebuild, warm cache\n\n| what | cold ms | warm ms |\n|---|---|---|\n| buildPermutations, " +
+         std::to_string(n["permutations"].get<size_t>()) + " permutations, -j2 | " + fmt(n["cold_ms"]) + " | " +
+         fmt(n["warm_ms_median"]) + " |\n";
+    if (n.contains("cli"))
+      s += "| `" + n["cli"]["command"].get<std::string>() + "` | " + fmt(n["cli"]["cold_ms"]) + " | " +
+           fmt(n["cli"]["noop_ms_median"]) + " |\n";
+  }
+  if (r.contains("scaling")) {
+    s +=
+        "\n## c. Cold compile time against scene size (-j2)\n\n| permutations | repeats | ms | ms per permutation | peak RSS MiB |\n|---|---|---|---|---|\n";
+    for (const auto& row : r["scaling"])
+      s += "| " + std::to_string(row["permutations"].get<size_t>()) + " | " +
+           std::to_string(row["repeats"].get<int>()) + " | " + fmt(row["ms_median"], 5) + " | " +
+           fmt(row["ms_per_permutation"]) + " | " + fmt(row["peak_rss_mib"]) + " |\n";
+  }
+  if (r.contains("runtime")) {
+    s +=
+        "\n## d. Specialized against feature-complete, on " + r["runtime"]["device"].get<std::string>() +
+        "\n\nns per evaluation (ratio to specialized) and SPIR-V instructions after spirv-opt. Full (constants): every "
+        "feature on, the folded or absent features' inputs compile-time constants at the scene's values. Full "
+        "(run-time): the same inputs read from the record, as a uniform-driven uber shader.\n\n"
+        "| material | specialized | full (constants) | full (run-time) | instr. specialized | full (constants) | full (run-time) |\n"
+        "|---|---|---|---|---|---|---|\n";
+    auto instr = [](const json& j) { return std::to_string(j["spirv_instructions"].get<size_t>()); };
+    for (const auto& row : r["runtime"]["rows"])
+      s += "| " + row["material"].get<std::string>() + " | " + fmt(row["specialized"]["ns_per_eval"]) + " ns | " +
+           fmt(row["feature_complete_constant"]["ns_per_eval"]) + " ns (" +
+           fmt(row["time_ratio_constant_over_specialized"]) + "x) | " +
+           fmt(row["feature_complete_runtime"]["ns_per_eval"]) + " ns (" +
+           fmt(row["time_ratio_runtime_over_specialized"]) + "x) | " + instr(row["specialized"]) + " | " +
+           instr(row["feature_complete_constant"]) + " | " + instr(row["feature_complete_runtime"]) + " |\n";
+  }
+  if (r.contains("breakdown")) s += "\n" + markdownBreakdown(r["breakdown"]);
+  if (r.contains("recipes")) {
+    s += "\n## f. spirv-opt recipes against RegisterPerformancePasses (one thread, median)\n\n"
+         "| recipe | passes | spirv-opt ms per permutation | instructions, all permutations | permutations with more | "
+         "with fewer | largest increase |\n|---|---|---|---|---|---|---|\n";
+    for (const auto& row : r["recipes"])
+      s += "| " + row["recipe"].get<std::string>() + " | " + std::to_string(row["passes"].get<size_t>()) + " | " +
+           fmt(row["optimizer_ms_per_permutation"]) + " | " + std::to_string(row["instructions_total"].get<size_t>()) +
+           " | " + std::to_string(row["permutations_with_more_instructions"].get<size_t>()) + " | " +
+           std::to_string(row["permutations_with_fewer_instructions"].get<size_t>()) + " | " +
+           std::to_string(row["largest_increase"].get<long>()) + " |\n";
+  }
   return s;
 }
 
@@ -335,6 +651,25 @@ int main(int argc, char** argv) {
   size_t maxSize = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 10000;
   fs::path outDir = argc > 3 ? argv[3] : "bench/results";
   std::string scene = argc > 4 ? argv[4] : "";
+  // Options after the four positional arguments: --breakdown adds section e; --sections=LETTERS
+  // runs only those sections (default abcd, plus e with --breakdown).
+  std::string sections = "abcd";
+  std::string extra, recipesFile;
+  for (int i = 5; i < argc; ++i) {
+    const std::string a = argv[i];
+    extra += " " + a;
+    if (a == "--breakdown")
+      sections += "e";
+    else if (a.rfind("--recipes=", 0) == 0)
+      sections += "f", recipesFile = a.substr(10);
+    else if (a.rfind("--sections=", 0) == 0)
+      sections = a.substr(11);
+    else {
+      std::cerr << "mb_bench_compile: unknown option " << a << "\n";
+      return 2;
+    }
+  }
+  auto want = [&](char c) { return sections.find(c) != std::string::npos; };
   std::string cli = (fs::absolute(argv[0]).parent_path() / "matbricks").string();
   try {
     ShaderLibrary lib = ShaderLibrary::load(ShaderLibrary::defaultRoot());
@@ -346,17 +681,36 @@ int main(int argc, char** argv) {
     std::vector<Permutation> perms = throughputList(lib, materials);
     json r;
     r["command"] = "mb_bench_compile " + std::to_string(repeats) + " " + std::to_string(maxSize) + " " +
-                   outDir.string() + " " + scene;
+                   outDir.string() + " " + scene + extra;
     r["machine"] = std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
     r["toolchain"] = toolchainVersion();
-    std::cerr << "a. throughput\n";
-    r["throughput"] = benchThroughput(lib, perms, repeats, tmp);
-    std::cerr << "b. no-op rebuild\n";
-    r["noop"] = benchNoop(lib, perms, repeats, tmp, cli, scene);
-    std::cerr << "c. scaling\n";
-    r["scaling"] = benchScaling(lib, byName(materials, "filament_plastic"), maxSize, repeats, tmp);
-    std::cerr << "d. run time\n";
-    r["runtime"] = benchRuntime(lib, materials, repeats);
+    if (want('e')) {
+      // First, so that the targets' one-time glslang initializations (per #version) are paid
+      // by a warm-up pass here and not in a timed repeat.
+      std::cerr << "e. breakdown\n";
+      benchBreakdown(lib, {perms.front()}, 1, tmp, "");
+      r["breakdown"] = benchBreakdown(lib, perms, repeats, tmp, scene);
+    }
+    if (want('f')) {
+      std::cerr << "f. recipes\n";
+      r["recipes"] = benchRecipes(lib, perms, repeats, recipesFile);
+    }
+    if (want('a')) {
+      std::cerr << "a. throughput\n";
+      r["throughput"] = benchThroughput(lib, perms, repeats, tmp);
+    }
+    if (want('b')) {
+      std::cerr << "b. no-op rebuild\n";
+      r["noop"] = benchNoop(lib, perms, repeats, tmp, cli, scene);
+    }
+    if (want('c')) {
+      std::cerr << "c. scaling\n";
+      r["scaling"] = benchScaling(lib, byName(materials, "filament_plastic"), maxSize, repeats, tmp);
+    }
+    if (want('d')) {
+      std::cerr << "d. run time\n";
+      r["runtime"] = benchRuntime(lib, materials, repeats);
+    }
     fs::remove_all(tmp);
     fs::create_directories(outDir);
     std::ofstream(outDir / "compile.json") << r.dump(2) << "\n";

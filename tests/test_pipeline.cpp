@@ -101,6 +101,41 @@ TEST_CASE("two compiles of the same permutation are byte-identical", "[pipeline]
   }
 }
 
+TEST_CASE("the lean and legacy pipelines give the same SPIR-V and reject a module with the same message",
+          "[pipeline][determinism]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  auto materials = exampleMaterials();
+  CompileOptions legacy;
+  legacy.pipeline = CompilePipeline::Legacy;
+  for (const auto& perm : permutationsFor(materials)) {
+    INFO(perm.key());
+    EmittedShader s = emitPermutation(lib, perm);
+    CHECK(compileComputeGlsl(s.glsl, s.fileName).spirv == compileComputeGlsl(s.glsl, s.fileName, legacy).spirv);
+  }
+  // An invalid module: the first OpFAdd given a 32-bit integer result type. Lean finds it
+  // invalid with friendly names off and still reports the Legacy message, which names the
+  // type ("%uint", "%int") as only friendly names do.
+  EmittedShader s = emitPermutation(lib, permutationsFor(materials).front());
+  std::vector<uint32_t> bad = compileComputeGlsl(s.glsl, s.fileName).spirv;
+  constexpr uint32_t kOpTypeInt = 21, kOpFAdd = 129;
+  uint32_t intType = 0;
+  std::string intName;
+  bool changed = false;
+  for (size_t i = 5; i < bad.size() && !changed; i += bad[i] >> 16) {
+    const uint32_t op = bad[i] & 0xffff;
+    if (op == kOpTypeInt && !intType && bad[i + 2] == 32) {
+      intType = bad[i + 1];
+      intName = bad[i + 3] ? "%int" : "%uint";
+    }
+    if (op == kOpFAdd && intType) bad[i + 1] = intType, changed = true;
+  }
+  REQUIRE(changed);
+  const std::string lean = spirvValidationErrors(bad, SPV_ENV_VULKAN_1_1);
+  CHECK_THAT(lean, Catch::Contains("OpFAdd " + intName));
+  CHECK(lean == spirvValidationErrors(bad, SPV_ENV_VULKAN_1_1, CompilePipeline::Legacy));
+  CHECK(spirvValidationErrors(compileComputeGlsl(s.glsl, s.fileName).spirv, SPV_ENV_VULKAN_1_1).empty());
+}
+
 TEST_CASE("a permutation contains only the bricks it reaches", "[pipeline][emit]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   MaterialDesc m = loadMaterialJson((test::sourceDir() / "materials/ue4_metal.json").string(), lib);

@@ -135,6 +135,7 @@ void buildUnit(CompileUnit& u, size_t index, const std::vector<std::string>& tar
       if (t == "essl310" && !u.mediumpGlsl.empty()) {
         // RelaxedPrecision survives spirv-opt's passes, and no 16-bit constant is involved.
         CompileOptions relaxed;
+        relaxed.pipeline = u.compile.pipeline;
         a.targets[t] = crossCompile(compileComputeGlsl(u.mediumpGlsl, u.mediumpDisplayName, relaxed).spirv, t,
                                     u.mediumpDisplayName);
       } else {
@@ -278,6 +279,7 @@ class StreamingBuild {
     // fp16 skips spirv-opt: SPIRV-Tools v2023.1's constant folding emits invalid 16-bit
     // constants (spirv-val then rejects the module), so fp16 ships glslang's SPIR-V as is.
     u.compile.optimize = perm.precision == "fp32";
+    u.compile.pipeline = options_.pipeline;
     u.glsl = shader.glsl;
     u.displayName = shader.fileName;
     if (perm.precision == "fp16" && std::find(targets_.begin(), targets_.end(), "essl310") != targets_.end()) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "compile/glsl_compiler.hpp"
 #include "compile/remote_cache.hpp"
 #include "compile/shader_cache.hpp"
 #include "compile/shard.hpp"
@@ -21,6 +22,8 @@ struct BuildOptions {
   std::vector<std::string> targets{"spirv"};  // subset of allTargets(); spirv always built
   std::filesystem::path cacheDir;             // empty: no cache
   EmitMode mode = EmitMode::Engine;           // what the package ships (emit/emitter.hpp)
+  // Same outputs either way (glsl_compiler.hpp); Legacy only for the benchmark's comparison.
+  CompilePipeline pipeline = CompilePipeline::Lean;
   RemoteCache* remote = nullptr;              // behind the local cache (remote_cache.hpp); null: none
   ShardSpec shard;                            // build only this shard's units (shard.hpp); whole by default
   // merge: every unit's artifacts come from these shards; nothing is compiled, no cache is

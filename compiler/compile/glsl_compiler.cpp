@@ -89,8 +89,9 @@ std::vector<Diagnostic> parseInfoLog(const std::string& log, const LineMap& line
   return out;
 }
 
-std::vector<uint32_t> frontEnd(const std::string& source, const std::string& displayName) {
+std::vector<uint32_t> frontEnd(const std::string& source, const std::string& displayName, CompileStageTimes& times) {
   ensureGlslangInitialized();
+  auto t0 = Clock::now();
   glslang::TShader shader(EShLangCompute);
   const char* text = source.c_str();
   const char* name = displayName.c_str();
@@ -102,34 +103,81 @@ std::vector<uint32_t> frontEnd(const std::string& source, const std::string& dis
   if (!shader.parse(GetDefaultResources(), 450, false, messages)) {
     throw DiagnosticError(parseInfoLog(shader.getInfoLog(), LineMap(source, displayName), displayName));
   }
+  times.parseMs = msSince(t0);
+  auto t1 = Clock::now();
   glslang::TProgram program;
   program.addShader(&shader);
   if (!program.link(messages)) {
     throw DiagnosticError(
         {{Severity::Error, "E-GLSL-LINK", {displayName, 0, 0}, std::string("GLSL link: ") + program.getInfoLog(), ""}});
   }
+  times.linkMs = msSince(t1);
+  auto t2 = Clock::now();
   glslang::SpvOptions options;
   options.disableOptimizer = true;  // spirv-opt runs below, with the performance recipe
   options.generateDebugInfo = false;
   std::vector<uint32_t> spirv;
   spv::SpvBuildLogger logger;
   glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), spirv, &logger, &options);
+  times.codegenMs = msSince(t2);
   return spirv;
 }
 
-void validateSpirv(const std::vector<uint32_t>& spirv, const std::string& displayName, const char* stage) {
-  spvtools::SpirvTools tools(kTargetEnv);
-  std::string messages;
+// spirv-val; on failure, the validator's messages. Friendly names make the messages readable
+// ("%float", "%MbIn") but cost most of the validator's time: it names every id of the module
+// before checking the first one.
+bool spirvValid(const std::vector<uint32_t>& spirv, spv_target_env env, bool friendlyNames, std::string* messages,
+                bool firstOnly) {
+  spvtools::SpirvTools tools(env);
   tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t& pos, const char* msg) {
-    messages += "[word " + std::to_string(pos.index) + "] " + msg + "; ";
+    if (!messages) return;
+    if (firstOnly)
+      *messages = messages->empty() ? std::string(msg) : *messages;
+    else
+      *messages += "[word " + std::to_string(pos.index) + "] " + msg + "; ";
   });
-  if (!tools.Validate(spirv)) {
-    throw DiagnosticError({{Severity::Error,
-                            "E-SPIRV-VAL",
-                            {displayName, 0, 0},
-                            std::string("spirv-val rejected the module ") + stage + ": " + messages,
-                            ""}});
+  spvtools::ValidatorOptions options;
+  options.SetFriendlyNames(friendlyNames);
+  return tools.Validate(spirv.data(), spirv.size(), options);
+}
+
+void validateSpirv(const std::vector<uint32_t>& spirv, const std::string& displayName, const char* stage,
+                   CompilePipeline pipeline) {
+  const std::string messages = spirvValidationErrors(spirv, kTargetEnv, pipeline);
+  if (messages.empty()) return;
+  throw DiagnosticError({{Severity::Error,
+                          "E-SPIRV-VAL",
+                          {displayName, 0, 0},
+                          std::string("spirv-val rejected the module ") + stage + ": " + messages,
+                          ""}});
+}
+
+std::vector<uint32_t> optimizeSpirv(const std::vector<uint32_t>& spirv, const std::string& displayName,
+                                    const CompileOptions& options) {
+  // spvtools::Optimizer is single-use: one per compile.
+  spvtools::Optimizer optimizer(kTargetEnv);
+  std::string messages;
+  optimizer.SetMessageConsumer([&](spv_message_level_t level, const char*, const spv_position_t&, const char* msg) {
+    if (level <= SPV_MSG_ERROR) messages += std::string(msg) + "; ";
+  });
+  optimizer.RegisterPerformancePasses();
+  std::vector<uint32_t> optimized;
+  bool ok = false;
+  if (options.pipeline == CompilePipeline::Legacy) {
+    ok = optimizer.Run(spirv.data(), spirv.size(), &optimized);  // validates its input again, friendly names on
+  } else {
+    // The input was just validated (validate on); without validation the optimizer still
+    // checks its input itself, as the passes assume a valid module.
+    spvtools::ValidatorOptions validatorOptions;
+    validatorOptions.SetFriendlyNames(false);
+    spvtools::OptimizerOptions optimizerOptions;
+    optimizerOptions.set_run_validator(!options.validate);
+    optimizerOptions.set_validator_options(validatorOptions);
+    ok = optimizer.Run(spirv.data(), spirv.size(), &optimized, optimizerOptions);
   }
+  if (!ok)
+    throw DiagnosticError({{Severity::Error, "E-SPIRV-OPT", {displayName, 0, 0}, "spirv-opt failed: " + messages, ""}});
+  return optimized;
 }
 
 }  // namespace
@@ -147,31 +195,42 @@ void ensureGlslangInitialized() {
 CompileResult compileComputeGlsl(const std::string& source, const std::string& displayName,
                                  const CompileOptions& options) {
   CompileResult result;
+  CompileStageTimes& times = result.stages;
   auto t0 = Clock::now();
-  std::vector<uint32_t> spirv = frontEnd(source, displayName);
+  std::vector<uint32_t> spirv = frontEnd(source, displayName, times);
   result.frontEndMs = msSince(t0);
 
   auto t1 = Clock::now();
-  if (options.validate) validateSpirv(spirv, displayName, "after glslang");
+  if (options.validate) {
+    validateSpirv(spirv, displayName, "after glslang", options.pipeline);
+    times.validateMs = msSince(t1);
+  }
   if (options.optimize) {
-    // spvtools::Optimizer is single-use: one per compile.
-    spvtools::Optimizer optimizer(kTargetEnv);
-    std::string messages;
-    optimizer.SetMessageConsumer([&](spv_message_level_t level, const char*, const spv_position_t&, const char* msg) {
-      if (level <= SPV_MSG_ERROR) messages += std::string(msg) + "; ";
-    });
-    optimizer.RegisterPerformancePasses();
-    std::vector<uint32_t> optimized;
-    if (!optimizer.Run(spirv.data(), spirv.size(), &optimized)) {
-      throw DiagnosticError(
-          {{Severity::Error, "E-SPIRV-OPT", {displayName, 0, 0}, "spirv-opt failed: " + messages, ""}});
+    auto t2 = Clock::now();
+    spirv = optimizeSpirv(spirv, displayName, options);
+    times.optimizeMs = msSince(t2);
+    if (options.validate) {
+      auto t3 = Clock::now();
+      // Kept although the input was valid: spirv-opt has emitted invalid modules (the fp16
+      // constant folding of v2023.1, build.cpp), and this is what catches that.
+      validateSpirv(spirv, displayName, "after spirv-opt", options.pipeline);
+      times.validateOptimizedMs = msSince(t3);
     }
-    spirv = std::move(optimized);
-    if (options.validate) validateSpirv(spirv, displayName, "after spirv-opt");
   }
   result.optimizeMs = msSince(t1);
   result.spirv = std::move(spirv);
   return result;
+}
+
+std::string spirvValidationErrors(const std::vector<uint32_t>& spirv, int env, CompilePipeline pipeline,
+                                  bool firstOnly) {
+  const auto target = static_cast<spv_target_env>(env);
+  const bool legacy = pipeline == CompilePipeline::Legacy;
+  std::string messages;
+  if (spirvValid(spirv, target, legacy, legacy ? &messages : nullptr, firstOnly)) return "";
+  // Lean: validity does not depend on the names, only the messages do.
+  if (!legacy) spirvValid(spirv, target, true, &messages, firstOnly);
+  return messages.empty() ? "invalid module" : messages;
 }
 
 std::string toolchainVersion() {

@@ -9,15 +9,40 @@
 
 namespace mb {
 
+// How spirv-val and spirv-opt are driven. Both give the same SPIR-V (the same passes in the
+// same order) and accept and reject the same modules; they differ in cost only
+// (docs/performance-compile.md).
+enum class CompilePipeline {
+  // spirv-val with friendly names off (naming every id costs most of its time; a rejected
+  // module is validated again with them on, so its message still names types and variables),
+  // and spirv-opt told not to validate its input again, which spirv-val just did.
+  Lean,
+  // Before issue 15: friendly names on, and spirv-opt re-validating its input, so a module
+  // was validated three times. Kept so that mb_bench_compile measures both in one run.
+  Legacy,
+};
+
 struct CompileOptions {
   bool optimize = true;  // spirv-opt performance passes (RegisterPerformancePasses)
   bool validate = true;  // spirv-val before and after optimization
+  CompilePipeline pipeline = CompilePipeline::Lean;
+};
+
+// Where one compile's time went, in ms (the breakdown of docs/performance-compile.md).
+struct CompileStageTimes {
+  double parseMs = 0;              // glslang TShader::parse (preprocess, parse, semantic checks)
+  double linkMs = 0;               // glslang TProgram::link
+  double codegenMs = 0;            // glslang GlslangToSpv
+  double validateMs = 0;           // spirv-val of glslang's SPIR-V
+  double optimizeMs = 0;           // spirv-opt (Legacy: including its own validation of the input)
+  double validateOptimizedMs = 0;  // spirv-val of spirv-opt's SPIR-V
 };
 
 struct CompileResult {
   std::vector<uint32_t> spirv;
   double frontEndMs = 0;  // glslang parse + link + GlslangToSpv
   double optimizeMs = 0;  // spirv-val + spirv-opt + spirv-val
+  CompileStageTimes stages;
 };
 
 // Compiles a GLSL 450 compute shader. `displayName` names the generated file in errors that
@@ -25,6 +50,13 @@ struct CompileResult {
 // file and line that the #line directives point at (a brick's file, the user's file).
 CompileResult compileComputeGlsl(const std::string& source, const std::string& displayName,
                                  const CompileOptions& options = {});
+
+// spirv-val of a module under `env` (a spv_target_env), as compileComputeGlsl runs it with
+// Vulkan 1.1 rules: "" when valid, else the validator's messages. Lean validates with friendly
+// names off and, only for a rejected module, again with them on, so the messages are the
+// Legacy ones ("[word N] message; " each, or the first only with `firstOnly`).
+std::string spirvValidationErrors(const std::vector<uint32_t>& spirv, int env,
+                                  CompilePipeline pipeline = CompilePipeline::Lean, bool firstOnly = false);
 
 // Initializes glslang once per process; thread-safe. Every glslang user calls it first.
 void ensureGlslangInitialized();

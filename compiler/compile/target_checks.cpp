@@ -5,7 +5,7 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
-#include <spirv-tools/libspirv.hpp>
+#include <spirv-tools/libspirv.h>
 
 #include "compile/glsl_compiler.hpp"
 
@@ -22,12 +22,8 @@ std::string firstError(const std::string& log) {
 }
 
 std::string validate(const std::vector<uint32_t>& spirv, spv_target_env env) {
-  spvtools::SpirvTools tools(env);
-  std::string first;
-  tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t&, const char* msg) {
-    if (first.empty()) first = msg;
-  });
-  return tools.Validate(spirv) ? "" : "spirv-val: " + (first.empty() ? "invalid module" : first);
+  const std::string first = spirvValidationErrors(spirv, env, CompilePipeline::Lean, true);
+  return first.empty() ? "" : "spirv-val: " + first;
 }
 
 struct Reparse {
