@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <list>
 
 #include "harness/chunk_plan.hpp"
 #include "harness/vulkan_check.hpp"
@@ -184,6 +185,12 @@ void copyOutputs(const ChunkPlan& plan, uint32_t outStride, const RunResources& 
 struct VulkanHarness::Impl {
   std::shared_ptr<DeviceContext> ctx;
   DeviceOptions options;
+  // kernelFor's cache: SPIR-V bytes -> kernel, most recently used first.
+  std::mutex kernelMutex;
+  std::list<std::pair<std::string, std::shared_ptr<Kernel>>> kernels;
+
+  RunResult runOnce(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
+                    uint64_t count);
 };
 
 VulkanHarness::VulkanHarness(const DeviceOptions& options) : impl_(std::make_unique<Impl>()) {
@@ -214,24 +221,16 @@ std::shared_ptr<Kernel> VulkanHarness::createKernel(const std::vector<uint32_t>&
   return kernel;
 }
 
-RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
-                             uint64_t count) {
-  const DeviceContext& ctx = *impl_->ctx;
-  if (kernel.ctx.get() != &ctx) throw HarnessError("run: the kernel belongs to another harness");
-  if (inputs.size() != count * inStride) {
-    throw HarnessError("run: expected " + std::to_string(count) + " records x " + std::to_string(inStride) +
-                       " floats = " + std::to_string(count * inStride) + " inputs, got " +
-                       std::to_string(inputs.size()));
-  }
+RunResult VulkanHarness::Impl::runOnce(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride,
+                                       uint32_t outStride, uint64_t count) {
+  const DeviceContext& ctx = *this->ctx;
   RunResult result;
-  if (count == 0) return result;
-
   ChunkLimits limits;
   limits.maxGroupsX = ctx.props.limits.maxComputeWorkGroupCount[0];
   limits.maxRangeBytes = ctx.props.limits.maxStorageBufferRange;
   limits.offsetAlignment = ctx.props.limits.minStorageBufferOffsetAlignment;
   limits.maxSegmentBytes = ctx.maxSegmentBytes;
-  limits.recordCap = impl_->options.maxRecordsPerChunk;
+  limits.recordCap = options.maxRecordsPerChunk;
   const ChunkPlan plan = planChunks(count, inStride, outStride, limits);
   const auto chunkCount = static_cast<uint32_t>(plan.chunks.size());
 
@@ -248,6 +247,56 @@ RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, u
   result.gpuMs = result.gpuTimestamps ? timestampMs(ctx, chunkCount, res) : wallMs;
   result.outputs.resize(count * outStride);
   copyOutputs(plan, outStride, res, result.outputs);
+  return result;
+}
+
+std::shared_ptr<Kernel> VulkanHarness::kernelFor(const std::vector<uint32_t>& spirv) {
+  std::string bytes(reinterpret_cast<const char*>(spirv.data()), spirv.size() * sizeof(uint32_t));
+  {
+    std::lock_guard lock(impl_->kernelMutex);
+    auto& list = impl_->kernels;
+    for (auto it = list.begin(); it != list.end(); ++it) {
+      if (it->first == bytes) {
+        list.splice(list.begin(), list, it);  // most recently used first
+        return list.front().second;
+      }
+    }
+  }
+  // Created outside the lock: two threads asking for the same new SPIR-V both create one,
+  // and the cache keeps the later; both kernels are valid.
+  auto kernel = createKernel(spirv);
+  std::lock_guard lock(impl_->kernelMutex);
+  impl_->kernels.emplace_front(std::move(bytes), kernel);
+  if (impl_->kernels.size() > kKernelCacheSize) impl_->kernels.pop_back();
+  return kernel;
+}
+
+RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
+                             uint64_t count) {
+  const DeviceContext& ctx = *impl_->ctx;
+  if (kernel.ctx.get() != &ctx) throw HarnessError("run: the kernel belongs to another harness");
+  if (inputs.size() != count * inStride) {
+    throw HarnessError("run: expected " + std::to_string(count) + " records x " + std::to_string(inStride) +
+                       " floats = " + std::to_string(count * inStride) + " inputs, got " +
+                       std::to_string(inputs.size()));
+  }
+  RunResult result;
+  if (count == 0) return result;
+
+  double firstDispatchMs = 0;
+  if (impl_->options.warmUpFirstDispatch && !kernel.warmedUp.load()) {
+    std::lock_guard lock(kernel.warmUpMutex);
+    if (impl_->options.warmUpFirstDispatch && !kernel.warmedUp.load()) {
+      // One record of the real inputs: the JIT happens here, outside the timed dispatches.
+      const std::vector<float> first(inputs.begin(), inputs.begin() + inStride);
+      const auto t0 = std::chrono::steady_clock::now();
+      impl_->runOnce(kernel, first, inStride, outStride, 1);
+      firstDispatchMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      kernel.warmedUp.store(true);
+    }
+  }
+  result = impl_->runOnce(kernel, inputs, inStride, outStride, count);
+  result.firstDispatchMs = firstDispatchMs;
   return result;
 }
 

@@ -34,11 +34,20 @@ struct DeviceOptions {
   bool validation = false;
   // Test hook: cap chunk sizes below the device limits (0 = use device limits).
   uint32_t maxRecordsPerChunk = 0;
+  // Benchmark hook: false restores the behaviour before issue 15 (no warm-up dispatch, so a
+  // kernel's first run() times lavapipe's JIT as GPU time); mb_bench_validate's old path.
+  bool warmUpFirstDispatch = true;
 };
 
 struct RunResult {
   std::vector<float> outputs;  // count * outStride floats
   double gpuMs = 0.0;          // sum over chunks of timestamp deltas
+  // Host time of the one-record dispatch that run() submits before the first run of a kernel,
+  // 0 on later runs. Lavapipe JIT-compiles a pipeline at its first dispatch, inside the
+  // timestamped interval: without this warm-up gpuMs would be mostly LLVM's compile time
+  // (measured: 570-1300 ms for one 4096-record probe with Mesa's shader cache cold, against
+  // 2-40 ms with it warm), and which runs paid it would depend on that cache.
+  double firstDispatchMs = 0.0;
   uint32_t chunks = 0;
   // False when the queue has no timestamps (timestampValidBits == 0): gpuMs is then the
   // host-measured time from submit to fence signal.
@@ -65,6 +74,12 @@ class VulkanHarness {
 
   // Creates the compute pipeline for a kernel following the contract above.
   std::shared_ptr<Kernel> createKernel(const std::vector<uint32_t>& spirv);
+  // The same, reusing the kernel made earlier for identical SPIR-V while it is among the last
+  // kKernelCacheSize asked for: a pipeline that has run once keeps its JIT-compiled code, so
+  // validating a permutation again in one process skips both the pipeline and the JIT.
+  // Thread-safe.
+  std::shared_ptr<Kernel> kernelFor(const std::vector<uint32_t>& spirv);
+  static constexpr size_t kKernelCacheSize = 64;
 
   // Runs `count` records. `inputs` holds count * inStride floats. Safe to call from
   // several threads at once (submissions to the one queue are serialized).

@@ -11,6 +11,7 @@
 #pragma once
 #include <vulkan/vulkan.h>
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -101,6 +102,9 @@ class Kernel {
   VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
   VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
+  // Set once the first (warm-up) dispatch has been submitted (RunResult::firstDispatchMs).
+  std::atomic<bool> warmedUp{false};
+  std::mutex warmUpMutex;
 };
 
 struct MappedBuffer {

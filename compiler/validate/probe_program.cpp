@@ -1,12 +1,17 @@
 #include "validate/probe_program.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <exception>
+#include <mutex>
+#include <thread>
 
 #include "common/model_reference.hpp"
 #include "common/reference.hpp"
+#include "compile/shader_cache.hpp"
 #include "validate/precision_domain.hpp"
 #include "validate/probe_scene_reference.hpp"
 
@@ -17,6 +22,17 @@ double msSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
+struct ProbeCacheSetting {
+  std::mutex mutex;
+  bool set = false;
+  std::filesystem::path dir;
+};
+
+ProbeCacheSetting& probeCacheSetting() {
+  static ProbeCacheSetting s;
+  return s;
+}
+
 void compileInto(ProbeProgram& p) {
   auto t0 = std::chrono::steady_clock::now();
   // fp16 probes skip spirv-opt (spirv-val still runs): SPIRV-Tools v2023.1's constant folding
@@ -24,7 +40,26 @@ void compileInto(ProbeProgram& p) {
   // ue4_metal at fp16), and folding half arithmetic at compile time need not round as half.
   CompileOptions options;
   options.optimize = p.precision == ShaderPrecision::Fp32;
+  ShaderCache cache(probeCacheDir());
+  std::string key;
+  if (cache.enabled()) {
+    key = ShaderCache::key({ShaderCache::kFormatVersion, MB_VERSION, toolchainVersion(), "validate-probe",
+                            options.optimize ? "optimize" : "no-optimize",
+                            options.validate ? "validate" : "no-validate", p.shader.glsl});
+    CompiledArtifacts hit;
+    if (cache.load(key, hit) == ShaderCache::Lookup::Hit) {
+      p.compiled.spirv = std::move(hit.spirv);
+      p.compileCacheHit = true;
+      p.compileMs = msSince(t0);
+      return;
+    }
+  }
   p.compiled = compileComputeGlsl(p.shader.glsl, p.shader.fileName, options);
+  if (cache.enabled()) {
+    CompiledArtifacts entry;
+    entry.spirv = p.compiled.spirv;
+    cache.store(key, entry);  // a failed write only means the next run compiles again
+  }
   p.compileMs = msSince(t0);
 }
 
@@ -37,6 +72,23 @@ void compileInto(ProbeProgram& p) {
 }
 
 }  // namespace
+
+void setProbeCacheDir(const std::filesystem::path& dir) {
+  ProbeCacheSetting& s = probeCacheSetting();
+  std::lock_guard lock(s.mutex);
+  s.set = true;
+  s.dir = dir;
+}
+
+std::filesystem::path probeCacheDir() {
+  ProbeCacheSetting& s = probeCacheSetting();
+  std::lock_guard lock(s.mutex);
+  if (!s.set) {
+    s.dir = ShaderCache::defaultDir();
+    s.set = true;
+  }
+  return s.dir;
+}
 
 Tolerance fp16Tolerance() {
   return {std::numeric_limits<double>::infinity(), 0.0,
@@ -66,20 +118,33 @@ std::function<void(const double*, double*)> materialReferenceEval(const Permutat
   ref::ModelReferenceFn model = ref::ModelRegistry::instance().find(mat.model);
   if (!model) missingReference("model '" + mat.model + "'");
   ProbeScene scene = probeSceneOf(perm, illuminanceInput);
-  return [model, layout, &mat, scene, bricks = std::move(bricks), groundTruths](const double* in, double* out) {
-    ref::ModelEvalInput e;
+  // What every record shares (bricks, features, constant inputs), built once. A reference
+  // evaluation used to build its ModelEvalInput from scratch, maps and strings included: that
+  // allocation was the larger part of the reference's time (perf, issue 15). Each thread keeps
+  // its own working copy per closure (keyed by a process-unique id, not an address that a
+  // later closure could reuse) and overwrites only what a record sets: the scene, which sets
+  // the same lights and environment every time, and the non-constant and fed inputs.
+  auto proto = std::make_shared<ref::ModelEvalInput>();
+  proto->bricks = std::move(bricks);
+  proto->groundTruths = groundTruths;
+  proto->features.insert(mat.features.begin(), mat.features.end());
+  for (const auto& prm : mat.params)
+    if (!prm.user && prm.constant) proto->inputs[prm.name] = prm.value;
+  static std::atomic<uint64_t> nextId{1};
+  const uint64_t id = nextId++;
+  return [model, layout, &mat, scene, proto, id](const double* in, double* out) {
+    thread_local uint64_t workingId = 0;
+    thread_local ref::ModelEvalInput e;
+    if (workingId != id) {
+      e = *proto;
+      workingId = id;
+    }
     sceneFromRecord(scene, layout, in, e);
-    e.bricks = bricks;
-    e.groundTruths = groundTruths;
-    e.features.insert(mat.features.begin(), mat.features.end());
     for (const auto& prm : mat.params) {
-      if (prm.user) continue;  // read only by surface code, whose results come fed below
-      if (prm.constant) {
-        e.inputs[prm.name] = prm.value;
-      } else {
-        const ProbeInput* pi = layout.find(prm.name);
-        e.inputs[prm.name].assign(in + pi->offset, in + pi->offset + componentCount(prm.type));
-      }
+      // User parameters are read only by surface code, whose results come fed below.
+      if (prm.user || prm.constant) continue;
+      const ProbeInput* pi = layout.find(prm.name);
+      e.inputs[prm.name].assign(in + pi->offset, in + pi->offset + componentCount(prm.type));
     }
     // With surface code the model inputs are what surface() computed on the GPU; they are
     // passed through unchanged, so NaN or Inf from user code shows in the comparison.
@@ -139,8 +204,7 @@ ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& 
   return p;
 }
 
-ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std::vector<float> inputs,
-                  bool conditioning) {
+ProbeRun runProbeOnGpu(harness::VulkanHarness& gpu, const ProbeProgram& program, std::vector<float> inputs) {
   const ProbeLayout& layout = program.shader.layout;
   ProbeRun run;
   run.count = layout.inStride ? inputs.size() / layout.inStride : 0;
@@ -148,27 +212,54 @@ ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std:
     throw harness::HarnessError("device \"" + gpu.deviceName() + "\" does not support shaderFloat16 " +
                                 "(VK_KHR_shader_float16_int8); fp16 probes cannot run on it");
   }
-  auto kernel = gpu.createKernel(program.compiled.spirv);
+  auto kernel = gpu.kernelFor(program.compiled.spirv);
   auto result = gpu.run(*kernel, inputs, layout.inStride, layout.outStride, run.count);
   run.gpu = std::move(result.outputs);
   run.gpuMs = result.gpuMs;
+  run.firstDispatchMs = result.firstDispatchMs;
+  run.inputs = std::move(inputs);
+  return run;
+}
 
-  run.reference.resize(run.count * layout.outStride);
-  run.conditioning.assign(run.count * layout.outStride, 0.0);
-  std::vector<uint32_t> directionColumns = conditioning ? directionInputColumns(layout) : std::vector<uint32_t>{};
-  // Fed outputs (surface values the GPU computed) follow the inputs in the reference's record.
-  const uint32_t fed = layout.fedCount(), fedFrom = layout.outStride - fed;
-  std::vector<double> record(layout.inStride + fed), perturbed(layout.inStride + fed), moved(layout.outStride);
-  for (uint64_t i = 0; i < run.count; ++i) {
-    for (uint32_t k = 0; k < layout.inStride; ++k) record[k] = inputs[i * layout.inStride + k];
+namespace {
+
+// One thread's buffers for the reference of one record.
+struct RecordEvaluator {
+  const ProbeProgram& program;
+  const std::vector<uint32_t>& directionColumns;
+  ProbeRun& run;
+  std::vector<double> record, perturbed, moved;
+
+  RecordEvaluator(const ProbeProgram& p, const std::vector<uint32_t>& cols, ProbeRun& r)
+      : program(p), directionColumns(cols), run(r) {
+    const ProbeLayout& layout = p.shader.layout;
+    record.resize(layout.inStride + layout.fedCount());
+    perturbed.resize(record.size());
+    moved.resize(layout.outStride);
+  }
+
+  // The record as the reference reads it: the inputs, then the fed outputs (surface values
+  // the GPU computed).
+  void load(uint64_t i) {
+    const ProbeLayout& layout = program.shader.layout;
+    const uint32_t fed = layout.fedCount(), fedFrom = layout.outStride - fed;
+    for (uint32_t k = 0; k < layout.inStride; ++k) record[k] = run.inputs[i * layout.inStride + k];
     for (uint32_t k = 0; k < fed; ++k) record[layout.inStride + k] = run.gpu[i * layout.outStride + fedFrom + k];
-    double* ref = run.reference.data() + i * layout.outStride;
-    program.reference(record.data(), ref);
-    if (directionColumns.empty()) continue;
-    // kConditioningPatterns fixed sign patterns on the vector components (direction error),
-    // in opposite pairs, so that runs are reproducible; each with a skew of the normalized
-    // lengths (the half vector's error near v = -l; ref::ScopedHalfVectorSumSkew). The
-    // allowance is the largest move: an estimate of the worst case over the 2-ulp ball.
+  }
+
+  void reference(uint64_t i) {
+    load(i);
+    program.reference(record.data(), run.reference.data() + i * program.shader.layout.outStride);
+  }
+
+  // kConditioningPatterns fixed sign patterns on the vector components (direction error),
+  // in opposite pairs, so that runs are reproducible; each with a skew of the normalized
+  // lengths (the half vector's error near v = -l; ref::ScopedHalfVectorSumSkew). The
+  // allowance is the largest move: an estimate of the worst case over the 2-ulp ball.
+  // Expects record i loaded and its reference computed.
+  void conditioning(uint64_t i) {
+    const uint32_t stride = program.shader.layout.outStride;
+    const double* ref = run.reference.data() + i * stride;
     const double eps = kDirectionInputUlps * 0x1p-23;
     for (uint32_t pattern = 0; pattern < kConditioningPatterns; ++pattern) {
       double sign = pattern % 2 ? -1.0 : 1.0;
@@ -177,19 +268,142 @@ ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std:
         uint32_t bit = (static_cast<uint32_t>(c + 1) * 0x9E3779B9u >> (7 + pattern / 2)) & 1u;
         perturbed[directionColumns[c]] *= 1.0 + (bit ? sign : -sign) * eps;
       }
-      ref::ScopedHalfVectorSumSkew skew(sign * eps);
+      ref::ScopedHalfVectorSumSkew skew(sign * eps);  // thread_local: each thread its own
       program.reference(perturbed.data(), moved.data());
-      for (uint32_t k = 0; k < layout.outStride; ++k) {
+      for (uint32_t k = 0; k < stride; ++k) {
         double d = std::abs(moved[k] - ref[k]);
         if (std::isfinite(d)) {
-          double& c = run.conditioning[i * layout.outStride + k];
+          double& c = run.conditioning[i * stride + k];
           c = std::max(c, d);
         }
       }
     }
   }
-  run.inputs = std::move(inputs);
+};
+
+// |gpu - ref| / bound of one value as ErrorStats::add takes it for its worst record, with
+// `allowance` added to the arithmetic bound; -1 for values it does not rank (non-finite).
+double errorRatio(float gpu, double ref, const Tolerance& tol, double allowance) {
+  if (!std::isfinite(ref) || !std::isfinite(gpu)) return -1;
+  const double err = std::abs(static_cast<double>(gpu) - ref);
+  const double allowed = tol.abs + tol.rel * std::abs(ref) + allowance;
+  return allowed > 0 ? err / allowed : (err > 0 ? std::numeric_limits<double>::max() : 0.0);
+}
+
+// Largest errorRatio over record i's values.
+double recordRatio(const ProbeRun& run, const ProbeProgram& program, uint64_t i, bool withAllowance) {
+  const uint32_t stride = program.shader.layout.outStride;
+  double r = -1;
+  for (uint32_t k = 0; k < stride; ++k) {
+    const size_t at = i * stride + k;
+    r = std::max(
+        r, errorRatio(run.gpu[at], run.reference[at], program.tolerance, withAllowance ? run.conditioning[at] : 0.0));
+  }
+  return r;
+}
+
+// Records [begin, end): the reference, and the allowance where options ask for it. Sets
+// conditioned[i] for the records whose allowance was computed.
+void referenceRecords(ProbeRun& run, const ProbeProgram& program, const ReferenceOptions& options,
+                      const std::vector<uint32_t>& directionColumns, std::vector<char>& conditioned, uint64_t begin,
+                      uint64_t end) {
+  RecordEvaluator eval(program, directionColumns, run);
+  for (uint64_t i = begin; i < end; ++i) {
+    eval.reference(i);
+    if (directionColumns.empty()) continue;
+    // Outside abs + rel * |ref| somewhere (NaN, Inf and an invalid reference are judged
+    // without the allowance, so they do not count).
+    if (options.onlyWhereNeeded && recordRatio(run, program, i, false) <= 1.0) continue;
+    eval.conditioning(i);
+    conditioned[i] = 1;
+  }
+}
+
+// onlyWhereNeeded keeps every verdict by construction, but ErrorStats also names the worst
+// record (largest error / bound, allowance included), which validate reports as worst_input.
+// A record without its allowance has a ratio at least as large as with it, so, taking the
+// records in decreasing order of that upper bound, the allowance is computed until the bound
+// falls below the best ratio already known: the worst record, and its ratio, are then exactly
+// those of the full computation, usually for a few more records.
+void conditionWorstCandidates(ProbeRun& run, const ProbeProgram& program, const std::vector<uint32_t>& directionColumns,
+                              std::vector<char>& conditioned) {
+  // The full computation's worst: the largest ratio, the earliest record among equals.
+  double best = -1;
+  uint64_t bestRecord = 0;
+  auto offer = [&](double ratio, uint64_t i) {
+    if (ratio > best || (ratio == best && i < bestRecord)) {
+      best = ratio;
+      bestRecord = i;
+    }
+  };
+  std::vector<std::pair<double, uint64_t>> candidates;
+  for (uint64_t i = 0; i < run.count; ++i) {
+    if (conditioned[i]) {
+      offer(recordRatio(run, program, i, true), i);
+    } else {
+      candidates.push_back({recordRatio(run, program, i, false), i});
+    }
+  }
+  std::sort(candidates.begin(), candidates.end(),
+            [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
+  RecordEvaluator eval(program, directionColumns, run);
+  for (const auto& [upper, i] : candidates) {
+    if (upper < best || upper < 0) break;
+    if (upper == best && i > bestRecord) continue;  // cannot win: equal at most, and later
+    eval.load(i);
+    eval.conditioning(i);
+    conditioned[i] = 1;
+    offer(recordRatio(run, program, i, true), i);
+  }
+}
+
+}  // namespace
+
+void computeReference(ProbeRun& run, const ProbeProgram& program, const ReferenceOptions& options) {
+  const ProbeLayout& layout = program.shader.layout;
+  run.reference.assign(run.count * layout.outStride, 0.0);
+  run.conditioning.assign(run.count * layout.outStride, 0.0);
+  const std::vector<uint32_t> directionColumns =
+      options.conditioning ? directionInputColumns(layout) : std::vector<uint32_t>{};
+  std::vector<char> conditioned(run.count, 0);  // char, not bool: threads write neighbours
+  unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  // Below ~256 records per thread the thread start costs more than it saves.
+  threads = static_cast<unsigned>(std::min<uint64_t>(threads, std::max<uint64_t>(1, run.count / 256)));
+  if (threads <= 1) {
+    referenceRecords(run, program, options, directionColumns, conditioned, 0, run.count);
+  } else {
+    std::vector<std::thread> pool;
+    std::vector<std::exception_ptr> errors(threads);
+    for (unsigned t = 0; t < threads; ++t) {
+      const uint64_t begin = run.count * t / threads, end = run.count * (t + 1) / threads;
+      pool.emplace_back([&, t, begin, end] {
+        try {
+          referenceRecords(run, program, options, directionColumns, conditioned, begin, end);
+        } catch (...) {
+          errors[t] = std::current_exception();  // rethrown on the caller's thread
+        }
+      });
+    }
+    for (auto& th : pool) th.join();
+    for (auto& e : errors)
+      if (e) std::rethrow_exception(e);
+  }
+  if (options.onlyWhereNeeded && !directionColumns.empty())
+    conditionWorstCandidates(run, program, directionColumns, conditioned);
+}
+
+ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std::vector<float> inputs,
+                  const ReferenceOptions& options) {
+  ProbeRun run = runProbeOnGpu(gpu, program, std::move(inputs));
+  computeReference(run, program, options);
   return run;
+}
+
+ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std::vector<float> inputs,
+                  bool conditioning) {
+  ReferenceOptions options;
+  options.conditioning = conditioning;
+  return runProbe(gpu, program, std::move(inputs), options);
 }
 
 std::vector<uint32_t> directionInputColumns(const ProbeLayout& layout) {

@@ -3,6 +3,7 @@
 // validate, eval (and later stress and bench) all build probes here; none has its own way
 // to build shaders.
 #pragma once
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <string>
@@ -20,11 +21,20 @@ struct ProbeProgram {
   EmittedShader shader;
   CompileResult compiled;
   double compileMs = 0;
+  bool compileCacheHit = false;  // the SPIR-V came from the probe cache (setProbeCacheDir)
   std::function<void(const double* in, double* out)> reference;
   Tolerance tolerance;
   SampleDomain domain;
   ShaderPrecision precision = ShaderPrecision::Fp32;
 };
+
+// Probes' SPIR-V is kept in the content-addressed ShaderCache (compile/shader_cache.hpp) under
+// a key of the emitted GLSL (which holds every brick's source verbatim), the compile options,
+// matbricks' and the toolchain's versions: glslang + spirv-opt is ~25 ms of one core per
+// probe, more than the rest of a warm validation. Default: ShaderCache::defaultDir(); an empty
+// path turns it off. Process-wide; set it before building probes.
+void setProbeCacheDir(const std::filesystem::path& dir);
+std::filesystem::path probeCacheDir();
 
 // `unstableVariant`: probe the brick's naive form against the same reference and tolerance.
 // At fp16 the domain is the fp16 domain (precision_domain.hpp) and the tolerance is
@@ -55,7 +65,28 @@ struct ProbeRun {
   // without vector geometry.
   std::vector<double> conditioning;  // count * outStride
   double gpuMs = 0;
+  // Wall time of the kernel's first dispatch (lavapipe's JIT compile), 0 when the kernel had
+  // run before (harness::RunResult::firstDispatchMs).
+  double firstDispatchMs = 0;
   uint64_t count = 0;
+};
+
+// How the CPU half of a probe run is done. Every choice gives the same verdicts.
+struct ReferenceOptions {
+  // Fill ProbeRun::conditioning at all; callers that never judge against a tolerance (stress)
+  // skip it.
+  bool conditioning = true;
+  // Only for values that the arithmetic tolerance alone does not pass: |gpu - ref| >
+  // abs + rel * |ref| with both finite. The allowance only ever widens the bound, so a value
+  // inside it passes with any allowance, and a value outside gets exactly the allowance the
+  // full computation gives it: the same failures and the same passed_by_conditioning, at a
+  // ninth of the reference evaluations (kConditioningPatterns extra ones per record are
+  // then spent on a handful of values). Elsewhere conditioning stays 0, so callers that use
+  // the allowance of every value (pruned-equals-full, energy) leave this off.
+  bool onlyWhereNeeded = false;
+  // Reference threads; 0: std::thread::hardware_concurrency(). Records are independent and
+  // each is evaluated whole by one thread, so the results do not depend on it.
+  unsigned threads = 0;
 };
 
 // The backward error of fp32 shading geometry: normalize, the v + l sum and inversesqrt
@@ -72,6 +103,12 @@ inline constexpr uint32_t kConditioningPatterns = 8;
 // evaluations per record); callers that never judge against a tolerance (stress) skip it.
 ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std::vector<float> inputs,
                   bool conditioning = true);
+ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std::vector<float> inputs,
+                  const ReferenceOptions& options);
+// The two halves of runProbe. runProbeOnGpu fills inputs, gpu, gpuMs and firstDispatchMs;
+// computeReference fills reference and conditioning from them.
+ProbeRun runProbeOnGpu(harness::VulkanHarness& gpu, const ProbeProgram& program, std::vector<float> inputs);
+void computeReference(ProbeRun& run, const ProbeProgram& program, const ReferenceOptions& options);
 ErrorStats compare(const ProbeRun& run, const ProbeProgram& program);
 // The double reference of a permutation's probe: the model's reference composition with the
 // given role -> brick binding, reading the scene (frame, lights, environment; see

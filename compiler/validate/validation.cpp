@@ -1,5 +1,6 @@
 #include "validate/validation.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -7,17 +8,22 @@
 namespace mb {
 
 ValidationRecord validateProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, const std::string& kind,
-                               uint64_t samples, uint64_t seed) {
+                               uint64_t samples, uint64_t seed, const ReferenceOptions& options) {
   ValidationRecord rec;
   rec.key = program.shader.key;
   rec.kind = kind;
   rec.samples = samples;
   rec.tolerance = program.tolerance;
   rec.compileMs = program.compileMs;
+  rec.compileCached = program.compileCacheHit;
   rec.spirvInstructions = spirvInstructionCount(program.compiled.spirv);
-  ProbeRun run = runProbe(gpu, program, generateSamples(program.shader.layout, program.domain, samples, seed));
+  ProbeRun run = runProbeOnGpu(gpu, program, generateSamples(program.shader.layout, program.domain, samples, seed));
   rec.gpuMs = run.gpuMs;
+  rec.firstDispatchMs = run.firstDispatchMs;
+  const auto t0 = std::chrono::steady_clock::now();
+  computeReference(run, program, options);
   rec.stats = compare(run, program);
+  rec.referenceMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (rec.stats.worstRecord >= 0) {
     auto cols = program.shader.layout.columns();
     std::ostringstream s;
@@ -54,22 +60,27 @@ nlohmann::json toJson(const ValidationRecord& r) {
           {"worst_input", r.worstInput},
           {"passed", r.passed()},
           {"compile_ms", r.compileMs},
+          {"compile_cached", r.compileCached},
+          {"first_dispatch_ms", r.firstDispatchMs},
           {"gpu_ms", r.gpuMs},
+          {"reference_ms", r.referenceMs},
           {"spirv_instructions", r.spirvInstructions}};
 }
 
 std::string formatValidationTable(const std::vector<ValidationRecord>& records) {
   std::ostringstream s;
   char line[512];
-  std::snprintf(line, sizeof line, "%-44s %8s %10s %10s %8s %4s %4s %5s %10s %9s  %s\n", "permutation", "samples",
-                "max_abs", "max_rel", "max_ulp", "nan", "inf", "neg", "compile_ms", "gpu_ms", "result");
+  std::snprintf(line, sizeof line, "%-44s %8s %10s %10s %8s %4s %4s %5s %10s %9s %9s %9s  %s\n", "permutation",
+                "samples", "max_abs", "max_rel", "max_ulp", "nan", "inf", "neg", "compile_ms", "jit_ms", "gpu_ms",
+                "ref_ms", "result");
   s << line;
   for (const auto& r : records) {
-    std::snprintf(
-        line, sizeof line, "%-44s %8llu %10.3g %10.3g %8.3g %4llu %4llu %5llu %10.2f %9.3f  %s\n", r.key.c_str(),
-        static_cast<unsigned long long>(r.samples), r.stats.maxAbs, r.stats.maxRel, r.stats.maxUlp,
-        static_cast<unsigned long long>(r.stats.nanCount), static_cast<unsigned long long>(r.stats.infCount),
-        static_cast<unsigned long long>(r.stats.negativeCount), r.compileMs, r.gpuMs, r.passed() ? "PASS" : "FAIL");
+    std::snprintf(line, sizeof line, "%-44s %8llu %10.3g %10.3g %8.3g %4llu %4llu %5llu %10.2f %9.2f %9.3f %9.2f  %s\n",
+                  r.key.c_str(), static_cast<unsigned long long>(r.samples), r.stats.maxAbs, r.stats.maxRel,
+                  r.stats.maxUlp, static_cast<unsigned long long>(r.stats.nanCount),
+                  static_cast<unsigned long long>(r.stats.infCount),
+                  static_cast<unsigned long long>(r.stats.negativeCount), r.compileMs, r.firstDispatchMs, r.gpuMs,
+                  r.referenceMs, r.passed() ? "PASS" : "FAIL");
     s << line;
   }
   return s.str();

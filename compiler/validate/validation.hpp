@@ -8,6 +8,12 @@
 
 namespace mb {
 
+inline ReferenceOptions validationOptions() {
+  ReferenceOptions o;
+  o.onlyWhereNeeded = true;
+  return o;
+}
+
 struct ValidationRecord {
   std::string key;
   std::string kind;  // "brick" or "permutation"
@@ -15,7 +21,10 @@ struct ValidationRecord {
   ErrorStats stats;
   Tolerance tolerance;
   double compileMs = 0;
+  bool compileCached = false;  // SPIR-V from the probe cache (setProbeCacheDir)
   double gpuMs = 0;
+  double firstDispatchMs = 0;  // the pipeline's first dispatch (lavapipe's JIT); see ProbeRun
+  double referenceMs = 0;      // double reference, input-conditioning allowance and comparison
   size_t spirvInstructions = 0;
   std::string worstInput;  // "col=value,..." of the worst record, replayable with eval
   // A permutation's outputs are radiance, which is never negative: a negative GPU value fails
@@ -25,8 +34,12 @@ struct ValidationRecord {
   bool passed() const { return stats.passed() && !(judgesNegatives() && stats.negativeCount > 0); }
 };
 
+// `options`: how the reference is computed; the default (the allowance only where it is
+// needed, all cores) gives the verdict and error statistics of the full computation, except
+// that max_conditioning_allowance is then the largest allowance among the values that needed
+// one (ReferenceOptions::onlyWhereNeeded).
 ValidationRecord validateProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, const std::string& kind,
-                               uint64_t samples, uint64_t seed);
+                               uint64_t samples, uint64_t seed, const ReferenceOptions& options = validationOptions());
 
 nlohmann::json toJson(const ValidationRecord& r);
 // Fixed-width table, one row per record, for people.
