@@ -58,6 +58,18 @@ fs::path writeScene(const fs::path& dir, size_t materials) {
   return file;
 }
 
+// "counts" is the manifest's first key: read the head only. Parsing the whole manifest here
+// would grow this process, and a forked child's peak RSS (ru_maxrss) includes its parent's
+// at the fork (Linux keeps the pre-exec high-water mark).
+size_t requiredCount(const fs::path& manifest) {
+  std::ifstream in(manifest);
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(in.gcount()));
+  const size_t at = head.find("\"required\": ");
+  return at == std::string::npos ? 0 : std::stoul(head.substr(at + 12));
+}
+
 struct Run {
   int status = -1;
   double wallS = 0;
@@ -106,12 +118,15 @@ int main(int argc, char** argv) {
       Run r = runChild({cli, "compile", "-q", "--scene", scene.string(), "-j", jobs, "--cache-dir", cache,
                         "--stream-window", window, "-o", out},
                        dir / ("log_" + kind + "_" + window + ".txt"));
-      size_t perms = 0;
-      if (std::ifstream manifest{fs::path(out) / "manifest.json"})
-        perms = nlohmann::json::parse(manifest)["counts"]["required"].get<size_t>();
-      nlohmann::json j{{"materials", materials}, {"permutations", perms}, {"cache", kind}, {"window", std::stoul(window)},
-                       {"jobs", std::stoul(jobs)}, {"exit_status", WIFEXITED(r.status) ? WEXITSTATUS(r.status) : -1},
-                       {"wall_s", r.wallS}, {"peak_rss_mb", r.peakRssKb / 1024.0},
+      const size_t perms = requiredCount(fs::path(out) / "manifest.json");
+      nlohmann::json j{{"materials", materials},
+                       {"permutations", perms},
+                       {"cache", kind},
+                       {"window", std::stoul(window)},
+                       {"jobs", std::stoul(jobs)},
+                       {"exit_status", WIFEXITED(r.status) ? WEXITSTATUS(r.status) : -1},
+                       {"wall_s", r.wallS},
+                       {"peak_rss_mb", r.peakRssKb / 1024.0},
                        {"permutations_per_s", r.wallS > 0 ? perms / r.wallS : 0}};
       std::printf("%s\n", j.dump().c_str());
       std::fflush(stdout);

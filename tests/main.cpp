@@ -19,6 +19,8 @@ int main(int argc, char* argv[]) {
   // concurrent cache use make their own shared directory.
   const auto cache = std::filesystem::temp_directory_path() / ("matbricks-test-cache-" + std::to_string(::getpid()));
   ::setenv("MATBRICKS_CACHE_DIR", cache.c_str(), 0);
+  // Nor a team's remote cache: the remote-cache tests start their own server.
+  ::unsetenv("MATBRICKS_CACHE_URL");
   int rc = Catch::Session().run(argc, argv);
   std::error_code ec;
   std::filesystem::remove_all(cache, ec);

@@ -24,8 +24,8 @@ struct BuildOptions {
   EmitMode mode = EmitMode::Engine;           // what the package ships (emit/emitter.hpp)
   // Same outputs either way (glsl_compiler.hpp); Legacy only for the benchmark's comparison.
   CompilePipeline pipeline = CompilePipeline::Lean;
-  RemoteCache* remote = nullptr;              // behind the local cache (remote_cache.hpp); null: none
-  ShardSpec shard;                            // build only this shard's units (shard.hpp); whole by default
+  RemoteCache* remote = nullptr;  // behind the local cache (remote_cache.hpp); null: none
+  ShardSpec shard;                // build only this shard's units (shard.hpp); whole by default
   // merge: every unit's artifacts come from these shards; nothing is compiled, no cache is
   // used, and a unit the shards lack is an error (E-SHARD-MISSING).
   const ShardSet* mergeFrom = nullptr;
