@@ -172,7 +172,22 @@ TEST_CASE("merge refuses an incomplete, mixed, stale or damaged set of shards an
   CHECK(refused.exitCode == 3);
   CHECK(test::readFile(root / "mine/notes.txt") == "mine");
 
+  // A shard.json that is not JSON, or has a field of the wrong type: located.
+  fs::copy(root / "s1", root / "broken", fs::copy_options::recursive);
+  std::ofstream(root / "broken/shard.json", std::ios::trunc)
+      << "{ \"format\": \"matbricks-shard-1\",\n  \"shard\": 1,, }";
+  auto broken = test::runCli("merge " + (root / "broken").string() + " -o " + out);
+  CHECK(broken.exitCode == 3);
+  CHECK(broken.output.find("broken/shard.json:2:14: error[E-JSON-SYNTAX]") != std::string::npos);
+  std::ofstream(root / "broken/shard.json", std::ios::trunc)
+      << "{ \"format\": \"matbricks-shard-1\", \"shard\": \"x\" }";
+  broken = test::runCli("merge " + (root / "broken").string() + " -o " + out);
+  CHECK(broken.exitCode == 3);
+  CHECK(broken.output.find("broken/shard.json:1:43: error[E-SHARD-NOT-SHARD]") != std::string::npos);
+  CHECK(!fs::exists(out));
+
   // Usage errors exit 2.
+  CHECK(test::runCli("compile --scene " + kScene + " --stream-window -1 -o " + out).exitCode == 2);
   CHECK(test::runCli("compile --scene " + kScene + " --shard 4/3 -o " + out).exitCode == 2);
   CHECK(test::runCli("compile --scene " + kScene + " --shard 1/2 --depfile d -o " + out).exitCode == 2);
   CHECK(test::runCli("merge -o " + out).exitCode == 2);

@@ -293,7 +293,8 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
       ->check(CLI::Range(0.05, 3600.0));
   cmd->add_option("--stream-window", args->streamWindow,
                   "Permutations built per streamed window (default 256; 0: all at once). Memory grows with the "
-                  "window, not the scene; output is identical at every window");
+                  "window, not the scene; output is identical at every window")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--shard", args->shard,
                   "Compile only shard i of N (i/N) of the required permutations into a shard directory; "
                   "'matbricks merge' joins the N shards into the package");

@@ -204,10 +204,8 @@ RemoteCache::Get RemoteCache::get(const std::string& key, CompiledArtifacts& out
   if (b.size() < sizeof kBlobMagic + kKeyDigits || std::memcmp(b.data(), kBlobMagic, sizeof kBlobMagic) != 0 ||
       b.compare(sizeof kBlobMagic, kKeyDigits, key) != 0 ||
       !decodeCacheEntry(b.substr(sizeof kBlobMagic + kKeyDigits), out)) {
-    ++corrupt_;
     return Get::Corrupt;
   }
-  ++hits_;
   return Get::Hit;
 }
 
@@ -219,7 +217,6 @@ bool RemoteCache::put(const std::string& key, const CompiledArtifacts& artifacts
   const Response r = send(url, &blob);
   if (r.code == CURLE_OK && r.status >= 200 && r.status < 300) {
     reached_ = true;
-    ++uploads_;
     return true;
   }
   if (r.code == CURLE_OK && r.status >= 400 && r.status < 500) {

@@ -55,10 +55,8 @@ class RemoteCache {
 
   // The first failure ("" if none): what made the cache go off, or refuse uploads.
   std::string warning() const;
+  // Requests sent so far (hits, misses and uploads are counted per unit in BuildStats).
   size_t requests() const { return requests_; }
-  size_t hits() const { return hits_; }
-  size_t corrupt() const { return corrupt_; }
-  size_t uploads() const { return uploads_; }
 
  private:
   struct Handles;  // a pool of libcurl easy handles (connections are reused)
@@ -71,7 +69,7 @@ class RemoteCache {
   std::unique_ptr<Handles> handles_;
   std::atomic<bool> off_{false}, readOnly_{false}, reached_{false};
   std::mutex firstContact_;
-  std::atomic<size_t> requests_{0}, hits_{0}, corrupt_{0}, uploads_{0};
+  std::atomic<size_t> requests_{0};
   mutable std::mutex warningMutex_;
   std::string warning_;
 };

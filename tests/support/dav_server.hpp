@@ -41,18 +41,25 @@ inline void bypassProxyForLocalhost() {
   (void)done;
 }
 
-// A port on 127.0.0.1 nothing listens on right now (the kernel's pick, then released).
-inline int unusedLocalPort() {
+// A TCP socket bound to 127.0.0.1 at a port the kernel picks, listening if asked; `port` is set.
+inline int loopbackSocket(bool listening, int& port) {
   int fd = ::socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in a{};
   a.sin_family = AF_INET;
   a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
   socklen_t len = sizeof a;
-  if (fd < 0 || ::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 ||
+  if (fd < 0 || ::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 || (listening && ::listen(fd, 64) != 0) ||
       ::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len) != 0)
-    throw std::runtime_error("no free local port");
-  ::close(fd);
-  return ntohs(a.sin_port);
+    throw std::runtime_error("cannot bind a socket on 127.0.0.1");
+  port = ntohs(a.sin_port);
+  return fd;
+}
+
+// A port on 127.0.0.1 nothing listens on right now (the kernel's pick, then released).
+inline int unusedLocalPort() {
+  int port = 0;
+  ::close(loopbackSocket(false, port));
+  return port;
 }
 
 inline bool acceptsConnections(int port) {
@@ -72,15 +79,7 @@ class SilentServer {
  public:
   SilentServer() {
     bypassProxyForLocalhost();
-    fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in a{};
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t len = sizeof a;
-    if (fd_ < 0 || ::bind(fd_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 || ::listen(fd_, 64) != 0 ||
-        ::getsockname(fd_, reinterpret_cast<sockaddr*>(&a), &len) != 0)
-      throw std::runtime_error("cannot listen on 127.0.0.1");
-    port_ = ntohs(a.sin_port);
+    fd_ = loopbackSocket(true, port_);
   }
   ~SilentServer() { ::close(fd_); }
   std::string url() const { return "http://127.0.0.1:" + std::to_string(port_) + "/cache"; }
