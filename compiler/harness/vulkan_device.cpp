@@ -80,20 +80,29 @@ struct Candidate {
   VkPhysicalDeviceProperties props{};
   uint32_t queueFamily = 0;
   uint32_t timestampValidBits = 0;
+  bool graphics = false;
 };
 
-// The first compute family, preferring one that has timestamps. False if none computes.
+// The first compute family, preferring one that has timestamps and then one that also has
+// graphics (the preview's render passes, vulkan_graphics.cpp; lavapipe's single family has
+// all three). False if none computes.
 bool findComputeFamily(Candidate& c) {
   uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(c.device, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
   vkGetPhysicalDeviceQueueFamilyProperties(c.device, &count, families.data());
+  auto score = [](const VkQueueFamilyProperties& f) {
+    return (f.timestampValidBits > 0 ? 2 : 0) + ((f.queueFlags & VK_QUEUE_GRAPHICS_BIT) ? 1 : 0);
+  };
   bool found = false;
+  int best = -1;
   for (uint32_t i = 0; i < count; ++i) {
     if (!(families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) || families[i].queueCount == 0) continue;
-    if (!found || (c.timestampValidBits == 0 && families[i].timestampValidBits > 0)) {
+    if (score(families[i]) > best) {
+      best = score(families[i]);
       c.queueFamily = i;
       c.timestampValidBits = families[i].timestampValidBits;
+      c.graphics = (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) != 0;
       found = true;
     }
   }
@@ -238,6 +247,7 @@ void createDevice(DeviceContext& ctx, const DeviceOptions& options) {
   ctx.props = chosen.props;
   ctx.queueFamily = chosen.queueFamily;
   ctx.timestampValidBits = chosen.timestampValidBits;
+  ctx.graphics = chosen.graphics;
   vkGetPhysicalDeviceMemoryProperties(ctx.physical, &ctx.memory);
   ctx.maxSegmentBytes = maxAllocationBytes(ctx.physical, ctx.props.apiVersion);
 

@@ -300,6 +300,8 @@ RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, u
   return result;
 }
 
+std::shared_ptr<DeviceContext> VulkanHarness::context() const { return impl_->ctx; }
+
 std::vector<std::string> VulkanHarness::validationMessages() const { return impl_->ctx->log.snapshot(); }
 
 void VulkanHarness::clearValidationMessages() { impl_->ctx->log.clear(); }

@@ -55,6 +55,7 @@ struct RunResult {
 };
 
 class Kernel;
+struct DeviceContext;
 
 class VulkanHarness {
  public:
@@ -85,6 +86,10 @@ class VulkanHarness {
   // several threads at once (submissions to the one queue are serialized).
   RunResult run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
                 uint64_t count);
+
+  // The instance, device and queue, for the harness's other users in compiler/harness
+  // (vulkan_graphics.hpp, the environment's textures); defined in vulkan_internal.hpp.
+  std::shared_ptr<DeviceContext> context() const;
 
   // Messages the validation layer emitted so far (empty when validation is off).
   std::vector<std::string> validationMessages() const;

@@ -63,6 +63,7 @@ struct DeviceContext {
   uint32_t queueFamily = 0;
   uint32_t timestampValidBits = 0;
   bool shaderFloat16 = false;  // enabled at device creation (fp16 probes need it)
+  bool graphics = false;       // the queue also takes draws (vulkan_graphics.hpp)
   VkDevice device = VK_NULL_HANDLE;
   VkQueue queue = VK_NULL_HANDLE;
   // vkQueueSubmit and vkDeviceWaitIdle need the queue externally synchronized; everything

@@ -161,6 +161,26 @@ std::function<void(const double*, double*)> materialReferenceEval(const Permutat
   };
 }
 
+Tolerance compositionTolerance(const ShaderLibrary& lib, const std::vector<std::string>& bricks,
+                               double radianceBound) {
+  // First-order propagation: relative errors of the bricks multiplied together add up, and
+  // a sum of lobes is no worse than its worst lobe; 1e-5 covers the composition's own fp32
+  // arithmetic (a few dozen operations at ~6e-8 each).
+  Tolerance t;
+  t.rel = 1e-5;
+  t.abs = 0.0;
+  for (const auto& id : bricks) {
+    const Brick* b = lib.findBrick(id);
+    t.rel += b->tolerance.rel;
+    t.abs += b->tolerance.abs;
+  }
+  t.reason = "sum of the bound bricks' tolerances plus 1e-5 for the composition";
+  // The result is linear in the lights' illuminance and the environment's radiance, and so is
+  // its absolute error.
+  t.abs *= radianceBound;
+  return t;
+}
+
 ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput) {
   const MaterialDesc& mat = *perm.material;
   ProbeProgram p;
@@ -168,20 +188,7 @@ ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& 
   p.shader = emitPermutation(lib, perm, illuminanceInput);
   compileInto(p);
 
-  // First-order propagation: relative errors of the bricks multiplied together add up, and
-  // a sum of lobes is no worse than its worst lobe; 1e-5 covers the composition's own fp32
-  // arithmetic (a few dozen operations at ~6e-8 each).
-  p.tolerance.rel = 1e-5;
-  p.tolerance.abs = 0.0;
-  for (const auto& id : p.shader.bricks) {
-    const Brick* b = lib.findBrick(id);
-    p.tolerance.rel += b->tolerance.rel;
-    p.tolerance.abs += b->tolerance.abs;
-  }
-  p.tolerance.reason = "sum of the bound bricks' tolerances plus 1e-5 for the composition";
-  // The result is linear in the lights' illuminance and the environment's radiance, and so is
-  // its absolute error.
-  p.tolerance.abs *= probeSceneRadianceBound(probeSceneOf(perm, false));
+  p.tolerance = compositionTolerance(lib, p.shader.bricks, probeSceneRadianceBound(probeSceneOf(perm, false)));
   if (illuminanceInput) {
     p.tolerance.abs *= kIlluminanceRange.hi;
     p.tolerance.reason += "; abs scaled by the largest illuminance";

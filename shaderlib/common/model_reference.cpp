@@ -10,7 +10,9 @@ double probeEnvironmentShape(const Vec3& r, double lod) {
   return (1.5 + 0.5 * r.x + 0.25 * r.y - 0.125 * r.z) * (1.0 + 0.125 * lod);
 }
 
-Vec3 Environment::prefilteredAt(const Vec3& r, double lod) const { return prefiltered * probeEnvironmentShape(r, lod); }
+Vec3 Environment::prefilteredAt(const Vec3& r, double lod) const {
+  return fetchPrefiltered ? fetchPrefiltered(r, lod) : prefiltered * probeEnvironmentShape(r, lod);
+}
 
 double ModelEvalInput::floatInput(const std::string& name) const {
   auto it = inputs.find(name);

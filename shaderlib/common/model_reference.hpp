@@ -1,6 +1,7 @@
 // Reference compositions of shading models: plain C++ in double that combines the
 // references of whichever bricks a material bound to the model's roles (docs/models.md).
 #pragma once
+#include <functional>
 #include <initializer_list>
 #include <map>
 #include <optional>
@@ -46,8 +47,19 @@ struct Environment {
   double ao = 1, maxMip = 8;
   Vec3 prefiltered;  // the probe's fetched radiance before shaping
   Vec3 dfg;          // the probe's DFG LUT texel (ibl_lut)
-  // mb_fetch_prefiltered of the probe (probe_scene.glsl): prefiltered * shape(r, lod).
+  // Real texture fetches (the preview's reference render, compiler/preview/): when set, they
+  // stand for the fragment shader's mb_fetch_prefiltered (textureLod of the prefiltered cube)
+  // and mb_fetch_dfg (the DFG LUT texel at (NoV, perceptual roughness)), and `prefiltered` and
+  // `dfg` are unused. Unset (validation's probe), the probe's record values are used.
+  std::function<Vec3(const Vec3& r, double lod)> fetchPrefiltered;
+  std::function<Vec3(double NoV, double perceptualRoughness)> fetchDfg;
+  // mb_fetch_prefiltered: fetchPrefiltered, else the probe's prefiltered * shape(r, lod)
+  // (probe_scene.glsl).
   Vec3 prefilteredAt(const Vec3& r, double lod) const;
+  // mb_fetch_dfg: fetchDfg, else the probe's texel `dfg` (the same for every lookup).
+  Vec3 dfgAt(double NoV, double perceptualRoughness) const {
+    return fetchDfg ? fetchDfg(NoV, perceptualRoughness) : dfg;
+  }
   bool ibl() const { return mode == "ibl_lut" || mode == "ibl_analytic"; }
 };
 // The probe's smooth known function of direction and mip level (probe_scene.glsl).

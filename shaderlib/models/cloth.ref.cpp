@@ -64,7 +64,7 @@ Vec3 environment(const ModelEvalInput& in, const Pixel& px, const Environment& e
   if (env.mode != "ibl_lut") return diffuse;
   // Directional albedo of the sheen: sheenColor times the LUT's cloth channel (Filament's
   // cloth specularDFG); the diffuse keeps the rest.
-  const Vec3 E = px.sheenColor * env.dfg.z;
+  const Vec3 E = px.sheenColor * env.dfgAt(px.NoV, px.perceptualRoughness).z;
   const Vec3 r = n * (2.0 * dot(n, v)) - v;
   const double NoR = std::min(std::max(dot(n, r), kMinNoV), 1.0);
   const double lod = in.scalar("mip_mapping", Args() << px.perceptualRoughness << NoR << env.maxMip);

@@ -24,7 +24,7 @@ Vec3 specularAlbedo(const ModelEvalInput& in, const Pixel& px, const Environment
 void environmentPrepare(const ModelEvalInput& in, Pixel& px) {
   const Environment& env = *in.env;
   if (env.mode == "ibl_lut") {
-    px.dfg = env.dfg;  // the texel the probe fetched at (n.v, perceptual roughness)
+    px.dfg = env.dfgAt(px.NoV, px.perceptualRoughness);  // mb_fetch_dfg's texel
   } else {
     // E(f0) = f0 A + B for an affine env BRDF: E(0) = B = Int Gv Fc, E(1) = A + B = Int Gv.
     auto at = [&](double f0) { return in.vec3("env_brdf", Args() << splat(f0) << px.perceptualRoughness << px.NoV).x; };

@@ -20,7 +20,7 @@ double sheenAlbedoFit(double NoV, double perceptualRoughness) {
 
 // E(n.v, r_s): the probe's DFG texel z in ibl_lut (mb_fetch_dfg), the fit otherwise.
 double sheenAlbedo(const ModelEvalInput& in, double NoV, double perceptualRoughness) {
-  if (in.env && in.env->mode == "ibl_lut") return in.env->dfg.z;
+  if (in.env && in.env->mode == "ibl_lut") return in.env->dfgAt(NoV, perceptualRoughness).z;
   return sheenAlbedoFit(NoV, perceptualRoughness);
 }
 
