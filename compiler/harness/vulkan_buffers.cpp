@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "harness/chunk_plan.hpp"
+#include "harness/gpu_texture.hpp"
 #include "harness/vulkan_check.hpp"
 #include "harness/vulkan_internal.hpp"
 
@@ -23,11 +24,13 @@ uint32_t hostMemoryType(const DeviceContext& ctx, uint32_t allowedTypes) {
   throw HarnessError("the device has no host-visible, host-coherent memory for storage buffers");
 }
 
-void createMappedBuffer(const DeviceContext& ctx, uint64_t bytes, MappedBuffer& b) {
+}  // namespace
+
+void createMappedBuffer(const DeviceContext& ctx, uint64_t bytes, VkBufferUsageFlags usage, MappedBuffer& b) {
   VkBufferCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
   info.size = bytes;
-  info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   MB_VK_CHECK(vkCreateBuffer(ctx.device, &info, nullptr, &b.buffer));
 
@@ -42,33 +45,34 @@ void createMappedBuffer(const DeviceContext& ctx, uint64_t bytes, MappedBuffer& 
   MB_VK_CHECK(vkMapMemory(ctx.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
 }
 
-}  // namespace
-
 // One input and one output buffer per segment; inputs are copied in at once.
 void createBuffers(const DeviceContext& ctx, const ChunkPlan& plan, const std::vector<float>& inputs, uint32_t inStride,
                    RunResources& res) {
   for (const Segment& seg : plan.segments) {
     MappedBuffer& in = res.inBuffers.emplace_back();
-    createMappedBuffer(ctx, seg.inBytes, in);
+    createMappedBuffer(ctx, seg.inBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, in);
     std::memset(in.mapped, 0, seg.inBytes);  // stride-0 dummy bytes stay defined
     const size_t floats = seg.records * inStride;
     if (floats) {
       std::memcpy(in.mapped, inputs.data() + seg.firstRecord * inStride, floats * sizeof(float));
     }
-    createMappedBuffer(ctx, seg.outBytes, res.outBuffers.emplace_back());
+    createMappedBuffer(ctx, seg.outBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, res.outBuffers.emplace_back());
   }
 }
 
 // One descriptor set per chunk: all chunks are recorded into one command buffer, and a set
 // must not change while a recorded command still refers to it.
-void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const ChunkPlan& plan, RunResources& res) {
+void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const ChunkPlan& plan,
+                          const std::vector<const GpuTexture*>& textures, RunResources& res) {
   const auto setCount = static_cast<uint32_t>(plan.chunks.size());
-  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * setCount};
+  const auto textureCount = static_cast<uint32_t>(textures.size());
+  const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * setCount},
+                                         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount * setCount}};
   VkDescriptorPoolCreateInfo poolInfo{};
   poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
   poolInfo.maxSets = setCount;
-  poolInfo.poolSizeCount = 1;
-  poolInfo.pPoolSizes = &size;
+  poolInfo.poolSizeCount = textureCount ? 2 : 1;
+  poolInfo.pPoolSizes = sizes;
   MB_VK_CHECK(vkCreateDescriptorPool(ctx.device, &poolInfo, nullptr, &res.descriptorPool));
 
   const std::vector<VkDescriptorSetLayout> layouts(setCount, kernel.setLayout);
@@ -95,6 +99,7 @@ void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const 
       w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
       w.pBufferInfo = &infos[2 * i + binding];
     }
+    for (uint32_t k = 0; k < textureCount; ++k) writes.push_back(textures[k]->descriptorWrite(res.sets[i], 2 + k));
   }
   vkUpdateDescriptorSets(ctx.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }

@@ -37,17 +37,17 @@ void createShaderModule(Kernel& k, const std::vector<uint32_t>& spirv) {
 }
 
 void createLayouts(Kernel& k) {
-  VkDescriptorSetLayoutBinding bindings[2]{};
-  for (uint32_t i = 0; i < 2; ++i) {
-    bindings[i].binding = i;  // 0 = MbIn, 1 = MbOut
-    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  std::vector<VkDescriptorSetLayoutBinding> bindings(2 + k.sampledTextures);
+  for (uint32_t i = 0; i < bindings.size(); ++i) {
+    bindings[i].binding = i;  // 0 = MbIn, 1 = MbOut, then the sampled textures
+    bindings[i].descriptorType = i < 2 ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     bindings[i].descriptorCount = 1;
     bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
   }
   VkDescriptorSetLayoutCreateInfo setInfo{};
   setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-  setInfo.bindingCount = 2;
-  setInfo.pBindings = bindings;
+  setInfo.bindingCount = static_cast<uint32_t>(bindings.size());
+  setInfo.pBindings = bindings.data();
   MB_VK_CHECK(vkCreateDescriptorSetLayout(k.ctx->device, &setInfo, nullptr, &k.setLayout));
 
   VkPushConstantRange push{};
@@ -83,6 +83,8 @@ void createQueryPool(const DeviceContext& ctx, uint32_t chunkCount, RunResources
   MB_VK_CHECK(vkCreateQueryPool(ctx.device, &info, nullptr, &res.queryPool));
 }
 
+}  // namespace
+
 void allocateCommandBuffer(const DeviceContext& ctx, RunResources& res) {
   VkCommandPoolCreateInfo poolInfo{};
   poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
@@ -97,6 +99,8 @@ void allocateCommandBuffer(const DeviceContext& ctx, RunResources& res) {
   alloc.commandBufferCount = 1;
   MB_VK_CHECK(vkAllocateCommandBuffers(ctx.device, &alloc, &res.cmd));
 }
+
+namespace {
 
 // All chunks in one command buffer. Chunks touch disjoint ranges, so no barriers between
 // dispatches; one barrier at the end makes the shader writes visible to the host.
@@ -129,7 +133,8 @@ void recordCommands(const Kernel& kernel, const ChunkPlan& plan, RunResources& r
   MB_VK_CHECK(vkEndCommandBuffer(res.cmd));
 }
 
-// Submits once and waits; returns the host-measured submit-to-signal time in ms.
+}  // namespace
+
 double submitAndWait(const DeviceContext& ctx, RunResources& res) {
   VkFenceCreateInfo fenceInfo{};
   fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
@@ -154,6 +159,8 @@ double submitAndWait(const DeviceContext& ctx, RunResources& res) {
   res.inFlight = false;
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
+
+namespace {
 
 // Sum over chunks of (end - begin) ticks, converted with timestampPeriod (ns per tick).
 double timestampMs(const DeviceContext& ctx, uint32_t chunkCount, const RunResources& res) {
@@ -190,7 +197,7 @@ struct VulkanHarness::Impl {
   std::list<std::pair<std::string, std::shared_ptr<Kernel>>> kernels;
 
   RunResult runOnce(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
-                    uint64_t count);
+                    uint64_t count, const std::vector<const GpuTexture*>& textures);
 };
 
 VulkanHarness::VulkanHarness(const DeviceOptions& options) : impl_(std::make_unique<Impl>()) {
@@ -213,8 +220,11 @@ uint64_t VulkanHarness::maxStorageBufferRange() const { return impl_->ctx->props
 
 bool VulkanHarness::supportsShaderFloat16() const { return impl_->ctx->shaderFloat16; }
 
-std::shared_ptr<Kernel> VulkanHarness::createKernel(const std::vector<uint32_t>& spirv) {
+std::shared_ptr<DeviceContext> VulkanHarness::context() const { return impl_->ctx; }
+
+std::shared_ptr<Kernel> VulkanHarness::createKernel(const std::vector<uint32_t>& spirv, uint32_t sampledTextures) {
   auto kernel = std::make_shared<Kernel>(impl_->ctx);
+  kernel->sampledTextures = sampledTextures;
   createShaderModule(*kernel, spirv);
   createLayouts(*kernel);
   createPipeline(*kernel);
@@ -222,7 +232,8 @@ std::shared_ptr<Kernel> VulkanHarness::createKernel(const std::vector<uint32_t>&
 }
 
 RunResult VulkanHarness::Impl::runOnce(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride,
-                                       uint32_t outStride, uint64_t count) {
+                                       uint32_t outStride, uint64_t count,
+                                       const std::vector<const GpuTexture*>& textures) {
   const DeviceContext& ctx = *this->ctx;
   RunResult result;
   ChunkLimits limits;
@@ -236,7 +247,7 @@ RunResult VulkanHarness::Impl::runOnce(Kernel& kernel, const std::vector<float>&
 
   RunResources res(ctx);
   createBuffers(ctx, plan, inputs, inStride, res);
-  createDescriptorSets(ctx, kernel, plan, res);
+  createDescriptorSets(ctx, kernel, plan, textures, res);
   createQueryPool(ctx, chunkCount, res);
   allocateCommandBuffer(ctx, res);
   recordCommands(kernel, plan, res);
@@ -273,8 +284,17 @@ std::shared_ptr<Kernel> VulkanHarness::kernelFor(const std::vector<uint32_t>& sp
 
 RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
                              uint64_t count) {
+  return run(kernel, inputs, inStride, outStride, count, {});
+}
+
+RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
+                             uint64_t count, const std::vector<const GpuTexture*>& textures) {
   const DeviceContext& ctx = *impl_->ctx;
   if (kernel.ctx.get() != &ctx) throw HarnessError("run: the kernel belongs to another harness");
+  if (textures.size() != kernel.sampledTextures) {
+    throw HarnessError("run: the kernel samples " + std::to_string(kernel.sampledTextures) + " textures, got " +
+                       std::to_string(textures.size()));
+  }
   if (inputs.size() != count * inStride) {
     throw HarnessError("run: expected " + std::to_string(count) + " records x " + std::to_string(inStride) +
                        " floats = " + std::to_string(count * inStride) + " inputs, got " +
@@ -290,17 +310,15 @@ RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, u
       // One record of the real inputs: the JIT happens here, outside the timed dispatches.
       const std::vector<float> first(inputs.begin(), inputs.begin() + inStride);
       const auto t0 = std::chrono::steady_clock::now();
-      impl_->runOnce(kernel, first, inStride, outStride, 1);
+      impl_->runOnce(kernel, first, inStride, outStride, 1, textures);
       firstDispatchMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       kernel.warmedUp.store(true);
     }
   }
-  result = impl_->runOnce(kernel, inputs, inStride, outStride, count);
+  result = impl_->runOnce(kernel, inputs, inStride, outStride, count, textures);
   result.firstDispatchMs = firstDispatchMs;
   return result;
 }
-
-std::shared_ptr<DeviceContext> VulkanHarness::context() const { return impl_->ctx; }
 
 std::vector<std::string> VulkanHarness::validationMessages() const { return impl_->ctx->log.snapshot(); }
 

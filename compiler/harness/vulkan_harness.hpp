@@ -55,6 +55,7 @@ struct RunResult {
 };
 
 class Kernel;
+class GpuTexture;  // harness/gpu_texture.hpp
 struct DeviceContext;
 
 class VulkanHarness {
@@ -73,8 +74,11 @@ class VulkanHarness {
   // VK_KHR_shader_float16_int8); the harness enables the feature whenever it is offered.
   bool supportsShaderFloat16() const;
 
-  // Creates the compute pipeline for a kernel following the contract above.
-  std::shared_ptr<Kernel> createKernel(const std::vector<uint32_t>& spirv);
+  // Creates the compute pipeline for a kernel following the contract above. With
+  // `sampledTextures` > 0 the kernel also declares that many combined image samplers at
+  // set 0, bindings 2, 3, ... (e.g. `layout(set = 0, binding = 2) uniform samplerCube t;`),
+  // given to run() in that order.
+  std::shared_ptr<Kernel> createKernel(const std::vector<uint32_t>& spirv, uint32_t sampledTextures = 0);
   // The same, reusing the kernel made earlier for identical SPIR-V while it is among the last
   // kKernelCacheSize asked for: a pipeline that has run once keeps its JIT-compiled code, so
   // validating a permutation again in one process skips both the pipeline and the JIT.
@@ -86,9 +90,13 @@ class VulkanHarness {
   // several threads at once (submissions to the one queue are serialized).
   RunResult run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
                 uint64_t count);
+  // The same for a kernel created with sampled textures: textures[k] is bound at binding 2 + k
+  // (exactly as many as the kernel declares).
+  RunResult run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
+                uint64_t count, const std::vector<const GpuTexture*>& textures);
 
-  // The instance, device and queue, for the harness's other users in compiler/harness
-  // (vulkan_graphics.hpp, the environment's textures); defined in vulkan_internal.hpp.
+  // The instance and device (vulkan_internal.hpp), for the harness's parts beside the compute
+  // path: textures (gpu_texture.hpp) and graphics pipelines on the same device and queue.
   std::shared_ptr<DeviceContext> context() const;
 
   // Messages the validation layer emitted so far (empty when validation is off).

@@ -103,6 +103,7 @@ class Kernel {
   VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
   VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
+  uint32_t sampledTextures = 0;  // combined image samplers at bindings 2, 3, ...
   // Set once the first (warm-up) dispatch has been submitted (RunResult::firstDispatchMs).
   std::atomic<bool> warmedUp{false};
   std::mutex warmUpMutex;
@@ -157,6 +158,16 @@ void createDevice(DeviceContext& ctx, const DeviceOptions& options);
 // --- vulkan_buffers.cpp -----------------------------------------------------------------
 void createBuffers(const DeviceContext& ctx, const ChunkPlan& plan, const std::vector<float>& inputs, uint32_t inStride,
                    RunResources& res);
-void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const ChunkPlan& plan, RunResources& res);
+// Textures (gpu_texture.hpp) are written at bindings 2, 3, ... of every chunk's set.
+void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const ChunkPlan& plan,
+                          const std::vector<const GpuTexture*>& textures, RunResources& res);
+// A host-visible, coherent buffer, mapped (storage buffers of a run, staging for an upload).
+void createMappedBuffer(const DeviceContext& ctx, uint64_t bytes, VkBufferUsageFlags usage, MappedBuffer& b);
+
+// --- vulkan_harness.cpp -----------------------------------------------------------------
+// res.commandPool and res.cmd, on the harness's queue family.
+void allocateCommandBuffer(const DeviceContext& ctx, RunResources& res);
+// Submits res.cmd once and waits; returns the host-measured submit-to-signal time in ms.
+double submitAndWait(const DeviceContext& ctx, RunResources& res);
 
 }  // namespace mb::harness
