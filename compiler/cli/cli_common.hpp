@@ -71,5 +71,6 @@ Command addLutCommand(CLI::App& app, GlobalOptions& g);
 Command addEnergyCommand(CLI::App& app, GlobalOptions& g);
 Command addVerifyCommand(CLI::App& app, GlobalOptions& g);
 Command addMergeCommand(CLI::App& app, GlobalOptions& g);
+Command addPreviewCommand(CLI::App& app, GlobalOptions& g);
 
 }  // namespace mb::cli

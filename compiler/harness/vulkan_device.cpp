@@ -270,9 +270,22 @@ void createDevice(DeviceContext& ctx, const DeviceOptions& options) {
     f16.shaderFloat16 = VK_TRUE;
   }
 
+  // VK_KHR_maintenance4's relaxed interface matching: a fragment shader may leave some of the
+  // vertex shader's outputs unread (a permutation that shades without the tangent or uv0 of
+  // the fragment stage's fixed interface, docs/fragment-stage.md), which the validation layer
+  // otherwise reports as a performance warning for every such pipeline.
+  VkPhysicalDeviceMaintenance4FeaturesKHR maintenance4{};
+  maintenance4.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_FEATURES_KHR;
+  if (hasDeviceExtension(ctx.physical, VK_KHR_MAINTENANCE_4_EXTENSION_NAME)) {
+    extensions.push_back(VK_KHR_MAINTENANCE_4_EXTENSION_NAME);
+    maintenance4.maintenance4 = VK_TRUE;
+    maintenance4.pNext = ctx.shaderFloat16 ? static_cast<void*>(&f16) : nullptr;
+  }
+
   VkDeviceCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
-  info.pNext = ctx.shaderFloat16 ? &f16 : nullptr;
+  info.pNext = maintenance4.maintenance4 ? static_cast<void*>(&maintenance4)
+                                         : (ctx.shaderFloat16 ? static_cast<void*>(&f16) : nullptr);
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queueInfo;
   info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());

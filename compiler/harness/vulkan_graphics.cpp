@@ -100,9 +100,9 @@ Buffer& createBuffer(GraphicsResources& res, uint64_t size, VkBufferUsageFlags u
   VkMemoryAllocateInfo alloc{};
   alloc.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
   alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex = memoryType(res.ctx, req.memoryTypeBits,
-                                     VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-                                     "graphics buffers");
+  alloc.memoryTypeIndex =
+      memoryType(res.ctx, req.memoryTypeBits,
+                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "graphics buffers");
   MB_VK_CHECK(vkAllocateMemory(res.device, &alloc, nullptr, &b.memory));
   MB_VK_CHECK(vkBindBufferMemory(res.device, b.buffer, b.memory, 0));
   MB_VK_CHECK(vkMapMemory(res.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
@@ -216,7 +216,8 @@ void createLayouts(GraphicsResources& res, const GraphicsJob& job) {
     bindings.push_back({u.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
   for (const auto& t : first.textures)
-    bindings.push_back({t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+    bindings.push_back(
+        {t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
   VkDescriptorSetLayoutCreateInfo setInfo{};
   setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
   setInfo.bindingCount = static_cast<uint32_t>(bindings.size());
@@ -418,18 +419,21 @@ void recordCommands(GraphicsResources& res, const GraphicsJob& job, VkBuffer ver
     vkCmdBindDescriptorSets(res.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, res.pipelineLayout, 0, 1, &res.sets[d], 0,
                             nullptr);
     const auto& area = job.draws[d].viewport;
-    const VkRect2D scissor = area[2] ? VkRect2D{{static_cast<int32_t>(area[0]), static_cast<int32_t>(area[1])},
-                                                {area[2], area[3]}}
-                                     : VkRect2D{{0, 0}, {job.width, job.height}};
-    const VkViewport viewport{static_cast<float>(scissor.offset.x), static_cast<float>(scissor.offset.y),
-                              static_cast<float>(scissor.extent.width), static_cast<float>(scissor.extent.height),
-                              0.0f, 1.0f};
+    const VkRect2D scissor =
+        area[2] ? VkRect2D{{static_cast<int32_t>(area[0]), static_cast<int32_t>(area[1])}, {area[2], area[3]}}
+                : VkRect2D{{0, 0}, {job.width, job.height}};
+    const VkViewport viewport{static_cast<float>(scissor.offset.x),
+                              static_cast<float>(scissor.offset.y),
+                              static_cast<float>(scissor.extent.width),
+                              static_cast<float>(scissor.extent.height),
+                              0.0f,
+                              1.0f};
     vkCmdSetViewport(res.cmd, 0, 1, &viewport);
     vkCmdSetScissor(res.cmd, 0, 1, &scissor);
     const auto& push = job.draws[d].pushConstants;
     if (!push.empty())
-      vkCmdPushConstants(res.cmd, res.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0,
-                         static_cast<uint32_t>(push.size()), push.data());
+      vkCmdPushConstants(res.cmd, res.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, static_cast<uint32_t>(push.size()),
+                         push.data());
     vkCmdDrawIndexed(res.cmd, static_cast<uint32_t>(job.mesh.indices.size()), 1, 0, 0, 0);
   }
   vkCmdEndRenderPass(res.cmd);

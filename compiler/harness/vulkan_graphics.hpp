@@ -63,8 +63,8 @@ struct DrawResources {
 struct GraphicsJob {
   std::vector<uint32_t> vertexSpirv, fragmentSpirv;  // entry points "main"
   uint32_t width = 0, height = 0;
-  uint32_t colorTargets = 1;                         // RGBA32F, fragment outputs 0..n-1
-  std::vector<std::array<float, 4>> clearColors;     // per target; missing ones clear to 0
+  uint32_t colorTargets = 1;                      // RGBA32F, fragment outputs 0..n-1
+  std::vector<std::array<float, 4>> clearColors;  // per target; missing ones clear to 0
   Mesh mesh;
   std::vector<DrawResources> draws;  // the whole mesh once per entry
 };

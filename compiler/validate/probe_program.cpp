@@ -161,8 +161,7 @@ std::function<void(const double*, double*)> materialReferenceEval(const Permutat
   };
 }
 
-Tolerance compositionTolerance(const ShaderLibrary& lib, const std::vector<std::string>& bricks,
-                               double radianceBound) {
+Tolerance compositionTolerance(const ShaderLibrary& lib, const std::vector<std::string>& bricks, double radianceBound) {
   // First-order propagation: relative errors of the bricks multiplied together add up, and
   // a sum of lobes is no worse than its worst lobe; 1e-5 covers the composition's own fp32
   // arithmetic (a few dozen operations at ~6e-8 each).

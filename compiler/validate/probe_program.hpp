@@ -50,8 +50,7 @@ ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& 
 // composition, the absolute part scaled by `radianceBound` (the scene's largest illuminance or
 // radiance input: a unit-illuminance composition's absolute error scales with it). validate
 // uses the probe scene's bound, preview its own scene's.
-Tolerance compositionTolerance(const ShaderLibrary& lib, const std::vector<std::string>& bricks,
-                               double radianceBound);
+Tolerance compositionTolerance(const ShaderLibrary& lib, const std::vector<std::string>& bricks, double radianceBound);
 // Illuminance (lux-like units) from starlight to well above direct sunlight.
 inline constexpr Range kIlluminanceRange{1e-6, 1e6};
 // At fp16: pre-exposed illuminance, from the smallest normal half (2^-14) to 2^10.

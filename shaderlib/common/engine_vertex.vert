@@ -21,10 +21,6 @@ layout(location = 1) out vec3 mbWorldNormal;
 layout(location = 2) out vec4 mbWorldTangent;
 layout(location = 3) out vec2 mbUv0;
 
-// The preview rasterizes the same draws twice (the shading pass and the attributes pass of
-// engine_attributes.frag) and compares per pixel: both must cover the same pixels.
-invariant gl_Position;
-
 void main() {
     vec3 world = inPosition * mbVertex.modelOffsetScale.w + mbVertex.modelOffsetScale.xyz;
     mbWorldPosition = world;

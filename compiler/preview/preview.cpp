@@ -1,0 +1,380 @@
+// renderPreview (preview.hpp): the permutation, its spheres' parameters, the two graphics
+// passes, the reference render, the comparison and the pictures.
+#include "preview/preview.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "common/reference.hpp"
+#include "compile/glsl_compiler.hpp"
+#include "core/diagnostics.hpp"
+#include "emit/fragment_shader.hpp"
+#include "harness/gpu_texture.hpp"
+#include "harness/vulkan_graphics.hpp"
+#include "lut/lut_gpu.hpp"
+#include "permute/permutation.hpp"
+#include "preview/environment_textures.hpp"
+#include "preview/preview_reference.hpp"
+#include "preview/preview_scene.hpp"
+#include "preview/sphere_mesh.hpp"
+#include "validate/probe_program.hpp"
+
+namespace mb::preview {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+[[noreturn]] void optionError(const std::string& code, const std::string& message, const std::string& suggestion = {}) {
+  throw DiagnosticError({{Severity::Error, code, {"<command line>", 0, 0}, message, suggestion}});
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+// Per sphere: every non-constant parameter's value (its default, or the sweep's step).
+using SphereParams = std::map<std::string, std::vector<double>>;
+
+std::vector<SphereParams> sphereParams(const MaterialDesc& m, const PreviewOptions& o) {
+  const uint32_t count = o.sweep.empty() ? 1 : std::max(o.sweepCount, 1u);
+  std::vector<SphereParams> spheres(count);
+  for (uint32_t i = 0; i < count; ++i) {
+    for (const auto& prm : m.params) {
+      if (prm.constant) continue;
+      std::vector<double> v = prm.value;
+      if (prm.name == o.sweep) {
+        // Evenly over the parameter's range, both ends included.
+        const double t = count == 1 ? 0.5 : static_cast<double>(i) / (count - 1);
+        for (double& c : v) c = prm.range.lo + (prm.range.hi - prm.range.lo) * t;
+      }
+      spheres[i][prm.name] = v;
+    }
+  }
+  return spheres;
+}
+
+// std140 (GLSL 4.50 spec 7.6.2.2) of the fragment shader's MbMaterialParams: float aligned to
+// 4, vec2 to 8, vec3 to 16 bytes; the block's size rounded up to 16.
+std::vector<uint8_t> paramsBlock(const MaterialDesc& m, const SphereParams& values) {
+  std::vector<uint8_t> bytes;
+  size_t offset = 0;
+  for (const auto& prm : m.params) {
+    if (prm.constant) continue;
+    const int n = componentCount(prm.type);
+    const size_t align = n == 1 ? 4 : (n == 2 ? 8 : 16);
+    offset = (offset + align - 1) / align * align;
+    bytes.resize(offset + 4 * n, 0);
+    for (int k = 0; k < n; ++k) {
+      const float f = static_cast<float>(values.at(prm.name)[k]);
+      std::memcpy(bytes.data() + offset + 4 * k, &f, 4);
+    }
+    offset += 4 * n;
+  }
+  bytes.resize((bytes.size() + 15) / 16 * 16, 0);
+  return bytes;
+}
+
+std::vector<uint32_t> compileStage(const std::string& glsl, const std::string& name, ShaderStage stage) {
+  CompileOptions options;
+  options.stage = stage;
+  return compileComputeGlsl(glsl, name, options).spirv;
+}
+
+// The model inputs of each sphere for the reference: the material's constants and the
+// sphere's parameters, and with surface code what surface() computed on the GPU (the compute
+// probe of the same permutation, one record per sphere: there is no C++ form of user GLSL).
+std::vector<std::map<std::string, std::vector<double>>> sphereModelInputs(harness::VulkanHarness& gpu,
+                                                                          const ShaderLibrary& lib,
+                                                                          const Permutation& perm,
+                                                                          const std::vector<SphereParams>& spheres) {
+  const MaterialDesc& m = *perm.material;
+  std::vector<std::map<std::string, std::vector<double>>> out(spheres.size());
+  for (size_t s = 0; s < spheres.size(); ++s) {
+    for (const auto& prm : m.params)
+      if (!prm.user) out[s][prm.name] = prm.constant ? prm.value : spheres[s].at(prm.name);
+  }
+  if (!m.surface.present()) return out;
+  const ProbeProgram probe = buildPermutationProbe(lib, perm);
+  const ProbeLayout& layout = probe.shader.layout;
+  std::vector<float> records = generateSamples(layout, probe.domain, spheres.size(), 1);
+  for (size_t s = 0; s < spheres.size(); ++s) {
+    for (const auto& prm : m.params) {
+      if (prm.constant) continue;
+      const ProbeInput* in = layout.find(prm.name);
+      for (int k = 0; k < componentCount(prm.type); ++k)
+        records[s * layout.inStride + in->offset + k] = static_cast<float>(spheres[s].at(prm.name)[k]);
+    }
+  }
+  const ProbeRun run = runProbeOnGpu(gpu, probe, std::move(records));
+  for (size_t s = 0; s < spheres.size(); ++s) {
+    for (const auto& f : layout.fedOutputs) {
+      const float* v = run.gpu.data() + s * layout.outStride + f.offset;
+      out[s][f.name].assign(v, v + componentCount(f.type));
+    }
+  }
+  return out;
+}
+
+harness::GraphicsJob sphereJob(const PreviewOptions& o, const MaterialDesc& m, const std::vector<SphereParams>& spheres,
+                               const std::vector<PreviewLight>& lights, const PreviewEnvironment& env,
+                               const std::string& environmentMode) {
+  harness::GraphicsJob job;
+  job.width = o.size * static_cast<uint32_t>(spheres.size());
+  job.height = o.size;
+  job.mesh = uvSphere();
+  const auto vp = viewProjection();
+  std::vector<uint8_t> push(80);
+  std::memcpy(push.data(), vp.data(), 64);
+  const float model[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // every sphere at the origin, radius 1
+  std::memcpy(push.data() + 64, model, 16);
+  const bool ibl = environmentMode == "ibl_lut" || environmentMode == "ibl_analytic";
+  const std::vector<uint8_t> frame = frameBlockBytes(lights, environmentMode == "none" ? nullptr : &env.maps);
+  for (size_t s = 0; s < spheres.size(); ++s) {
+    harness::DrawResources d;
+    const std::vector<uint8_t> params = paramsBlock(m, spheres[s]);
+    if (!params.empty()) d.uniforms.push_back({kFragmentParamsBinding, params});
+    d.uniforms.push_back({kFragmentFrameBinding, frame});
+    if (ibl) d.textures.push_back({kFragmentPrefilteredBinding, {env.cube->view(), env.cube->sampler()}});
+    if (environmentMode == "ibl_lut")
+      d.textures.push_back({kFragmentDfgBinding, {env.dfgTexture->view(), env.dfgTexture->sampler()}});
+    d.pushConstants = push;
+    d.viewport = {o.size * static_cast<uint32_t>(s), 0, o.size, o.size};
+    job.draws.push_back(std::move(d));
+  }
+  return job;
+}
+
+// Display values: exposure, the tonemap brick, the sRGB OETF. The GPU image goes through the
+// brick's GLSL on the device (its compute probe), the reference image through its C++
+// reference in double.
+Image8 tonemapGpu(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const PreviewOptions& o,
+                  const std::vector<float>& rgb, uint32_t width, uint32_t height) {
+  const ProbeProgram probe = buildBrickProbe(lib, *lib.findBrick(o.tonemap));
+  if (probe.shader.layout.inStride != 3 || probe.shader.layout.outStride != 3)
+    throw std::logic_error("tonemap brick '" + o.tonemap + "' is not vec3 -> vec3");
+  std::vector<float> in(rgb.size());
+  for (size_t i = 0; i < rgb.size(); ++i) in[i] = static_cast<float>(rgb[i] * o.exposure);
+  const ProbeRun run = runProbeOnGpu(gpu, probe, std::move(in));
+  Image8 image{width, height, std::vector<uint8_t>(rgb.size())};
+  for (size_t i = 0; i < rgb.size(); ++i) image.rgb[i] = encodeSrgb8(run.gpu[i]);
+  return image;
+}
+
+Image8 tonemapReference(const PreviewOptions& o, const std::vector<double>& rgb, uint32_t width, uint32_t height) {
+  const ref::Reference* tonemap = ref::Registry::references().find(o.tonemap);
+  if (!tonemap) throw std::logic_error("tonemap brick '" + o.tonemap + "' has no reference");
+  Image8 image{width, height, std::vector<uint8_t>(rgb.size())};
+  for (size_t p = 0; p < rgb.size() / 3; ++p) {
+    const double in[3] = {rgb[p * 3] * o.exposure, rgb[p * 3 + 1] * o.exposure, rgb[p * 3 + 2] * o.exposure};
+    double out[3] = {0, 0, 0};
+    tonemap->eval(in, out);
+    for (int c = 0; c < 3; ++c) image.rgb[p * 3 + c] = encodeSrgb8(out[c]);
+  }
+  return image;
+}
+
+// Per pixel and channel: |gpu - ref| against abs + rel |ref|, widened by the fp32 direction
+// conditioning only where the arithmetic bound alone does not pass (validate's
+// onlyWhereNeeded: the same verdicts at a fraction of the cost).
+void compare(const ReferenceScene& scene, const PixelAttributes& attributes, PreviewResult& r) {
+  const size_t pixels = size_t{r.width} * r.height;
+  r.errorRatio.assign(pixels, 0.0);
+  double sum[3] = {0, 0, 0};
+  std::vector<ref::ModelEvalInput> work;
+  for (size_t s = 0; s < scene.sphereInputs.size(); ++s) work.push_back(referenceWorkspace(scene, s));
+  for (size_t p = 0; p < pixels; ++p) {
+    if (!r.covered[p]) continue;
+    ++r.coveredPixels;
+    double ratio = 0;
+    bool conditioned = false;
+    std::array<double, 3> allowance{0, 0, 0};
+    for (int c = 0; c < 3; ++c) {
+      const double g = r.gpu[p * 3 + c], ref = r.reference[p * 3 + c];
+      if (!std::isfinite(g) || !std::isfinite(ref)) {
+        ++r.nonFinite;
+        ratio = std::numeric_limits<double>::infinity();
+        continue;
+      }
+      const double err = std::abs(g - ref);
+      r.channels[c].maxAbs = std::max(r.channels[c].maxAbs, err);
+      sum[c] += err;
+      double allowed = r.tolerance.abs + r.tolerance.rel * std::abs(ref);
+      if (err > allowed && !conditioned) {
+        const uint32_t x = static_cast<uint32_t>(p % r.width), y = static_cast<uint32_t>(p / r.width);
+        const ref::Vec3 reference{r.reference[p * 3], r.reference[p * 3 + 1], r.reference[p * 3 + 2]};
+        allowance = conditioningAllowance(scene, attributes, x, y, reference, work.at(x / scene.tile));
+        conditioned = true;
+      }
+      const bool failedAlone = err > allowed;
+      allowed += allowance[c];
+      if (failedAlone && err <= allowed) ++r.passedByConditioning;
+      const double e = allowed > 0 ? err / allowed : (err > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+      ratio = std::max(ratio, e);
+    }
+    r.errorRatio[p] = ratio;
+    r.maxErrorRatio = std::max(r.maxErrorRatio, ratio);
+    if (ratio > 1.0) ++r.failures;
+  }
+  for (int c = 0; c < 3; ++c) r.channels[c].meanAbs = r.coveredPixels ? sum[c] / r.coveredPixels : 0.0;
+}
+
+Image8 heatmap(const PreviewResult& r) {
+  Image8 image{r.width, r.height, std::vector<uint8_t>(size_t{r.width} * r.height * 3, 40)};
+  for (size_t p = 0; p < r.covered.size(); ++p)
+    if (r.covered[p]) heatmapColor(r.errorRatio[p], &image.rgb[p * 3]);
+  return image;
+}
+
+}  // namespace
+
+std::vector<std::string> sweepableParameters(const MaterialDesc& material) {
+  std::vector<std::string> names;
+  for (const auto& prm : material.params)
+    if (!prm.constant) names.push_back(prm.name);
+  return names;
+}
+
+void checkPreviewOptions(const ShaderLibrary& lib, const std::vector<const MaterialDesc*>& materials,
+                         const PreviewOptions& o) {
+  if (o.size == 0 || o.size > kMaxPreviewSize)
+    optionError("E-PREVIEW-SIZE",
+                "--size " + std::to_string(o.size) + " is outside 1.." + std::to_string(kMaxPreviewSize) + " pixels");
+  defaultLights(o.lights);  // throws E-PREVIEW-LIGHT
+  const Brick* tonemap = lib.findBrick(o.tonemap);
+  if (!tonemap || tonemap->slot != "tonemap") {
+    std::vector<std::string> valid;
+    for (const auto& b : lib.bricks())
+      if (b.slot == "tonemap") valid.push_back(b.id);
+    optionError("E-PREVIEW-TONEMAP", "unknown tonemap brick '" + o.tonemap + "' (valid: " + joined(valid) + ")",
+                didYouMean(o.tonemap, valid));
+  }
+  if (o.sweep.empty()) return;
+  if (o.sweepCount < 2 || o.sweepCount > 16)
+    optionError("E-PREVIEW-SWEEP", "--sweep-count " + std::to_string(o.sweepCount) + " is outside 2..16");
+  for (const MaterialDesc* m : materials) {
+    const std::vector<std::string> valid = sweepableParameters(*m);
+    if (std::find(valid.begin(), valid.end(), o.sweep) == valid.end())
+      optionError("E-PREVIEW-SWEEP",
+                  "material '" + m->name + "' has no non-constant parameter '" + o.sweep +
+                      "' to sweep (valid: " + (valid.empty() ? std::string("none") : joined(valid)) + ")",
+                  didYouMean(o.sweep, valid));
+  }
+}
+
+PreviewEnvironment prepareEnvironment(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const std::string& name,
+                                      uint32_t cubeSize, uint32_t lutSize) {
+  const auto t0 = Clock::now();
+  PreviewEnvironment env;
+  env.maps = buildEnvironment(name, gpu, cubeSize);
+  env.dfg = lut::generateDfgLutOnGpu(gpu, lib, lutSize, 0).table;
+  env.cube = uploadEnvironmentCube(gpu, env.maps);
+  env.dfgTexture = uploadDfgLut(gpu, env.dfg);
+  env.buildMs = msSince(t0);
+  return env;
+}
+
+PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const MaterialDesc& material,
+                            const PreviewOptions& o, const PreviewEnvironment& env) {
+  checkPreviewOptions(lib, {&material}, o);
+  Permutation perm;
+  perm.material = &material;
+  perm.lights = canonicalLights(o.lights);
+  perm.environment = o.environmentMode;
+  perm.precision = o.precision;
+  const std::vector<PreviewLight> lights = defaultLights(perm.lights);
+  const std::vector<SphereParams> spheres = sphereParams(material, o);
+
+  PreviewResult r;
+  r.material = material.name;
+  r.key = perm.key();
+  r.spheres = static_cast<uint32_t>(spheres.size());
+
+  auto t0 = Clock::now();
+  const EmittedShader fragment = emitFragmentShader(lib, perm);
+  harness::GraphicsJob job = sphereJob(o, material, spheres, lights, env, perm.environment);
+  job.vertexSpirv = compileStage(lib.source("common/engine_vertex.vert"), "engine_vertex.vert", ShaderStage::Vertex);
+  job.fragmentSpirv = compileStage(fragment.glsl, fragment.fileName, ShaderStage::Fragment);
+  const std::vector<uint32_t> attributesSpirv =
+      compileStage(lib.source("common/engine_attributes.frag"), "engine_attributes.frag", ShaderStage::Fragment);
+  r.compileMs = msSince(t0);
+  r.width = job.width;
+  r.height = job.height;
+
+  // Pass 1: the permutation's fragment shader.
+  job.clearColors = {{kBackground[0], kBackground[1], kBackground[2], 0.0f}};
+  const harness::GraphicsResult shaded = harness::render(gpu, job);
+  r.pipelineMs = shaded.pipelineMs;
+  r.renderMs = shaded.renderMs;
+  // Pass 2: the same draws with the attributes shader.
+  job.fragmentSpirv = attributesSpirv;
+  job.colorTargets = 4;
+  job.clearColors.clear();
+  harness::GraphicsResult attributes = harness::render(gpu, job);
+  r.pipelineMs += attributes.pipelineMs;
+  r.attributesMs = attributes.renderMs;
+  PixelAttributes a{r.width,
+                    r.height,
+                    std::move(attributes.targets[0]),
+                    std::move(attributes.targets[1]),
+                    std::move(attributes.targets[2]),
+                    std::move(attributes.targets[3])};
+
+  const size_t pixels = size_t{r.width} * r.height;
+  r.gpu.resize(pixels * 3);
+  r.covered.resize(pixels);
+  for (size_t p = 0; p < pixels; ++p) {
+    r.covered[p] = a.position[p * 4 + 3] == 1.0f;
+    for (int c = 0; c < 3; ++c) r.gpu[p * 3 + c] = shaded.targets[0][p * 4 + c];
+  }
+
+  ReferenceScene scene;
+  scene.model = ref::ModelRegistry::instance().find(material.model);
+  if (!scene.model) throw std::logic_error("model '" + material.model + "' has no reference composition");
+  for (const auto& [role, id] : boundRoles(lib, perm)) scene.bricks[role] = id;
+  scene.features = material.features;
+  scene.lightTypes = perm.lights;
+  scene.environmentMode = perm.environment;
+  scene.lights = lights;
+  scene.environment = &env.maps;
+  scene.dfg = &env.dfg;
+  scene.tile = o.size;
+  scene.sphereInputs = sphereModelInputs(gpu, lib, perm, spheres);
+  for (auto& inputs : scene.sphereInputs)
+    for (const auto& [name, value] : o.referenceOverrides) inputs[name] = value;
+
+  t0 = Clock::now();
+  r.reference = referenceImage(scene, a, o.threads);
+  for (size_t p = 0; p < pixels; ++p)
+    if (!r.covered[p])
+      for (int c = 0; c < 3; ++c) r.reference[p * 3 + c] = kBackground[c];
+  r.referenceMs = msSince(t0);
+
+  r.radianceBound = sceneRadianceBound(lights, perm.environment == "none" ? nullptr : &env.maps);
+  r.tolerance = compositionTolerance(lib, fragment.bricks, r.radianceBound);
+  t0 = Clock::now();
+  compare(scene, a, r);
+  r.compareMs = msSince(t0);
+
+  t0 = Clock::now();
+  r.gpuImage = tonemapGpu(gpu, lib, o, r.gpu, r.width, r.height);
+  r.referenceImage = tonemapReference(o, r.reference, r.width, r.height);
+  r.diffImage = heatmap(r);
+  r.tonemapMs = msSince(t0);
+  return r;
+}
+
+void writePreviewImages(const PreviewResult& r, const std::filesystem::path& gpuPng,
+                        const std::filesystem::path& referencePng, const std::filesystem::path& diffPng) {
+  writePng(gpuPng, r.gpuImage);
+  writePng(referencePng, r.referenceImage);
+  writePng(diffPng, r.diffImage);
+}
+
+}  // namespace mb::preview

@@ -1,0 +1,68 @@
+// The preview's reference render (docs/preview.md "Reference"): the frame the GPU shaded,
+// evaluated per pixel on the CPU in double by the model's reference composition, from the
+// interpolated attributes the attributes pass read back, with the frame built as the
+// fragment shader builds it (docs/fragment-stage.md), each light of the scene and the
+// environment summed, and the environment fetched through EnvironmentMaps::sample and a CPU
+// bilinear lookup of the same DFG LUT texels. Threaded over rows.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "common/model_reference.hpp"
+#include "lut/dfg_lut.hpp"
+#include "preview/environment.hpp"
+#include "preview/preview_scene.hpp"
+
+namespace mb::preview {
+
+// The attributes pass's targets (RGBA32F each, row 0 at the top); position.w = 1 marks a
+// covered pixel.
+struct PixelAttributes {
+  uint32_t width = 0, height = 0;
+  std::vector<float> position, normal, tangent, uv;
+};
+
+struct ReferenceScene {
+  ref::ModelReferenceFn model = nullptr;
+  std::map<std::string, std::string> bricks;  // role -> brick id
+  std::vector<std::string> features;
+  std::vector<std::string> lightTypes;  // the permutation's
+  std::string environmentMode = "none";
+  std::vector<PreviewLight> lights;
+  const EnvironmentMaps* environment = nullptr;  // IBL and SH modes
+  const lut::LutTable* dfg = nullptr;            // ibl_lut
+  // Per sphere (tile column): every model input (constants, parameters, and with surface code
+  // what surface() computed on the GPU).
+  std::vector<std::map<std::string, std::vector<double>>> sphereInputs;
+  uint32_t tile = 0;  // pixels per sphere tile edge
+};
+
+// What Vulkan's bilinear sampling with clamp-to-edge (the LUT's sampler) returns at (u, v) =
+// (NoV, perceptual roughness), in double (Vulkan spec "Texel Filtering": i0 = floor(u size -
+// 0.5), weights from the fraction).
+ref::Vec3 sampleDfgLut(const lut::LutTable& table, double u, double v);
+
+// Radiance of one covered pixel (x, y); `work` is referenceWorkspace(scene, sphere of x).
+// `perturb` >= 0 selects a sign pattern of conditioningAllowance (-1: the attributes as read).
+// The preview has at most one light per type, so one call of the model shades them all.
+ref::Vec3 referencePixel(const ReferenceScene& scene, const PixelAttributes& a, uint32_t x, uint32_t y,
+                         ref::ModelEvalInput& work, int perturb = -1);
+
+// The reference radiance (rgb per pixel, 0 for background) of every covered pixel.
+std::vector<double> referenceImage(const ReferenceScene& scene, const PixelAttributes& a, unsigned threads = 0);
+
+// How far the reference of pixel (x, y) moves when the fragment shader's fp32 direction inputs
+// (the interpolated normal and the camera-to-point vector) are perturbed by
+// kDirectionInputUlps ulps, over kConditioningPatterns sign patterns (the same backward-error
+// allowance validate gives a probe, compiler/validate/probe_program.hpp), per channel.
+std::array<double, 3> conditioningAllowance(const ReferenceScene& scene, const PixelAttributes& a, uint32_t x,
+                                            uint32_t y, const ref::Vec3& reference, ref::ModelEvalInput& work);
+
+// A working ModelEvalInput for sphere `sphere` of the scene: bricks, features, its inputs, and
+// the environment with its fetches bound.
+ref::ModelEvalInput referenceWorkspace(const ReferenceScene& scene, size_t sphere);
+
+}  // namespace mb::preview

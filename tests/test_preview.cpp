@@ -1,0 +1,203 @@
+// matbricks preview (docs/preview.md): every shipped material under both environments
+// rendered through its fragment shader on lavapipe matches the reference render within the
+// permutation's tolerance at every pixel; the graphics path covers the sphere it should; a
+// sweep draws distinct spheres; a wrong reference is caught; the command line's bad inputs
+// fail cleanly and its PNGs decode.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <unistd.h>
+
+#include "harness/vulkan_graphics.hpp"
+#include "load/material_desc.hpp"
+#include "write/output_paths.hpp"
+#include "preview/preview.hpp"
+#include "preview/preview_scene.hpp"
+#include "support/harness_support.hpp"
+#include "support/pipeline_support.hpp"
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#include <stb/stb_image.h>
+
+using namespace mb;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Small enough that the whole matrix (9 materials x 2 environments) stays a few seconds of
+// lavapipe; big enough that every sphere has ~2000 shaded pixels across all n.v.
+constexpr uint32_t kTestSize = 56;
+constexpr uint32_t kTestCubeSize = 32, kTestLutSize = 32;
+
+harness::VulkanHarness& device() {
+  static harness::VulkanHarness gpu(harness::testDeviceOptions());
+  return gpu;
+}
+
+const preview::PreviewEnvironment& environment(const std::string& name) {
+  static std::map<std::string, preview::PreviewEnvironment> cache;
+  auto it = cache.find(name);
+  if (it == cache.end())
+    it = cache
+             .emplace(name,
+                      preview::prepareEnvironment(device(), test::shippedLibrary(), name, kTestCubeSize, kTestLutSize))
+             .first;
+  return it->second;
+}
+
+preview::PreviewOptions smallOptions() {
+  preview::PreviewOptions o;
+  o.size = kTestSize;
+  o.lights = {"dir", "point"};
+  return o;
+}
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    path = fs::temp_directory_path() /
+           ("mb-preview-test-" + std::to_string(::getpid()) + "-" + std::to_string(reinterpret_cast<uintptr_t>(this)));
+    fs::remove_all(path);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("every shipped material under both environments matches the reference at every pixel", "[preview][vulkan]") {
+  const auto files = test::exampleMaterialFiles();
+  REQUIRE(files.size() >= 9);
+  for (const std::string env : {"studio", "sky"}) {
+    for (const auto& file : files) {
+      const MaterialDesc m = loadMaterialJson(file, test::shippedLibrary());
+      const preview::PreviewResult r =
+          preview::renderPreview(device(), test::shippedLibrary(), m, smallOptions(), environment(env));
+      INFO(m.name << " under " << env << ": max error/tolerance " << r.maxErrorRatio << ", " << r.failures
+                  << " pixels outside, max abs " << r.channels[0].maxAbs << " " << r.channels[1].maxAbs << " "
+                  << r.channels[2].maxAbs << ", tolerance abs " << r.tolerance.abs << " rel " << r.tolerance.rel);
+      // The unit sphere fills a disc of radius ~ size / 2 * 0.93 (kFieldOfViewDegrees); the
+      // rasterized disc is within a few percent of it.
+      const double radius = 0.5 * kTestSize / std::tan(preview::kFieldOfViewDegrees * std::numbers::pi / 360.0) /
+                            std::sqrt(preview::kCameraDistance * preview::kCameraDistance - 1.0);
+      const double disc = std::numbers::pi * radius * radius;
+      CHECK(r.coveredPixels > 0.95 * disc);
+      CHECK(r.coveredPixels < 1.05 * disc);
+      CHECK(r.nonFinite == 0);
+      CHECK(r.failures == 0);
+      CHECK(r.passed());
+    }
+  }
+  CHECK(device().validationMessages().empty());
+}
+
+TEST_CASE("a sweep renders one distinct sphere per step", "[preview][vulkan]") {
+  const MaterialDesc m = test::shippedMaterial("filament_plastic");
+  preview::PreviewOptions o = smallOptions();
+  o.sweep = "roughness";
+  o.sweepCount = 3;
+  const preview::PreviewResult r =
+      preview::renderPreview(device(), test::shippedLibrary(), m, o, environment("studio"));
+  REQUIRE(r.spheres == 3);
+  REQUIRE(r.width == 3 * kTestSize);
+  CHECK(r.passed());
+  // Each tile is covered alike (same geometry) but shaded differently (its own roughness).
+  std::vector<uint64_t> covered(3, 0);
+  std::vector<double> sum(3, 0.0);
+  for (uint32_t y = 0; y < r.height; ++y)
+    for (uint32_t x = 0; x < r.width; ++x) {
+      const size_t p = size_t{y} * r.width + x;
+      if (!r.covered[p]) continue;
+      ++covered[x / kTestSize];
+      sum[x / kTestSize] += r.gpu[p * 3] + r.gpu[p * 3 + 1] + r.gpu[p * 3 + 2];
+    }
+  CHECK(covered[0] == covered[1]);
+  CHECK(covered[1] == covered[2]);
+  CHECK(sum[0] != sum[1]);
+  CHECK(sum[1] != sum[2]);
+  CHECK(device().validationMessages().empty());
+}
+
+TEST_CASE("a wrong reference (perturbed roughness) is caught", "[preview][vulkan]") {
+  const MaterialDesc m = test::shippedMaterial("ue4_metal");
+  preview::PreviewOptions o = smallOptions();
+  const double roughness = m.param("roughness")->value[0];
+  o.referenceOverrides["roughness"] = {roughness + 0.01};
+  const preview::PreviewResult r = preview::renderPreview(device(), test::shippedLibrary(), m, o, environment("sky"));
+  CHECK(r.failures > 0);
+  CHECK_FALSE(r.passed());
+  CHECK(r.maxErrorRatio > 1.0);
+}
+
+TEST_CASE("preview writes decodable PNGs of the right size", "[preview][vulkan]") {
+  TempDir dir;
+  const std::string material = (test::sourceDir() / "materials" / "velvet_green.json").string();
+  auto run = test::runCli("preview " + material + " -o " + dir.path.string() + " --size 24 --sweep roughness " +
+                          "--sweep-count 2 --environment sky");
+  INFO(run.output);
+  REQUIRE(run.exitCode == 0);
+  for (const char* suffix : {".png", ".reference.png", ".diff.png"}) {
+    int w = 0, h = 0, n = 0;
+    const std::string png = test::readFile(dir.path / (std::string("velvet_green") + suffix));
+    unsigned char* pixels = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(png.data()),
+                                                  static_cast<int>(png.size()), &w, &h, &n, 3);
+    REQUIRE(pixels != nullptr);
+    stbi_image_free(pixels);
+    CHECK(w == 48);
+    CHECK(h == 24);
+  }
+  // The directory carries the ownership marker, so a second run may replace it.
+  CHECK(fs::exists(dir.path / kOutputMarkerName));
+  CHECK(test::runCli("preview " + material + " -o " + dir.path.string() + " --size 16").exitCode == 0);
+}
+
+TEST_CASE("preview rejects bad input with one line and writes nothing", "[preview]") {
+  TempDir dir;
+  const std::string material = (test::sourceDir() / "materials" / "ue4_metal.json").string();
+  const std::string out = (dir.path / "out").string();
+  struct Case {
+    std::string args, code;
+  };
+  const std::vector<Case> cases = {
+      {"--environment nowhere", "E-UNKNOWN-ENVIRONMENT"},
+      {"--sweep shininess", "E-PREVIEW-SWEEP"},
+      {"--size 0", "E-PREVIEW-SIZE"},
+      {"--size 8193", "E-PREVIEW-SIZE"},
+      {"--lights dir,laser", "E-PREVIEW-LIGHT"},
+      {"--tonemap d_ggx", "E-PREVIEW-TONEMAP"},
+  };
+  for (const auto& c : cases) {
+    auto run = test::runCli("preview " + material + " -o " + out + " " + c.args);
+    INFO(c.args << ": " << run.output);
+    CHECK(run.exitCode == 3);
+    CHECK(run.output.find("error[" + c.code + "]") != std::string::npos);
+    CHECK(std::count(run.output.begin(), run.output.end(), '\n') == 1);
+    CHECK_FALSE(fs::exists(out));
+  }
+  // The valid names are listed.
+  auto env = test::runCli("preview " + material + " -o " + out + " --environment nowhere");
+  CHECK(env.output.find("studio, sky") != std::string::npos);
+  auto sweep = test::runCli("preview " + material + " -o " + out + " --sweep shininess");
+  CHECK(sweep.output.find("roughness") != std::string::npos);
+
+  // An existing directory matbricks did not write is never replaced.
+  fs::create_directories(dir.path / "mine");
+  std::ofstream(dir.path / "mine" / "notes.txt") << "keep";
+  auto notMine = test::runCli("preview " + material + " -o " + (dir.path / "mine").string() + " --size 8");
+  CHECK(notMine.exitCode == 3);
+  CHECK(test::readFile(dir.path / "mine" / "notes.txt") == "keep");
+  CHECK(fs::directory_iterator(dir.path / "mine") != fs::directory_iterator());
+  // A .png output takes one material, and its directory must exist.
+  auto two = test::runCli("preview " + material + " " + material + " -o " + (dir.path / "x.png").string());
+  CHECK(two.exitCode == 3);
+  auto noDir = test::runCli("preview " + material + " -o " + (dir.path / "missing" / "x.png").string());
+  CHECK(noDir.exitCode == 3);
+  CHECK_FALSE(fs::exists(dir.path / "x.png"));
+}
