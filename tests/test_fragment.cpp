@@ -131,9 +131,9 @@ TEST_CASE("Every shipped permutation's fragment shader compiles, validates and r
         CHECK(members == params);
       } else {
         // Only a material whose every run-time parameter is a texture input loses the block.
+        const auto textures = fragmentTextures(*perm.material);
         for (const auto& p : params)
-          CHECK(std::any_of(fragmentTextures(*perm.material).begin(), fragmentTextures(*perm.material).end(),
-                            [&](const FragmentTexture& t) { return t.param == p; }));
+          CHECK(std::any_of(textures.begin(), textures.end(), [&](const FragmentTexture& t) { return t.param == p; }));
       }
       CHECK(r.at("uniform_buffers").size() == blocks);
 
