@@ -82,7 +82,9 @@ TEST_CASE("SPIR-V of every permutation and brick probe passes spirv-val", "[pipe
     INFO(s.key);
     CompileOptions raw;
     raw.validate = false;  // validate here, independently of the compiler's own checks
-    auto unoptimized = compileComputeGlsl(s.glsl, s.fileName, {false, false});
+    CompileOptions rawUnoptimized = raw;
+    rawUnoptimized.optimize = false;
+    auto unoptimized = compileComputeGlsl(s.glsl, s.fileName, rawUnoptimized);
     auto optimized = compileComputeGlsl(s.glsl, s.fileName, raw);
     CHECK(tools.Validate(unoptimized.spirv));
     CHECK(tools.Validate(optimized.spirv));

@@ -89,14 +89,16 @@ std::vector<Diagnostic> parseInfoLog(const std::string& log, const LineMap& line
   return out;
 }
 
-std::vector<uint32_t> frontEnd(const std::string& source, const std::string& displayName, CompileStageTimes& times) {
+std::vector<uint32_t> frontEnd(const std::string& source, const std::string& displayName, ShaderStage stage,
+                               CompileStageTimes& times) {
   ensureGlslangInitialized();
   auto t0 = Clock::now();
-  glslang::TShader shader(EShLangCompute);
+  const EShLanguage language = stage == ShaderStage::Fragment ? EShLangFragment : EShLangCompute;
+  glslang::TShader shader(language);
   const char* text = source.c_str();
   const char* name = displayName.c_str();
   shader.setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
-  shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
+  shader.setEnvInput(glslang::EShSourceGlsl, language, glslang::EShClientVulkan, 100);
   shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
   shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
   const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
@@ -118,7 +120,7 @@ std::vector<uint32_t> frontEnd(const std::string& source, const std::string& dis
   options.generateDebugInfo = false;
   std::vector<uint32_t> spirv;
   spv::SpvBuildLogger logger;
-  glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), spirv, &logger, &options);
+  glslang::GlslangToSpv(*program.getIntermediate(language), spirv, &logger, &options);
   times.codegenMs = msSince(t2);
   return spirv;
 }
@@ -197,7 +199,7 @@ CompileResult compileComputeGlsl(const std::string& source, const std::string& d
   CompileResult result;
   CompileStageTimes& times = result.stages;
   auto t0 = Clock::now();
-  std::vector<uint32_t> spirv = frontEnd(source, displayName, times);
+  std::vector<uint32_t> spirv = frontEnd(source, displayName, options.stage, times);
   result.frontEndMs = msSince(t0);
 
   auto t1 = Clock::now();

@@ -22,7 +22,12 @@ enum class CompilePipeline {
   Legacy,
 };
 
+// The pipeline stage of the GLSL: the package's kernel and the probes are compute shaders; each
+// permutation also has a fragment shader (docs/fragment-stage.md).
+enum class ShaderStage { Compute, Fragment };
+
 struct CompileOptions {
+  ShaderStage stage = ShaderStage::Compute;
   bool optimize = true;  // spirv-opt performance passes (RegisterPerformancePasses)
   bool validate = true;  // spirv-val before and after optimization
   CompilePipeline pipeline = CompilePipeline::Lean;
@@ -45,7 +50,7 @@ struct CompileResult {
   CompileStageTimes stages;
 };
 
-// Compiles a GLSL 450 compute shader. `displayName` names the generated file in errors that
+// Compiles a GLSL 450 shader of options.stage (a compute shader by default). `displayName` names the generated file in errors that
 // are not covered by a #line directive. GLSL errors become DiagnosticError entries with the
 // file and line that the #line directives point at (a brick's file, the user's file).
 CompileResult compileComputeGlsl(const std::string& source, const std::string& displayName,

@@ -2,6 +2,7 @@
 // the package manifest. Offsets and sizes are SPIRV-Cross's reading of the module's own
 // Offset/ArrayStride decorations (std140/std430 as glslang laid them out), so a C++ mirror
 // of a block can static_assert them exactly (docs/targets.md "Reflection").
+#include <algorithm>
 #include <stdexcept>
 
 #include "compile/spvc_module.hpp"
@@ -106,6 +107,48 @@ nlohmann::json blockJson(const SpvcModule& m, const spvc_reflected_resource& r, 
   return j;
 }
 
+// Stage inputs and outputs by location, and combined image samplers by set and binding: the
+// fragment stage's interface (docs/fragment-stage.md). Sorted, so the JSON does not depend on
+// the order SPIRV-Cross lists them in.
+nlohmann::json locatedJson(const SpvcModule& m, spvc_resource_type kind) {
+  spvc_compiler c = m.compiler();
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& r : m.resources(kind))
+    out.push_back({{"name", r.name ? r.name : ""},
+                   {"location", spvc_compiler_get_decoration(c, r.id, SpvDecorationLocation)},
+                   {"type", glslTypeName(c, r.type_id)}});
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a["location"] < b["location"]; });
+  return out;
+}
+
+std::string samplerTypeName(spvc_compiler c, spvc_type_id id) {
+  spvc_type type = spvc_compiler_get_type_handle(c, id);
+  switch (spvc_type_get_image_dimension(type)) {
+    case SpvDim2D:
+      return "sampler2D";
+    case SpvDimCube:
+      return "samplerCube";
+    case SpvDim3D:
+      return "sampler3D";
+    default:
+      return "sampler";
+  }
+}
+
+nlohmann::json samplersJson(const SpvcModule& m) {
+  spvc_compiler c = m.compiler();
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& r : m.resources(SPVC_RESOURCE_TYPE_SAMPLED_IMAGE))
+    out.push_back({{"name", r.name ? r.name : ""},
+                   {"set", spvc_compiler_get_decoration(c, r.id, SpvDecorationDescriptorSet)},
+                   {"binding", spvc_compiler_get_decoration(c, r.id, SpvDecorationBinding)},
+                   {"type", samplerTypeName(c, r.type_id)}});
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
+    return std::make_pair(a["set"], a["binding"]) < std::make_pair(b["set"], b["binding"]);
+  });
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json reflectSpirv(const std::vector<uint32_t>& spirv) {
@@ -145,6 +188,14 @@ nlohmann::json reflectSpirv(const std::vector<uint32_t>& spirv) {
   j["storage_buffers"] = std::move(storage);
   j["uniform_buffers"] = std::move(uniform);
   j["push_constants"] = std::move(push);
+  // A graphics stage's interface. Compute modules (the kernels) have none of these, and their
+  // reflection stays as it was before the fragment stage.
+  if (entryCount && entries[0].execution_model != SpvExecutionModelGLCompute) {
+    j["stage"] = entries[0].execution_model == SpvExecutionModelFragment ? "fragment" : "other";
+    j["stage_inputs"] = locatedJson(m, SPVC_RESOURCE_TYPE_STAGE_INPUT);
+    j["stage_outputs"] = locatedJson(m, SPVC_RESOURCE_TYPE_STAGE_OUTPUT);
+    j["sampled_images"] = samplersJson(m);
+  }
   return j;
 }
 

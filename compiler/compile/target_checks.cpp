@@ -34,15 +34,16 @@ struct Reparse {
   int defaultVersion;
   EShMessages messages;
   spv_target_env validateEnv;
+  EShLanguage stage = EShLangCompute;
 };
 
 std::string reparse(const std::string& text, const Reparse& r) {
   ensureGlslangInitialized();
-  glslang::TShader shader(EShLangCompute);
+  glslang::TShader shader(r.stage);
   const char* str = text.c_str();
   shader.setStrings(&str, 1);
   shader.setEntryPoint("main");
-  shader.setEnvInput(r.source, EShLangCompute, r.client, 100);
+  shader.setEnvInput(r.source, r.stage, r.client, 100);
   shader.setEnvClient(r.client, r.clientVersion);
   shader.setEnvTarget(glslang::EShTargetSpv, r.spirvVersion);
   // The #version line of the source decides the profile; defaultVersion only applies without one.
@@ -58,34 +59,49 @@ std::string reparse(const std::string& text, const Reparse& r) {
   spv::SpvBuildLogger logger;
   glslang::SpvOptions options;
   options.disableOptimizer = true;
-  glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), spirv, &logger, &options);
+  glslang::GlslangToSpv(*program.getIntermediate(r.stage), spirv, &logger, &options);
   return validate(spirv, r.validateEnv);
 }
 
+EShLanguage stageOf(bool fragment) { return fragment ? EShLangFragment : EShLangCompute; }
+
 }  // namespace
 
-std::string checkGlsl(const std::string& source, bool es) {
+std::string checkGlsl(const std::string& source, bool es, bool fragment) {
   // The #version line decides how glslang parses: check that it is the target's.
   const std::string version = es ? "#version 310 es\n" : "#version 450\n";
   if (source.rfind(version, 0) != 0)
     return "expected the source to start with '" + version.substr(0, version.size() - 1) + "'";
   // Plain (non-Vulkan) GLSL: compiled as for OpenGL's ARB_gl_spirv, the closest glslang gets
   // to what a GL/GLES driver's compiler accepts.
-  return reparse(source, {glslang::EShSourceGlsl, glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450,
-                          glslang::EShTargetSpv_1_0, es ? 310 : 450, EShMsgSpvRules, SPV_ENV_OPENGL_4_5});
+  return reparse(source,
+                 {glslang::EShSourceGlsl, glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450,
+                  glslang::EShTargetSpv_1_0, es ? 310 : 450, EShMsgSpvRules, SPV_ENV_OPENGL_4_5, stageOf(fragment)});
 }
 
-std::string checkHlsl(const std::string& source) {
+std::string checkHlsl(const std::string& source, bool fragment) {
   const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | EShMsgReadHlsl);
   return reparse(source, {glslang::EShSourceHlsl, glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1,
-                          glslang::EShTargetSpv_1_3, 100, messages, SPV_ENV_VULKAN_1_1});
+                          glslang::EShTargetSpv_1_3, 100, messages, SPV_ENV_VULKAN_1_1, stageOf(fragment)});
 }
 
 std::string checkMsl(const std::string& source, const SpvcModule& module) {
   spvc_compiler c = module.compiler();
-  const char* entry = spvc_compiler_get_cleansed_entry_point_name(c, "main", SpvExecutionModelGLCompute);
-  const std::string kernel = std::string("kernel void ") + (entry ? entry : "main0") + "(";
+  const bool fragment = spvc_compiler_get_execution_model(c) == SpvExecutionModelFragment;
+  const char* entry = spvc_compiler_get_cleansed_entry_point_name(
+      c, "main", fragment ? SpvExecutionModelFragment : SpvExecutionModelGLCompute);
+  // A fragment function returns its outputs' struct: "fragment main0_out main0(".
+  const std::string name = std::string(entry ? entry : "main0");
+  const std::string kernel = fragment ? "fragment " + name + "_out " + name + "(" : "kernel void " + name + "(";
   if (source.find(kernel) == std::string::npos) return "MSL: no '" + kernel + "' in the output";
+  for (const auto& r : module.resources(SPVC_RESOURCE_TYPE_SAMPLED_IMAGE)) {
+    const unsigned texture = spvc_compiler_msl_get_automatic_resource_binding(c, r.id);
+    const unsigned sampler = spvc_compiler_msl_get_automatic_resource_binding_secondary(c, r.id);
+    for (const std::string attr :
+         {"[[texture(" + std::to_string(texture) + ")]]", "[[sampler(" + std::to_string(sampler) + ")]]"})
+      if (texture == ~0u || sampler == ~0u || source.find(attr) == std::string::npos)
+        return std::string("MSL: sampler '") + spvc_compiler_get_name(c, r.id) + "' has no " + attr + " argument";
+  }
   for (spvc_resource_type type :
        {SPVC_RESOURCE_TYPE_STORAGE_BUFFER, SPVC_RESOURCE_TYPE_UNIFORM_BUFFER, SPVC_RESOURCE_TYPE_PUSH_CONSTANT})
     for (const auto& r : module.resources(type)) {

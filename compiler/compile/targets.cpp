@@ -102,10 +102,11 @@ std::string crossCompile(const std::vector<uint32_t>& spirv, const std::string& 
   if (spvc_compiler_compile(c, &out) != SPVC_SUCCESS || !out) fail(displayName, target, "SPIRV-Cross: " + m.error());
   std::string source = out;
   std::string problem;
+  const bool fragment = spvc_compiler_get_execution_model(c) == SpvExecutionModelFragment;
   if (target == "glsl450" || target == "essl310")
-    problem = checkGlsl(source, target == "essl310");
+    problem = checkGlsl(source, target == "essl310", fragment);
   else if (target == "hlsl")
-    problem = checkHlsl(source);
+    problem = checkHlsl(source, fragment);
   else
     problem = checkMsl(source, m);
   if (!problem.empty()) fail(displayName, target, problem);
