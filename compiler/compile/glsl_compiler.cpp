@@ -93,7 +93,9 @@ std::vector<uint32_t> frontEnd(const std::string& source, const std::string& dis
                                CompileStageTimes& times) {
   ensureGlslangInitialized();
   auto t0 = Clock::now();
-  const EShLanguage language = stage == ShaderStage::Fragment ? EShLangFragment : EShLangCompute;
+  const EShLanguage language = stage == ShaderStage::Fragment ? EShLangFragment
+                               : stage == ShaderStage::Vertex ? EShLangVertex
+                                                              : EShLangCompute;
   glslang::TShader shader(language);
   const char* text = source.c_str();
   const char* name = displayName.c_str();

@@ -24,7 +24,8 @@ enum class CompilePipeline {
 
 // The pipeline stage of the GLSL: the package's kernel and the probes are compute shaders; each
 // permutation also has a fragment shader (docs/fragment-stage.md).
-enum class ShaderStage { Compute, Fragment };
+// Vertex: the fragment stage's reference vertex shader, which the preview draws with.
+enum class ShaderStage { Compute, Fragment, Vertex };
 
 struct CompileOptions {
   ShaderStage stage = ShaderStage::Compute;
