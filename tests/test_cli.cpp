@@ -190,7 +190,7 @@ TEST_CASE("validate --json gives one complete record per permutation", "[cli][va
 }
 
 TEST_CASE("every subcommand has --help and usage errors exit 2", "[cli]") {
-  for (const char* sub : {"compile", "validate", "bricks", "eval", "stress", "energy", "lut", "bench"}) {
+  for (const char* sub : {"compile", "validate", "bricks", "eval", "stress", "energy", "lut", "bench", "preview"}) {
     auto r = test::runCli(std::string(sub) + " --help");
     INFO(sub);
     CHECK(r.exitCode == 0);

@@ -51,6 +51,7 @@ const std::vector<CommandCase> kCommands = {
     {"eval", "eval --material {in} --input {csv}", ""},
     {"bench", "bench {in} --repeats 1 --samples 64 --records 4096 --iterations 4", ""},
     {"verify", "", "verify --scene {in} {out}/pkg"},
+    {"preview", "preview {in} -o {out}/preview --size 16", ""},
 };
 
 std::string substitute(std::string s, const std::string& key, const std::string& value) {

@@ -194,6 +194,12 @@ TEST_CASE("preview rejects bad input with one line and writes nothing", "[previe
   CHECK(notMine.exitCode == 3);
   CHECK(test::readFile(dir.path / "mine" / "notes.txt") == "keep");
   CHECK(fs::directory_iterator(dir.path / "mine") != fs::directory_iterator());
+  // A textured glTF material: its images are not bound yet, said at the material.
+  auto textured =
+      test::runCli("preview " + (test::sourceDir() / "examples/gltf/textured_props.gltf").string() + " -o " + out);
+  CHECK(textured.exitCode == 3);
+  CHECK(textured.output.find("error[E-PREVIEW-TEXTURED]") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
   // A .png output takes one material, and its directory must exist.
   auto two = test::runCli("preview " + material + " " + material + " -o " + (dir.path / "x.png").string());
   CHECK(two.exitCode == 3);

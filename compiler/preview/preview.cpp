@@ -12,6 +12,7 @@
 #include "compile/glsl_compiler.hpp"
 #include "core/diagnostics.hpp"
 #include "emit/fragment_shader.hpp"
+#include "emit/fragment_textures.hpp"
 #include "harness/gpu_texture.hpp"
 #include "harness/vulkan_graphics.hpp"
 #include "lut/lut_gpu.hpp"
@@ -254,6 +255,16 @@ void checkPreviewOptions(const ShaderLibrary& lib, const std::vector<const Mater
       if (b.slot == "tonemap") valid.push_back(b.id);
     optionError("E-PREVIEW-TONEMAP", "unknown tonemap brick '" + o.tonemap + "' (valid: " + joined(valid) + ")",
                 didYouMean(o.tonemap, valid));
+  }
+  for (const MaterialDesc* m : materials) {
+    // The fragment shader samples a glTF material's images at bindings 4+; the preview does not
+    // upload them (nor has the reference a CPU sampler for them) yet.
+    const size_t textures = fragmentTextures(*m).size();
+    if (textures)
+      throw DiagnosticError({{Severity::Error, "E-PREVIEW-TEXTURED", m->modelWhere,
+                              "material '" + m->name + "' samples " + std::to_string(textures) +
+                                  " texture(s); preview does not bind material textures yet",
+                              ""}});
   }
   if (o.sweep.empty()) return;
   if (o.sweepCount < 2 || o.sweepCount > 16)

@@ -60,7 +60,8 @@ PreviewEnvironment prepareEnvironment(harness::VulkanHarness& gpu, const ShaderL
 // Checked before any GPU work (each throws DiagnosticError with a one-line message):
 // size in 1..kMaxPreviewSize (E-PREVIEW-SIZE), light types (E-PREVIEW-LIGHT), the tonemap
 // brick (E-PREVIEW-TONEMAP), and the sweep parameter of each material (E-PREVIEW-SWEEP,
-// listing the material's sweepable parameters).
+// listing the material's sweepable parameters); a textured (glTF) material is refused
+// (E-PREVIEW-TEXTURED, at the material): its images are not bound yet.
 void checkPreviewOptions(const ShaderLibrary& lib, const std::vector<const MaterialDesc*>& materials,
                          const PreviewOptions& options);
 // The parameters `--sweep` accepts for `material`: its non-constant parameters.
