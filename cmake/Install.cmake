@@ -9,7 +9,7 @@ install(TARGETS matbricks RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The library at run time is its manifest, slot/model JSON and GLSL; the C++ references are
 # compiled into the program.
 install(DIRECTORY shaderlib/ DESTINATION ${CMAKE_INSTALL_DATADIR}/matbricks/shaderlib
-        FILES_MATCHING PATTERN "*.json" PATTERN "*.glsl")
+        FILES_MATCHING PATTERN "*.json" PATTERN "*.glsl" PATTERN "*.vert")
 install(DIRECTORY materials/ DESTINATION ${CMAKE_INSTALL_DATADIR}/matbricks/materials)
 install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
