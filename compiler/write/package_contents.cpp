@@ -47,8 +47,7 @@ void PackageStream::add(const Permutation& perm, const BuiltPermutation& built) 
   const std::string& hash = built.spirvHash;
   const bool fresh = written_.insert(hash).second;
   addStageFiles(
-      pkg_, built.artifacts, fresh, [&](const std::string& t) { return t + "/" + hash + targetExtension(t); },
-      p.files);
+      pkg_, built.artifacts, fresh, [&](const std::string& t) { return t + "/" + hash + targetExtension(t); }, p.files);
   // The fragment shader (docs/fragment-stage.md), deduplicated by its own hash.
   if (!built.fragmentHash.empty()) {
     const bool freshFragment = written_.insert("fragment/" + built.fragmentHash).second;
