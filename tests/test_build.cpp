@@ -150,7 +150,10 @@ TEST_CASE("a streamed build in small windows writes the same package as one wind
     INFO(rel);
     CHECK(test::readFile(e.path()) == test::readFile(test::rootOf(dir) / "three" / rel));
   }
-  CHECK(files == 3 + plan.required.size() + 3 * whole.uniqueSpirv);
+  // Each target's file per distinct kernel and per distinct fragment shader (docs/package.md).
+  std::set<std::string> fragments;
+  for (const auto& b : built) fragments.insert(b.fragmentHash);
+  CHECK(files == 3 + plan.required.size() + 3 * whole.uniqueSpirv + 3 * fragments.size());
 
   // A permutation repeated in a later window reuses its unit: not compiled again, and it
   // carries the unit's hash, instruction count and reflection but not its code.
@@ -168,4 +171,11 @@ TEST_CASE("a streamed build in small windows writes the same package as one wind
   CHECK(got[2].artifacts.reflection == got[0].artifacts.reflection);
   CHECK(got[2].artifacts.targets.size() == got[0].artifacts.targets.size());
   CHECK(got[2].compileMs == 0);
+  // The same for its fragment shader.
+  CHECK(got[2].artifacts.fragment.spirv.empty());
+  CHECK(!got[2].fragmentHash.empty());
+  CHECK(got[2].fragmentHash == got[0].fragmentHash);
+  CHECK(got[2].fragmentInstructions == got[0].fragmentInstructions);
+  CHECK(got[2].artifacts.fragment.reflection == got[0].artifacts.fragment.reflection);
+  CHECK(got[2].artifacts.fragment.targets.size() == got[0].artifacts.fragment.targets.size());
 }

@@ -83,14 +83,17 @@ TEST_CASE("compile writes a complete, deterministic package", "[cli][package]") 
   REQUIRE(b.exitCode == 0);
   auto manifest = nlohmann::json::parse(test::readFile(dir / "a/manifest.json"));
   REQUIRE(manifest["permutations"].size() == test::exampleMaterialFiles().size());
-  std::set<std::string> hashes;
+  std::set<std::string> hashes, fragments;
   for (const auto& p : manifest["permutations"]) {
     CHECK(fs::exists(dir / "a" / p["files"]["spirv"].get<std::string>()));
+    CHECK(fs::exists(dir / "a" / p["fragment"]["files"]["spirv"].get<std::string>()));
+    fragments.insert(p["fragment"]["spirv_hash_xxh64"].get<std::string>());
     CHECK(fs::exists(dir / "a" / p["include"].get<std::string>()));
     CHECK(p["spirv_instructions"].get<int>() > 0);
     hashes.insert(p["spirv_hash_xxh64"].get<std::string>());
   }
-  // docs/package.md: marker, manifest, header, one include per permutation, one SPIR-V per hash.
+  // docs/package.md: marker, manifest, header, one include per permutation, one SPIR-V per
+  // hash, one fragment SPIR-V per fragment hash.
   size_t files = 0;
   for (const auto& e : fs::recursive_directory_iterator(dir / "a")) {
     if (!e.is_regular_file()) continue;
@@ -100,7 +103,7 @@ TEST_CASE("compile writes a complete, deterministic package", "[cli][package]") 
     CHECK(test::readFile(e.path()) == test::readFile(dir / "b" / rel));
   }
   CHECK(fs::exists(dir / "a/matbricks_materials.hpp"));
-  CHECK(files == 3 + manifest["permutations"].size() + hashes.size());
+  CHECK(files == 3 + manifest["permutations"].size() + hashes.size() + fragments.size());
   fs::remove_all(dir);
 }
 

@@ -23,6 +23,7 @@
 
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
+#include "emit/fragment_shader.hpp"
 #include "write/package_writer.hpp"
 
 namespace mb {
@@ -37,6 +38,9 @@ struct CompileUnit {
   std::string mediumpGlsl;
   std::string mediumpDisplayName;
   std::string displayName;  // of the first permutation that emitted it
+  // The fragment shader (docs/fragment-stage.md) and, like the kernel's, its mediump form for
+  // essl310; empty when the build makes none (BuildOptions::fragment, Engine mode only).
+  std::string fragmentGlsl, fragmentDisplayName, fragmentMediumpGlsl, fragmentMediumpDisplayName;
   CompileOptions compile;
   std::string cacheKey;
   // Results, written by one worker only.
@@ -59,7 +63,8 @@ std::vector<std::string> crossTargets(const std::vector<std::string>& requested)
 
 // Everything that affects a unit's output (shader_cache.hpp).
 std::string unitKey(const ShaderLibrary& lib, const EmittedShader& shader, const CompileOptions& co,
-                    const std::vector<std::string>& targets, const std::string& mediumpGlsl = "") {
+                    const std::vector<std::string>& targets, const std::string& mediumpGlsl = "",
+                    const CompileUnit* fragment = nullptr) {
   std::vector<std::string> parts{ShaderCache::kFormatVersion,
                                  MB_VERSION,
                                  toolchainVersion(),
@@ -69,6 +74,11 @@ std::string unitKey(const ShaderLibrary& lib, const EmittedShader& shader, const
   for (const auto& t : crossTargets(targets)) parts.push_back(t + ": " + targetOptions(t));
   parts.push_back(shader.glsl);
   parts.push_back(mediumpGlsl);
+  if (fragment) {
+    parts.push_back("fragment");
+    parts.push_back(fragment->fragmentGlsl);
+    parts.push_back(fragment->fragmentMediumpGlsl);
+  }
   for (const auto& id : shader.bricks) {
     parts.push_back(id);
     if (const Brick* b = lib.findBrick(id)) {
@@ -112,6 +122,29 @@ void loadFromShards(CompileUnit& u, size_t index, const ShardSet& shards) {
   }
 }
 
+// One stage: glslang -> spirv-val -> spirv-opt, every target (essl310 from the mediump form
+// when there is one), reflection.
+StageArtifacts compileStage(const std::string& glsl, const std::string& displayName, const std::string& mediumpGlsl,
+                            const std::string& mediumpDisplayName, const CompileOptions& options,
+                            const std::vector<std::string>& targets) {
+  StageArtifacts a;
+  a.spirv = compileComputeGlsl(glsl, displayName, options).spirv;
+  for (const auto& t : targets) {
+    if (t == "essl310" && !mediumpGlsl.empty()) {
+      // RelaxedPrecision survives spirv-opt's passes, and no 16-bit constant is involved.
+      CompileOptions relaxed;
+      relaxed.stage = options.stage;
+      relaxed.pipeline = options.pipeline;
+      a.targets[t] =
+          crossCompile(compileComputeGlsl(mediumpGlsl, mediumpDisplayName, relaxed).spirv, t, mediumpDisplayName);
+    } else {
+      a.targets[t] = crossCompile(a.spirv, t, displayName);
+    }
+  }
+  a.reflection = reflectSpirv(a.spirv);
+  return a;
+}
+
 void buildUnit(CompileUnit& u, size_t index, const std::vector<std::string>& targets, const UnitSources& src) {
   try {
     if (src.shards) return loadFromShards(u, index, *src.shards);
@@ -130,19 +163,14 @@ void buildUnit(CompileUnit& u, size_t index, const std::vector<std::string>& tar
     }
     auto t0 = Clock::now();
     CompiledArtifacts a;
-    a.spirv = compileComputeGlsl(u.glsl, u.displayName, u.compile).spirv;
-    for (const auto& t : targets) {
-      if (t == "essl310" && !u.mediumpGlsl.empty()) {
-        // RelaxedPrecision survives spirv-opt's passes, and no 16-bit constant is involved.
-        CompileOptions relaxed;
-        relaxed.pipeline = u.compile.pipeline;
-        a.targets[t] = crossCompile(compileComputeGlsl(u.mediumpGlsl, u.mediumpDisplayName, relaxed).spirv, t,
-                                    u.mediumpDisplayName);
-      } else {
-        a.targets[t] = crossCompile(a.spirv, t, u.displayName);
-      }
+    static_cast<StageArtifacts&>(a) =
+        compileStage(u.glsl, u.displayName, u.mediumpGlsl, u.mediumpDisplayName, u.compile, targets);
+    if (!u.fragmentGlsl.empty()) {
+      CompileOptions fragment = u.compile;
+      fragment.stage = ShaderStage::Fragment;
+      a.fragment = compileStage(u.fragmentGlsl, u.fragmentDisplayName, u.fragmentMediumpGlsl,
+                                u.fragmentMediumpDisplayName, fragment, targets);
     }
-    a.reflection = reflectSpirv(a.spirv);
     u.compileMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     cache.store(u.cacheKey, a);
     if (src.remote) u.uploaded = src.remote->put(u.cacheKey, a);
@@ -181,15 +209,19 @@ namespace {
 // What later windows need of a unit built in an earlier one (a permutation whose emitted GLSL
 // an earlier permutation already had): everything the package and manifest read, without the
 // code itself, whose files the unit's first permutation already wrote.
+struct StageSummary {
+  std::string spirvHash;  // "" when the stage was not built
+  size_t instructions = 0;
+  std::shared_ptr<const nlohmann::json> reflection;  // interned: few distinct ones
+  std::vector<std::string> targets;                  // names of the non-spirv targets built
+};
+
 struct UnitSummary {
   size_t index = 0;  // in first-occurrence order: shards deal these out
   bool owned = true;
   bool reported = false;  // its compile time was reported on its first permutation
   ShaderCache::Lookup lookup = ShaderCache::Lookup::Miss;
-  std::string spirvHash;
-  size_t instructions = 0;
-  std::shared_ptr<const nlohmann::json> reflection;  // interned: few distinct ones
-  std::vector<std::string> targets;                  // names of the non-spirv targets built
+  StageSummary kernel, fragment;
 };
 
 // One window of permutations: emitted on the calling thread, its new units compiled by the
@@ -245,12 +277,16 @@ class StreamingBuild {
           b.artifacts = fresh[slot->second].artifacts;
           b.compileMs = unit.reported || unit.lookup == ShaderCache::Lookup::Hit ? 0 : fresh[slot->second].compileMs;
         } else {
-          b.artifacts.reflection = *unit.reflection;
-          for (const auto& t : unit.targets) b.artifacts.targets[t];
+          b.artifacts.reflection = *unit.kernel.reflection;
+          for (const auto& t : unit.kernel.targets) b.artifacts.targets[t];
+          if (unit.fragment.reflection) b.artifacts.fragment.reflection = *unit.fragment.reflection;
+          for (const auto& t : unit.fragment.targets) b.artifacts.fragment.targets[t];
         }
         unit.reported = true;
-        b.spirvHash = unit.spirvHash;
-        b.spirvInstructions = unit.instructions;
+        b.spirvHash = unit.kernel.spirvHash;
+        b.spirvInstructions = unit.kernel.instructions;
+        b.fragmentHash = unit.fragment.spirvHash;
+        b.fragmentInstructions = unit.fragment.instructions;
         b.fromCache = unit.lookup == ShaderCache::Lookup::Hit;
         hashes_.insert(b.spirvHash);
       }
@@ -282,17 +318,40 @@ class StreamingBuild {
     u.compile.pipeline = options_.pipeline;
     u.glsl = shader.glsl;
     u.displayName = shader.fileName;
-    if (perm.precision == "fp16" && std::find(targets_.begin(), targets_.end(), "essl310") != targets_.end()) {
-      try {
+    const bool fragment = options_.fragment && options_.mode == EmitMode::Engine;
+    try {
+      // The fragment shader (docs/fragment-stage.md) comes from the kernel's emitted text.
+      if (fragment) setFragment(u, fragmentShaderOf(lib_, perm, shader, false), false);
+      if (perm.precision == "fp16" && std::find(targets_.begin(), targets_.end(), "essl310") != targets_.end()) {
         EmittedShader relaxed = emitPermutation(lib_, perm, false, options_.mode, true);
-        u.mediumpGlsl = relaxed.glsl;
+        if (fragment) setFragment(u, fragmentShaderOf(lib_, perm, relaxed, true), true);
+        u.mediumpGlsl = std::move(relaxed.glsl);
         u.mediumpDisplayName = relaxed.fileName;
-      } catch (const DiagnosticError& e) {
-        errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
       }
+    } catch (const DiagnosticError& e) {
+      errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
     }
-    u.cacheKey = unitKey(lib_, shader, u.compile, targets_, u.mediumpGlsl);
+    u.cacheKey = unitKey(lib_, shader, u.compile, targets_, u.mediumpGlsl, fragment ? &u : nullptr);
     return u;
+  }
+
+  static void setFragment(CompileUnit& u, EmittedShader fragment, bool mediump) {
+    (mediump ? u.fragmentMediumpGlsl : u.fragmentGlsl) = std::move(fragment.glsl);
+    (mediump ? u.fragmentMediumpDisplayName : u.fragmentDisplayName) = fragment.fileName;
+  }
+
+  // What later windows need of one stage of a unit.
+  StageSummary summarizeStage(const StageArtifacts& a) {
+    StageSummary s;
+    if (a.spirv.empty()) return s;
+    s.spirvHash = contentHash(a.spirv.data(), a.spirv.size() * sizeof(uint32_t));
+    s.instructions = spirvInstructionCount(a.spirv);
+    const std::string text = a.reflection.dump();
+    auto [it, isNew] = reflections_.try_emplace(text);
+    if (isNew) it->second = std::make_shared<const nlohmann::json>(a.reflection);
+    s.reflection = it->second;
+    for (const auto& [t, code] : a.targets) s.targets.push_back(t);
+    return s;
   }
 
   void summarize(UnitSummary& summary, const CompileUnit& u) {
@@ -300,13 +359,8 @@ class StreamingBuild {
     errors_.insert(errors_.end(), u.errors.begin(), u.errors.end());
     if (!u.owned || u.failure || !u.errors.empty()) return;
     summary.lookup = u.lookup;
-    summary.spirvHash = contentHash(u.artifacts.spirv.data(), u.artifacts.spirv.size() * sizeof(uint32_t));
-    summary.instructions = spirvInstructionCount(u.artifacts.spirv);
-    const std::string text = u.artifacts.reflection.dump();
-    auto [it, isNew] = reflections_.try_emplace(text);
-    if (isNew) it->second = std::make_shared<const nlohmann::json>(u.artifacts.reflection);
-    summary.reflection = it->second;
-    for (const auto& [t, text] : u.artifacts.targets) summary.targets.push_back(t);
+    summary.kernel = summarizeStage(u.artifacts);
+    summary.fragment = summarizeStage(u.artifacts.fragment);
     ++stats_.shardUnits;
     stats_.compiled += u.lookup != ShaderCache::Lookup::Hit;
     stats_.cacheHits += u.lookup == ShaderCache::Lookup::Hit;

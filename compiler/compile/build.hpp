@@ -22,6 +22,9 @@ struct BuildOptions {
   std::vector<std::string> targets{"spirv"};  // subset of allTargets(); spirv always built
   std::filesystem::path cacheDir;             // empty: no cache
   EmitMode mode = EmitMode::Engine;           // what the package ships (emit/emitter.hpp)
+  // Engine mode: every compile unit also builds the permutation's fragment shader
+  // (emit/fragment_shader.hpp) to the same targets, cached with the kernel in one entry.
+  bool fragment = true;
   // Same outputs either way (glsl_compiler.hpp); Legacy only for the benchmark's comparison.
   CompilePipeline pipeline = CompilePipeline::Lean;
   RemoteCache* remote = nullptr;  // behind the local cache (remote_cache.hpp); null: none
@@ -40,6 +43,9 @@ struct BuiltPermutation {
   CompiledArtifacts artifacts;
   std::string spirvHash;  // contentHash() of the SPIR-V words (16 hex digits)
   size_t spirvInstructions = 0;
+  // The fragment shader's, "" and 0 when none was built (its code: artifacts.fragment).
+  std::string fragmentHash;
+  size_t fragmentInstructions = 0;
   std::string cacheKey;  // of its compile unit
   bool inShard = true;   // false: another shard builds it (artifacts empty, nothing to write)
   bool fromCache = false;

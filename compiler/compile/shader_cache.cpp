@@ -3,8 +3,10 @@
 // Entry file: a 32-byte header, then the payload.
 //   header   "MBCACHE1" (8 bytes), XXH3-64 of kFormatVersion (u64), payload size (u64),
 //            XXH3-64 of the payload (u64)
-//   payload  u64 SPIR-V word count, the words; u64 target count, then per target u64 name
-//            length, name, u64 text length, text; u64 reflection length, reflection JSON text
+//   payload  the kernel, then the fragment shader (docs/fragment-stage.md; no words and a
+//            null reflection when it was not built), each as: u64 SPIR-V word count, the
+//            words; u64 target count, then per target u64 name length, name, u64 text length,
+//            text; u64 reflection length, reflection JSON text
 // Integers are little-endian as the host writes them: the cache is per machine.
 #include "compile/shader_cache.hpp"
 
@@ -63,18 +65,43 @@ class Reader {
   size_t pos_;
 };
 
+// One module: u64 SPIR-V word count, the words; u64 target count, then per target the name
+// and the text; the reflection JSON text.
+void putModule(std::string& out, const std::vector<uint32_t>& spirv, const std::map<std::string, std::string>& targets,
+               const nlohmann::json& reflection) {
+  putU64(out, spirv.size());
+  out.append(reinterpret_cast<const char*>(spirv.data()), spirv.size() * sizeof(uint32_t));
+  putU64(out, targets.size());
+  for (const auto& [name, text] : targets) {
+    putBytes(out, name);
+    putBytes(out, text);
+  }
+  putBytes(out, reflection.dump());
+}
+
+bool readModule(Reader& r, uint64_t size, std::vector<uint32_t>& spirv, std::map<std::string, std::string>& targets,
+                nlohmann::json& reflection) {
+  uint64_t words = 0, count = 0;
+  if (!r.u64(words) || words > size / sizeof(uint32_t)) return false;
+  spirv.resize(words);
+  if (!r.raw(spirv.data(), words * sizeof(uint32_t)) || !r.u64(count)) return false;
+  for (uint64_t i = 0; i < count; ++i) {
+    std::string name, text;
+    if (!r.str(name) || !r.str(text)) return false;
+    targets[name] = std::move(text);
+  }
+  std::string json;
+  if (!r.str(json)) return false;
+  reflection = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
+  return !reflection.is_discarded();
+}
+
 }  // namespace
 
 std::string encodeCacheEntry(const CompiledArtifacts& a) {
   std::string payload;
-  putU64(payload, a.spirv.size());
-  payload.append(reinterpret_cast<const char*>(a.spirv.data()), a.spirv.size() * sizeof(uint32_t));
-  putU64(payload, a.targets.size());
-  for (const auto& [name, text] : a.targets) {
-    putBytes(payload, name);
-    putBytes(payload, text);
-  }
-  putBytes(payload, a.reflection.dump());
+  putModule(payload, a.spirv, a.targets, a.reflection);
+  putModule(payload, a.fragment.spirv, a.fragment.targets, a.fragment.reflection);
   std::string file(kMagic, sizeof kMagic);
   putU64(file, formatTag());
   putU64(file, payload.size());
@@ -93,19 +120,9 @@ bool decodeCacheEntry(const std::string& file, CompiledArtifacts& out) {
   if (XXH3_64bits(file.data() + kHeaderSize, size) != hash) return false;
   Reader r(file, kHeaderSize);
   CompiledArtifacts a;
-  uint64_t words = 0, targets = 0;
-  if (!r.u64(words) || words > size / sizeof(uint32_t)) return false;
-  a.spirv.resize(words);
-  if (!r.raw(a.spirv.data(), words * sizeof(uint32_t)) || !r.u64(targets)) return false;
-  for (uint64_t i = 0; i < targets; ++i) {
-    std::string name, text;
-    if (!r.str(name) || !r.str(text)) return false;
-    a.targets[name] = std::move(text);
-  }
-  std::string reflection;
-  if (!r.str(reflection) || !r.atEnd()) return false;
-  a.reflection = nlohmann::json::parse(reflection, nullptr, /*allow_exceptions=*/false);
-  if (a.reflection.is_discarded()) return false;
+  if (!readModule(r, size, a.spirv, a.targets, a.reflection) ||
+      !readModule(r, size, a.fragment.spirv, a.fragment.targets, a.fragment.reflection) || !r.atEnd())
+    return false;
   out = std::move(a);
   return true;
 }

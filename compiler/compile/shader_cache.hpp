@@ -19,11 +19,17 @@
 
 namespace mb {
 
-// Everything one permutation compiles to.
-struct CompiledArtifacts {
+// One compiled shader stage.
+struct StageArtifacts {
   std::vector<uint32_t> spirv;
   std::map<std::string, std::string> targets;  // target -> text, for every non-spirv target
   nlohmann::json reflection;                   // reflectSpirv(spirv)
+};
+
+// Everything one permutation compiles to: the kernel (this object's own StageArtifacts) and
+// its fragment shader (docs/fragment-stage.md; empty when the build made none).
+struct CompiledArtifacts : StageArtifacts {
+  StageArtifacts fragment;
 };
 
 // The bytes of one cache entry (format in shader_cache.cpp), as stored on disk, in a shard
@@ -43,7 +49,7 @@ class ShaderCache {
   bool enabled() const { return !dir_.empty(); }
   const std::filesystem::path& dir() const { return dir_; }
   // Version of the entry format and of the key's recipe; part of every key (build.cpp).
-  static constexpr const char* kFormatVersion = "matbricks-cache-1";
+  static constexpr const char* kFormatVersion = "matbricks-cache-2";  // 2: + the fragment shader
   // 32 hex digits (XXH3-128) over the given parts, each length-prefixed.
   static std::string key(const std::vector<std::string>& parts);
 

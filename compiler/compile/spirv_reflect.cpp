@@ -164,9 +164,11 @@ nlohmann::json reflectSpirv(const std::vector<uint32_t>& spirv) {
   size_t entryCount = 0;
   spvc_compiler_get_entry_points(c, &entries, &entryCount);
   j["entry_point"] = entryCount ? entries[0].name : "";
-  j["workgroup_size"] = {spvc_compiler_get_execution_mode_argument_by_index(c, SpvExecutionModeLocalSize, 0),
-                         spvc_compiler_get_execution_mode_argument_by_index(c, SpvExecutionModeLocalSize, 1),
-                         spvc_compiler_get_execution_mode_argument_by_index(c, SpvExecutionModeLocalSize, 2)};
+  const bool compute = !entryCount || entries[0].execution_model == SpvExecutionModelGLCompute;
+  if (compute)
+    j["workgroup_size"] = {spvc_compiler_get_execution_mode_argument_by_index(c, SpvExecutionModeLocalSize, 0),
+                           spvc_compiler_get_execution_mode_argument_by_index(c, SpvExecutionModeLocalSize, 1),
+                           spvc_compiler_get_execution_mode_argument_by_index(c, SpvExecutionModeLocalSize, 2)};
   nlohmann::json storage = nlohmann::json::array(), uniform = nlohmann::json::array(), push = nlohmann::json::array();
   for (const auto& r : m.resources(SPVC_RESOURCE_TYPE_STORAGE_BUFFER)) {
     nlohmann::json b = blockJson(m, r, true);
@@ -190,7 +192,7 @@ nlohmann::json reflectSpirv(const std::vector<uint32_t>& spirv) {
   j["push_constants"] = std::move(push);
   // A graphics stage's interface. Compute modules (the kernels) have none of these, and their
   // reflection stays as it was before the fragment stage.
-  if (entryCount && entries[0].execution_model != SpvExecutionModelGLCompute) {
+  if (!compute) {
     j["stage"] = entries[0].execution_model == SpvExecutionModelFragment ? "fragment" : "other";
     j["stage_inputs"] = locatedJson(m, SPVC_RESOURCE_TYPE_STAGE_INPUT);
     j["stage_outputs"] = locatedJson(m, SPVC_RESOURCE_TYPE_STAGE_OUTPUT);

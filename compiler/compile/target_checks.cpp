@@ -97,7 +97,7 @@ std::string checkMsl(const std::string& source, const SpvcModule& module) {
   for (const auto& r : module.resources(SPVC_RESOURCE_TYPE_SAMPLED_IMAGE)) {
     const unsigned texture = spvc_compiler_msl_get_automatic_resource_binding(c, r.id);
     const unsigned sampler = spvc_compiler_msl_get_automatic_resource_binding_secondary(c, r.id);
-    for (const std::string attr :
+    for (const std::string& attr :
          {"[[texture(" + std::to_string(texture) + ")]]", "[[sampler(" + std::to_string(sampler) + ")]]"})
       if (texture == ~0u || sampler == ~0u || source.find(attr) == std::string::npos)
         return std::string("MSL: sampler '") + spvc_compiler_get_name(c, r.id) + "' has no " + attr + " argument";

@@ -62,6 +62,12 @@ std::string targetExtension(const std::string& target) {
   return ".metal";
 }
 
+std::string fragmentExtension(const std::string& target) {
+  if (target == "glsl450") return ".frag";
+  if (target == "essl310") return ".es.frag";
+  return targetExtension(target);
+}
+
 std::string crossCompile(const std::vector<uint32_t>& spirv, const std::string& target,
                          const std::string& displayName) {
   if (target == "spirv" || std::find(allTargets().begin(), allTargets().end(), target) == allTargets().end())

@@ -21,13 +21,18 @@ namespace mb {
 const std::vector<std::string>& allTargets();
 // File extension of a target's output in the package: ".spv", ".comp", ".es.comp", ".hlsl", ".metal".
 std::string targetExtension(const std::string& target);
+// The same for a fragment shader: ".spv", ".frag", ".es.frag", ".hlsl", ".metal".
+std::string fragmentExtension(const std::string& target);
 
 // SPIRV-Cross's view of a module, as the package manifest stores it (docs/package.md):
 //   {"entry_point": "main", "workgroup_size": [64,1,1],
 //    "storage_buffers": [{"name","set","binding","readonly","writeonly","size","members":[...]}],
 //    "uniform_buffers": [{"name","set","binding","size","members":[{"name","type","offset","size"}]}],
 //    "push_constants": [{"name","size","members":[...]}]}
-// member "type" is the GLSL type name ("float", "vec3", "uint", "float[]").
+// member "type" is the GLSL type name ("float", "vec3", "uint", "float[]"). A module that is
+// not a compute shader also has "stage" ("fragment"), "stage_inputs" and "stage_outputs"
+// ([{"name","location","type"}] by location) and "sampled_images"
+// ([{"name","set","binding","type"}], type "sampler2D" / "samplerCube").
 nlohmann::json reflectSpirv(const std::vector<uint32_t>& spirv);
 
 // Cross-compiles one module to `target` (not "spirv") and checks the result as above.

@@ -130,11 +130,14 @@ harness::GraphicsJob sphereJob(const PreviewOptions& o, const MaterialDesc& m, c
   job.width = o.size * static_cast<uint32_t>(spheres.size());
   job.height = o.size;
   job.mesh = uvSphere();
+  // engine_vertex.vert's push constants: model (object -> world), then viewProjection. Every
+  // sphere sits at the origin with radius 1, so the model matrix is the identity, which the
+  // shader applies exactly (its normal matrix, the inverse transpose, is the identity too).
   const auto vp = viewProjection();
-  std::vector<uint8_t> push(80);
-  std::memcpy(push.data(), vp.data(), 64);
-  const float model[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // every sphere at the origin, radius 1
-  std::memcpy(push.data() + 64, model, 16);
+  std::vector<uint8_t> push(128);
+  const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  std::memcpy(push.data(), identity, 64);
+  std::memcpy(push.data() + 64, vp.data(), 64);
   const bool ibl = environmentMode == "ibl_lut" || environmentMode == "ibl_analytic";
   const std::vector<uint8_t> frame = frameBlockBytes(lights, environmentMode == "none" ? nullptr : &env.maps);
   for (size_t s = 0; s < spheres.size(); ++s) {

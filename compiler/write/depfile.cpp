@@ -52,6 +52,8 @@ std::vector<std::string> compileInputs(const ShaderLibrary& lib, const std::vect
   for (const auto& e : extra)
     if (!e.empty()) files.insert(absolutePath(e));
   files.insert(absolutePath(lib.root() / "manifest.json"));
+  // Every permutation's fragment shader includes the frame block (emit/fragment_shader.cpp).
+  files.insert(absolutePath(lib.root() / "common" / "engine_frame.glsl"));
   // ShaderLibrary::load reads every slot's slot.json.
   for (const auto& entry : fs::directory_iterator(lib.root()))
     if (entry.is_directory() && fs::exists(entry.path() / "slot.json"))

@@ -52,6 +52,7 @@ nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutatio
   for (const auto& [role, id] : boundRoles(*in.lib, perm)) entry["bricks"][role] = id;
   for (const auto& prm : m.params) entry["parameters"].push_back(paramJson(prm));
   if (!m.engineData.empty()) entry["engine"] = nlohmann::json::parse(m.engineData);
+  if (!p.fragmentFiles.empty()) entry["fragment"] = fragmentEntryJson(p);
   return entry;
 }
 
@@ -102,6 +103,7 @@ void ManifestWriter::write(std::ostream& out) const {
                             {"results", {{"set", 0}, {"binding", 1}}},
                             {"material_params", {{"set", 0}, {"binding", 2}, {"layout", "std140"}}},
                             {"push_constant", "uint count"}}},
+                          {"fragment", fragmentInterfaceJson()},
                           {"permutations", placeholder}};
   if (!in_.sceneFile.empty()) {
     manifest["scene"] = {{"file", in_.sceneFile},

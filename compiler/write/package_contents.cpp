@@ -10,6 +10,30 @@
 #include "write/package_parts.hpp"
 
 namespace mb {
+namespace {
+
+// One stage's files, one per target it was built for, at pathOf(target); written only when
+// `fresh` (identical SPIR-V gives identical cross-compiled text: one file serves every
+// permutation, and the first permutation of a hash always carries its code, build.hpp
+// BuiltSink).
+template <typename PathOf>
+void addStageFiles(PackageWriter& pkg, const StageArtifacts& a, bool fresh, PathOf pathOf,
+                   std::map<std::string, std::string>& files) {
+  for (const auto& target : allTargets()) {
+    const bool isSpirv = target == "spirv";
+    auto text = a.targets.find(target);
+    if (!isSpirv && text == a.targets.end()) continue;
+    const std::string path = pathOf(target);
+    files[target] = path;
+    if (!fresh) continue;
+    if (isSpirv)
+      pkg.addFile(path, a.spirv);
+    else
+      pkg.addFile(path, text->second);
+  }
+}
+
+}  // namespace
 
 PackageStream::PackageStream(PackageWriter& pkg, const PackageInputs& in)
     : pkg_(pkg), in_(in), manifest_(new ManifestWriter(in)), header_(new HeaderWriter(in)) {}
@@ -22,19 +46,14 @@ void PackageStream::add(const Permutation& perm, const BuiltPermutation& built) 
   p.built = &built;
   const std::string& hash = built.spirvHash;
   const bool fresh = written_.insert(hash).second;
-  for (const auto& target : allTargets()) {
-    const bool isSpirv = target == "spirv";
-    auto text = built.artifacts.targets.find(target);
-    if (!isSpirv && text == built.artifacts.targets.end()) continue;
-    std::string path = target + "/" + hash + targetExtension(target);
-    p.files[target] = path;
-    // Identical SPIR-V gives identical cross-compiled text: one file serves every permutation.
-    // The first permutation of a hash always carries its code (build.hpp BuiltSink).
-    if (!fresh) continue;
-    if (isSpirv)
-      pkg_.addFile(path, built.artifacts.spirv);
-    else
-      pkg_.addFile(path, text->second);
+  addStageFiles(
+      pkg_, built.artifacts, fresh, [&](const std::string& t) { return t + "/" + hash + targetExtension(t); }, p.files);
+  // The fragment shader (docs/fragment-stage.md), deduplicated by its own hash.
+  if (!built.fragmentHash.empty()) {
+    const bool freshFragment = written_.insert("fragment/" + built.fragmentHash).second;
+    addStageFiles(
+        pkg_, built.artifacts.fragment, freshFragment,
+        [&](const std::string& t) { return fragmentPath(t, built.fragmentHash); }, p.fragmentFiles);
   }
   p.include = "include/" + built.shader.key + ".glsl";
   pkg_.addFile(p.include, engineInclude(p));

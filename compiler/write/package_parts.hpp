@@ -22,7 +22,22 @@ struct PackagedPermutation {
   const BuiltPermutation* built = nullptr;
   std::map<std::string, std::string> files;  // target -> path in the package ("spirv/<hash>.spv")
   std::string include;                       // "include/<key>.glsl"
+  // target -> path of the fragment shader ("fragment/spirv/<hash>.spv"); empty: none built
+  std::map<std::string, std::string> fragmentFiles;
 };
+
+// The fragment stage's parts (fragment_parts.cpp, docs/fragment-stage.md):
+// its file in the package, "fragment/<target>/<hash><fragmentExtension>";
+std::string fragmentPath(const std::string& target, const std::string& hash);
+// the manifest's per-permutation "fragment" object and top-level "fragment" interface;
+nlohmann::json fragmentEntryJson(const PackagedPermutation& p);
+nlohmann::json fragmentInterfaceJson();
+// the frame block (set 0, binding 1) in a fragment module's reflection, or null;
+const nlohmann::json* fragmentFrameBlock(const nlohmann::json& reflection);
+// the header's binding constants and light records, and, given the reflected frame block,
+// MbFrameBlock with static_asserts on its offsets and size (E-INTERNAL naming `key` if the
+// block is not engine_frame.glsl's).
+std::string frameBlockHeader(const nlohmann::json* reflected, const std::string& key);
 
 // The emitted GLSL up to the probe, as a self-contained include: no #version, #extension or
 // #line (each #line becomes a "// from <file>:<line>" comment), an include guard and a header
@@ -62,6 +77,7 @@ class HeaderWriter {
   const PackageInputs& in_;
   std::map<std::string, std::string> byLayout_;  // members + asserts -> struct name
   std::map<std::string, std::string> declared_;  // struct name -> layout, to detect clashes
+  std::string frame_, frameKey_;                 // the first fragment shader's MbFrameBlock, its key
   std::string structs_;
   size_t count_ = 0;
   SpillFile inputs_, rows_;

@@ -52,6 +52,10 @@ inline void requireIdentical(const std::vector<BuiltPermutation>& a, const std::
     CHECK(a[i].artifacts.targets == b[i].artifacts.targets);
     CHECK(a[i].artifacts.reflection.dump() == b[i].artifacts.reflection.dump());
     CHECK(a[i].spirvHash == b[i].spirvHash);
+    CHECK(a[i].artifacts.fragment.spirv == b[i].artifacts.fragment.spirv);
+    CHECK(a[i].artifacts.fragment.targets == b[i].artifacts.fragment.targets);
+    CHECK(a[i].artifacts.fragment.reflection.dump() == b[i].artifacts.fragment.reflection.dump());
+    CHECK(a[i].fragmentHash == b[i].fragmentHash);
   }
 }
 
