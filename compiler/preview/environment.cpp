@@ -113,12 +113,16 @@ void checkArguments(const std::string& name, uint32_t baseSize) {
   std::string list;
   for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
   if (std::find(names.begin(), names.end(), name) == names.end()) {
-    throw DiagnosticError({{Severity::Error, "E-UNKNOWN-ENVIRONMENT", {"<command line>", 0, 0},
+    throw DiagnosticError({{Severity::Error,
+                            "E-UNKNOWN-ENVIRONMENT",
+                            {"<command line>", 0, 0},
                             "unknown environment '" + name + "'; the environments are: " + list,
                             didYouMean(name, names)}});
   }
   if (baseSize == 0 || baseSize > kMaxBaseSize || (baseSize & (baseSize - 1)) != 0) {
-    throw DiagnosticError({{Severity::Error, "E-ENVIRONMENT-SIZE", {"<command line>", 0, 0},
+    throw DiagnosticError({{Severity::Error,
+                            "E-ENVIRONMENT-SIZE",
+                            {"<command line>", 0, 0},
                             "environment size " + std::to_string(baseSize) + " is not a power of two in 1.." +
                                 std::to_string(kMaxBaseSize),
                             ""}});
