@@ -8,14 +8,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <numbers>
 #include <random>
+#include <unistd.h>
 
 #include "compile/glsl_compiler.hpp"
 #include "core/diagnostics.hpp"
 #include "lut/dfg_lut.hpp"
 #include "preview/environment.hpp"
+#include "preview/environment_cache.hpp"
 #include "preview/environment_cube.hpp"
 #include "preview/environment_prefilter.hpp"
 #include "preview/environment_radiance.hpp"
@@ -317,4 +321,33 @@ TEST_CASE("the DFG LUT texture returns the table's texels at their centres", "[e
     for (uint32_t i = 0; i < 8; ++i)
       for (uint32_t c = 0; c < 3; ++c)
         CHECK(run.outputs[(j * 8 + i) * 3 + c] == Approx(table.at(i, j, c)).margin(1e-6));
+}
+
+TEST_CASE("built environments are cached on disk, and a corrupt entry is rebuilt", "[environment][vulkan]") {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("mb-env-cache-test-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  bool fromCache = true;
+  const std::vector<CubeLevel> built = prefilteredLevels("sky", testGpu(), 8, dir, &fromCache);
+  CHECK_FALSE(fromCache);
+  const std::filesystem::path entry = environmentCacheEntry("sky", testGpu(), 8, dir);
+  REQUIRE(std::filesystem::exists(entry));
+  auto same = [&](const std::vector<CubeLevel>& levels) {
+    REQUIRE(levels.size() == built.size());
+    for (size_t i = 0; i < levels.size(); ++i) CHECK(levels[i].rgba == built[i].rgba);
+  };
+  same(prefilteredLevels("sky", testGpu(), 8, dir, &fromCache));
+  CHECK(fromCache);
+  // One flipped byte in the payload: the hash no longer matches, so the entry is rebuilt.
+  {
+    std::fstream f(entry, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(-5, std::ios::end);
+    f.put('\x7f');
+  }
+  same(prefilteredLevels("sky", testGpu(), 8, dir, &fromCache));
+  CHECK_FALSE(fromCache);
+  same(prefilteredLevels("sky", testGpu(), 8, dir, &fromCache));
+  CHECK(fromCache);
+  REQUIRE(testGpu().validationMessages().empty());
+  std::filesystem::remove_all(dir);
 }
