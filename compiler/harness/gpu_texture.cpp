@@ -19,7 +19,8 @@ constexpr uint32_t kTexelBytes = 16;
 // Device-local where the device has it (a discrete GPU), else any type the image allows
 // (lavapipe's one heap is both).
 uint32_t imageMemoryType(const DeviceContext& ctx, uint32_t allowedTypes) {
-  for (VkMemoryPropertyFlags wanted : {VkMemoryPropertyFlags{VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT}, VkMemoryPropertyFlags{0}}) {
+  for (VkMemoryPropertyFlags wanted :
+       {VkMemoryPropertyFlags{VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT}, VkMemoryPropertyFlags{0}}) {
     for (uint32_t i = 0; i < ctx.memory.memoryTypeCount; ++i)
       if ((allowedTypes & (1u << i)) && (ctx.memory.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
   }
@@ -36,8 +37,7 @@ void checkLevels(bool cube, const std::vector<TextureLevel>& levels) {
     if (!sizeOk || l.rgba.size() != size_t{layers} * w * h * 4) {
       throw HarnessError("uploadTexture: level " + std::to_string(i) + " is " + std::to_string(l.width) + "x" +
                          std::to_string(l.height) + " with " + std::to_string(l.rgba.size()) + " floats, expected " +
-                         std::to_string(w) + "x" + std::to_string(h) + " x " + std::to_string(layers) +
-                         " layers x 4");
+                         std::to_string(w) + "x" + std::to_string(h) + " x " + std::to_string(layers) + " layers x 4");
     }
   }
 }

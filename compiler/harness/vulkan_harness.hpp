@@ -92,8 +92,8 @@ class VulkanHarness {
                 uint64_t count);
   // The same for a kernel created with sampled textures: textures[k] is bound at binding 2 + k
   // (exactly as many as the kernel declares).
-  RunResult run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
-                uint64_t count, const std::vector<const GpuTexture*>& textures);
+  RunResult run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride, uint64_t count,
+                const std::vector<const GpuTexture*>& textures);
 
   // The instance and device (vulkan_internal.hpp), for the harness's parts beside the compute
   // path: textures (gpu_texture.hpp) and graphics pipelines on the same device and queue.

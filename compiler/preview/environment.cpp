@@ -19,6 +19,7 @@
 #include "core/diagnostics.hpp"
 #include "harness/vulkan_harness.hpp"
 #include "library/shader_library.hpp"
+#include "preview/environment_cache.hpp"
 #include "preview/environment_prefilter.hpp"
 #include "preview/environment_sh.hpp"
 #include "write/package_writer.hpp"
@@ -82,23 +83,31 @@ bool decodeLevels(const std::string& entry, uint32_t baseSize, std::vector<CubeL
   return true;
 }
 
-fs::path entryPath(const std::string& key) {
-  const fs::path dir = ShaderCache::defaultDir();
-  return dir.empty() ? fs::path() : dir / "environments" / (key + ".mbenv");
-}
+}  // namespace
 
-std::vector<CubeLevel> loadOrBuild(const std::string& name, harness::VulkanHarness& gpu, uint32_t baseSize) {
+fs::path environmentCacheEntry(const std::string& name, harness::VulkanHarness& gpu, uint32_t baseSize,
+                               const fs::path& cacheDir) {
+  if (cacheDir.empty()) return {};
   const std::string glsl = prefilterKernelGlsl(shippedLibrary(), name, kPrefilterSamples);
   const std::string key = ShaderCache::key({kEntryMagic, glsl, std::to_string(baseSize),
                                             std::to_string(kPrefilterSamples), toolchainVersion(), gpu.deviceName()});
-  const fs::path path = entryPath(key);
+  return cacheDir / "environments" / (key + ".mbenv");
+}
+
+std::vector<CubeLevel> prefilteredLevels(const std::string& name, harness::VulkanHarness& gpu, uint32_t baseSize,
+                                         const fs::path& cacheDir, bool* fromCache) {
+  const fs::path path = environmentCacheEntry(name, gpu, baseSize, cacheDir);
   std::vector<CubeLevel> levels;
+  if (fromCache) *fromCache = false;
   if (!path.empty()) {
     std::ifstream in(path, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in && decodeLevels(bytes, baseSize, levels)) return levels;
+    if (in && decodeLevels(bytes, baseSize, levels)) {
+      if (fromCache) *fromCache = true;
+      return levels;
+    }
   }
-  levels = prefilterOnGpu(gpu, glsl, name, baseSize);
+  levels = prefilterOnGpu(gpu, prefilterKernelGlsl(shippedLibrary(), name, kPrefilterSamples), name, baseSize);
   if (!path.empty()) {
     std::error_code ec;
     fs::create_directories(path.parent_path(), ec);
@@ -108,17 +117,23 @@ std::vector<CubeLevel> loadOrBuild(const std::string& name, harness::VulkanHarne
   return levels;
 }
 
+namespace {
+
 void checkArguments(const std::string& name, uint32_t baseSize) {
   const std::vector<std::string> names = environmentNames();
   std::string list;
   for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
   if (std::find(names.begin(), names.end(), name) == names.end()) {
-    throw DiagnosticError({{Severity::Error, "E-UNKNOWN-ENVIRONMENT", {"<command line>", 0, 0},
+    throw DiagnosticError({{Severity::Error,
+                            "E-UNKNOWN-ENVIRONMENT",
+                            {"<command line>", 0, 0},
                             "unknown environment '" + name + "'; the environments are: " + list,
                             didYouMean(name, names)}});
   }
   if (baseSize == 0 || baseSize > kMaxBaseSize || (baseSize & (baseSize - 1)) != 0) {
-    throw DiagnosticError({{Severity::Error, "E-ENVIRONMENT-SIZE", {"<command line>", 0, 0},
+    throw DiagnosticError({{Severity::Error,
+                            "E-ENVIRONMENT-SIZE",
+                            {"<command line>", 0, 0},
                             "environment size " + std::to_string(baseSize) + " is not a power of two in 1.." +
                                 std::to_string(kMaxBaseSize),
                             ""}});
@@ -139,7 +154,7 @@ EnvironmentMaps buildEnvironment(const std::string& name, harness::VulkanHarness
   EnvironmentMaps env;
   env.name = name;
   env.samplesPerTexel = kPrefilterSamples;
-  env.levels = loadOrBuild(name, gpu, baseSize);
+  env.levels = prefilteredLevels(name, gpu, baseSize, ShaderCache::defaultDir());
   projectSh9(env.levels.front(), env.sh);
   return built.emplace(std::make_pair(name, baseSize), std::move(env)).first->second;
 }

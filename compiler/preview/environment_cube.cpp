@@ -25,7 +25,9 @@ Rgb edgeTexel(const CubeLevel& level, uint32_t face, int i, int j) {
   const double beyond = 0.1 / n;
   auto coord = [&](int k) { return k < 0 ? -beyond : (k >= n ? 1.0 + beyond : (k + 0.5) / n); };
   const FaceCoord fc = cubeFaceCoord(cubeFaceDirection(face, coord(i), coord(j)));
-  auto index = [&](double x) { return static_cast<uint32_t>(std::clamp(static_cast<int>(std::floor(x * n)), 0, n - 1)); };
+  auto index = [&](double x) {
+    return static_cast<uint32_t>(std::clamp(static_cast<int>(std::floor(x * n)), 0, n - 1));
+  };
   return texelAt(level, fc.face, index(fc.s), index(fc.t));
 }
 

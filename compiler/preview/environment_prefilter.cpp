@@ -1,5 +1,7 @@
 #include "preview/environment_prefilter.hpp"
 
+#include <algorithm>
+
 #include "compile/glsl_compiler.hpp"
 #include "emit/glsl_writer.hpp"
 #include "harness/vulkan_harness.hpp"
@@ -12,11 +14,15 @@ namespace {
 
 constexpr const char* kHammersley = "hammersley_bitreverse";
 constexpr const char* kSampleGgx = "importance_sample_ggx";
+constexpr const char* kGgx = "d_ggx";
 
 const Brick& requireBrick(const ShaderLibrary& lib, const std::string& id) {
   if (const Brick* b = lib.findBrick(id)) return *b;
-  throw DiagnosticError(
-      {{Severity::Error, "E-UNKNOWN-BRICK", {"shaderlib/manifest.json", 0, 0}, "the prefilter kernel needs brick '" + id + "'", ""}});
+  throw DiagnosticError({{Severity::Error,
+                          "E-UNKNOWN-BRICK",
+                          {"shaderlib/manifest.json", 0, 0},
+                          "the prefilter kernel needs brick '" + id + "'",
+                          ""}});
 }
 
 uint32_t levelCount(uint32_t baseSize) {
@@ -27,11 +33,14 @@ uint32_t levelCount(uint32_t baseSize) {
 
 }  // namespace
 
+uint32_t peakSamples(uint32_t samples) { return std::max(1u, samples / 4); }
+
 double levelRoughness(uint32_t level, uint32_t maxMip) { return maxMip == 0 ? 0.0 : double(level) / maxMip; }
 
 std::string prefilterKernelGlsl(const ShaderLibrary& lib, const std::string& name, uint32_t samples) {
   const Brick& hammersley = requireBrick(lib, kHammersley);
   const Brick& sampleGgx = requireBrick(lib, kSampleGgx);
+  const Brick& ggx = requireBrick(lib, kGgx);
   GlslWriter w("environment.prefilter." + name + ".glsl");
   w.line("#version 450");
   w.line("#extension GL_GOOGLE_cpp_style_line_directive : require");
@@ -42,12 +51,14 @@ std::string prefilterKernelGlsl(const ShaderLibrary& lib, const std::string& nam
   w.include(ShaderLibrary::displayPath(common->file), lib.source(common->file));
   w.include(ShaderLibrary::displayPath(hammersley.file), lib.source(hammersley.file));
   w.include(ShaderLibrary::displayPath(sampleGgx.file), lib.source(sampleGgx.file));
+  w.include(ShaderLibrary::displayPath(ggx.file), lib.source(ggx.file));
   writeRadianceGlsl(w, lib, name);
   w.line("layout(local_size_x = 64) in;");
   w.line("layout(std430, set = 0, binding = 0) readonly buffer MbIn { float mbIn[]; };");
   w.line("layout(std430, set = 0, binding = 1) writeonly buffer MbOut { float mbOut[]; };");
   w.line("layout(push_constant) uniform MbPush { uint count; } mbPush;");
   w.line("const uint kSamples = " + std::to_string(samples) + "u;");
+  w.line("const uint kPeakSamples = " + std::to_string(peakSamples(samples)) + "u;");
   w.line("void main() {");
   w.line("    uint i = gl_GlobalInvocationID.x;");
   w.line("    if (i >= mbPush.count) return;");
@@ -67,10 +78,28 @@ std::string prefilterKernelGlsl(const ShaderLibrary& lib, const std::string& nam
   w.line("            vec3 l = 2.0 * dot(n, h) * h - n;");
   w.line("            float NoL = dot(n, l);");
   w.line("            if (NoL > 0.0) {");
-  w.line("                sum += mb_environment_radiance(normalize(l)) * NoL;");
+  w.line("                sum += mb_environment_smooth(normalize(l)) * NoL;");
   w.line("                weight += NoL;");
   w.line("            }");
   w.line("        }");
+  if (environmentPeak(name)) {
+    // sum / kSamples estimates Int L n.l p(l) dl with p(l) = D(h) / 4 the density of l (n = v);
+    // the peak's share of it is integrated over the peak's cone, uniformly in solid angle.
+    w.line("        // The peak (the sun) by sampling its cone uniformly: Int L n.l D(h) / 4 dl.");
+    w.line("        vec3 peak = vec3(0.0);");
+    w.line("        for (uint k = 0u; k < kPeakSamples; ++k) {");
+    w.line("            float x = " + hammersley.function + "(float(k)) * kPeakOneMinusCosMax;");
+    w.line("            float cosT = 1.0 - x, sinT = sqrt(x * (2.0 - x));");
+    w.line("            float phi = 2.0 * MB_PI * float(k) / float(kPeakSamples);");
+    w.line("            vec3 l = kPeakAxis * cosT + (kPeakU * cos(phi) + kPeakV * sin(phi)) * sinT;");
+    w.line("            float NoL = dot(n, l);");
+    w.line("            if (NoL > 0.0) {");
+    w.line("                peak += mb_environment_sun(l) * (NoL * 0.25 * " + ggx.function +
+           "(makeGeometry(n, n, l), alpha));");
+    w.line("            }");
+    w.line("        }");
+    w.line("        sum += peak * (2.0 * MB_PI * kPeakOneMinusCosMax * float(kSamples) / float(kPeakSamples));");
+  }
   w.line("        color = sum / weight;");
   w.line("    }");
   w.line("    mbOut[3u * i] = color.r;");

@@ -54,21 +54,37 @@ Rgb studioRadiance(const Dir& d) {
   return radiance;
 }
 
-Rgb skyRadiance(const Dir& d) {
+Rgb skySmooth(const Dir& d) {
   const SkyParams& p = skyParams();
   const Dir s = frameAt(p.sunAzimuthDeg, p.sunElevationDeg).c;
   const double t = 1.0 - std::clamp(d[1], 0.0, 1.0);
   Rgb sky = mix(p.horizon, p.zenith, 1.0 - std::pow(t, 4.0));
   addScaled(sky, p.glow, std::exp((dot(d, s) - 1.0) / p.glowWidth));
-  Rgb radiance = mix(p.ground, sky, smoothstep(-p.horizonBlend, 0.0, d[1]));
+  return mix(p.ground, sky, smoothstep(-p.horizonBlend, 0.0, d[1]));
+}
+
+Rgb skySun(const Dir& d) {
+  const SkyParams& p = skyParams();
+  const Dir s = frameAt(p.sunAzimuthDeg, p.sunElevationDeg).c;
   const Dir diff{d[0] - s[0], d[1] - s[1], d[2] - s[2]};
   const double gamma = 2.0 * std::asin(std::min(0.5 * std::sqrt(dot(diff, diff)), 1.0));
   const double disc = 1.0 - smoothstep(p.sunRadius - p.sunEdge, p.sunRadius + p.sunEdge, gamma);
+  Rgb radiance{0, 0, 0};
   if (disc > 0.0) {
     const double r = std::min(gamma / p.sunRadius, 1.0);
     addScaled(radiance, p.sun, disc * (1.0 - p.limbDarkening * (1.0 - std::sqrt(1.0 - r * r))));
   }
   return radiance;
+}
+
+const PeakCone& sunCone() {
+  static const PeakCone cone = [] {
+    const SkyParams& p = skyParams();
+    const Frame f = frameAt(p.sunAzimuthDeg, p.sunElevationDeg);
+    const double half = p.sunRadius + p.sunEdge, sinHalf = std::sin(0.5 * half);
+    return PeakCone{f.c, f.u, f.v, 2.0 * sinHalf * sinHalf};  // 1 - cos without cancellation
+  }();
+  return cone;
 }
 
 std::string vec3Glsl(const Dir& v) {
@@ -120,6 +136,11 @@ void skyConstants(GlslWriter& w) {
   constant(w, "float", "kGlowWidth", glslFloat(p.glowWidth));
   constant(w, "vec3", "kGround", vec3Glsl(p.ground));
   constant(w, "float", "kHorizonBlend", glslFloat(p.horizonBlend));
+  const PeakCone& cone = sunCone();
+  constant(w, "vec3", "kPeakAxis", vec3Glsl(cone.axis));
+  constant(w, "vec3", "kPeakU", vec3Glsl(cone.u));
+  constant(w, "vec3", "kPeakV", vec3Glsl(cone.v));
+  constant(w, "float", "kPeakOneMinusCosMax", glslFloat(cone.oneMinusCosMax));
 }
 
 }  // namespace
@@ -128,22 +149,22 @@ void skyConstants(GlslWriter& w) {
 // (the classic three-point setup plus a top light), about 20-30 degrees across: big enough
 // to read as shapes in a sphere's reflection, soft over 2.3 degrees (3-4 texels of a 128 cube).
 const StudioParams& studioParams() {
-  static const StudioParams p{
-      {{-40.0, 35.0, 0.35, 0.50, {9.0, 8.6, 8.0}},
-       {70.0, 15.0, 0.25, 0.60, {2.0, 2.2, 2.6}},
-       {0.0, 90.0, 0.12, 0.90, {5.0, 5.0, 5.0}},
-       {160.0, 20.0, 0.20, 0.40, {6.0, 5.6, 5.0}}},
-      0.04,
-      {0.045, 0.045, 0.05},
-      {0.02, 0.02, 0.024},
-      {0.12, 0.11, 0.10},
-      0.05};
+  static const StudioParams p{{{-40.0, 35.0, 0.35, 0.50, {9.0, 8.6, 8.0}},
+                               {70.0, 15.0, 0.25, 0.60, {2.0, 2.2, 2.6}},
+                               {0.0, 90.0, 0.12, 0.90, {5.0, 5.0, 5.0}},
+                               {160.0, 20.0, 0.20, 0.40, {6.0, 5.6, 5.0}}},
+                              0.04,
+                              {0.045, 0.045, 0.05},
+                              {0.02, 0.02, 0.024},
+                              {0.12, 0.11, 0.10},
+                              0.05};
   return p;
 }
 
 // Sun 35 degrees up; its disc 2.3 degrees across (the real sun's 0.53 would be under one
-// texel of a 128 cube), irradiance ~ pi r^2 x sun x 0.8 (limb) = 4.0 against ~3.6 from the
-// sky: a clear day's ratio in a range a preview tonemaps well.
+// texel of a 128 cube). Irradiance at normal incidence ~ pi r^2 x 3800 x 0.8 (limb) = 3.8,
+// against ~0.9 from the sky on an upward normal (tests print E(up) = 3.1 with the sun at 35
+// degrees): a clear day's 4:1, in a range a preview tonemaps well.
 const SkyParams& skyParams() {
   static const SkyParams p{30.0,
                            35.0,
@@ -160,11 +181,25 @@ const SkyParams& skyParams() {
   return p;
 }
 
-Rgb environmentRadiance(const std::string& name, const Dir& d) {
+Rgb environmentSmoothRadiance(const std::string& name, const Dir& d) {
   if (name == "studio") return studioRadiance(d);
-  if (name == "sky") return skyRadiance(d);
+  if (name == "sky") return skySmooth(d);
   throw std::out_of_range("unknown environment '" + name + "'");
 }
+
+Rgb environmentPeakRadiance(const std::string& name, const Dir& d) {
+  if (name == "sky") return skySun(d);
+  environmentSmoothRadiance(name, d);  // the name check
+  return {0, 0, 0};
+}
+
+Rgb environmentRadiance(const std::string& name, const Dir& d) {
+  Rgb radiance = environmentSmoothRadiance(name, d);
+  addScaled(radiance, environmentPeakRadiance(name, d), 1.0);
+  return radiance;
+}
+
+const PeakCone* environmentPeak(const std::string& name) { return name == "sky" ? &sunCone() : nullptr; }
 
 void writeRadianceGlsl(GlslWriter& w, const ShaderLibrary& lib, const std::string& name) {
   if (name == "studio")

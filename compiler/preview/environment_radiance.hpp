@@ -34,21 +34,21 @@ struct SoftBox {
 
 struct StudioParams {
   std::vector<SoftBox> boxes;
-  double softness;     // edge half-width, gnomonic units
-  Rgb wall;            // dark backdrop at the horizon
-  Rgb wallTop;         // backdrop towards the zenith
-  Rgb ground;          // dim floor below the horizon
-  double horizonBlend; // floor-to-wall blend over y in [-horizonBlend, 0]
+  double softness;      // edge half-width, gnomonic units
+  Rgb wall;             // dark backdrop at the horizon
+  Rgb wallTop;          // backdrop towards the zenith
+  Rgb ground;           // dim floor below the horizon
+  double horizonBlend;  // floor-to-wall blend over y in [-horizonBlend, 0]
 };
 
 struct SkyParams {
   double sunAzimuthDeg, sunElevationDeg;
-  double sunRadius;       // angular radius of the disc, radians
-  double sunEdge;         // half-width of the disc's soft edge, radians
-  double limbDarkening;   // linear law I(mu) = 1 - u (1 - mu) (Eddington-like)
-  Rgb sun;                // radiance at the disc centre
-  Rgb zenith, horizon;    // gradient: horizon + (zenith - horizon)(1 - (1 - y)^4)
-  Rgb glow;               // forward-scattering halo: glow exp((cos(gamma) - 1) / glowWidth)
+  double sunRadius;      // angular radius of the disc, radians
+  double sunEdge;        // half-width of the disc's soft edge, radians
+  double limbDarkening;  // linear law I(mu) = 1 - u (1 - mu) (Eddington-like)
+  Rgb sun;               // radiance at the disc centre
+  Rgb zenith, horizon;   // gradient: horizon + (zenith - horizon)(1 - (1 - y)^4)
+  Rgb glow;              // forward-scattering halo: glow exp((cos(gamma) - 1) / glowWidth)
   double glowWidth;
   Rgb ground;
   double horizonBlend;
@@ -60,7 +60,22 @@ const SkyParams& skyParams();
 // The radiance towards unit direction d. Throws std::out_of_range for an unknown name.
 Rgb environmentRadiance(const std::string& name, const Dir& d);
 
-// Writes GLSL defining `vec3 mb_environment_radiance(vec3 d)` for the named environment: its
+// A small, very bright part of an environment (the sky's sun) that the prefilter integrates
+// by sampling its cone instead of the GGX lobe: zero outside the cone of axis `axis` and
+// 1 - cos(half-angle) = oneMinusCosMax; u, v complete the axis to an orthonormal frame.
+struct PeakCone {
+  Dir axis, u, v;
+  double oneMinusCosMax = 0;
+};
+// The cone of the named environment's peak, or nullptr when it has none (the studio).
+const PeakCone* environmentPeak(const std::string& name);
+// The peak's radiance (zero outside its cone) and the rest; their sum is environmentRadiance.
+Rgb environmentPeakRadiance(const std::string& name, const Dir& d);
+Rgb environmentSmoothRadiance(const std::string& name, const Dir& d);
+
+// Writes GLSL defining `vec3 mb_environment_radiance(vec3 d)`, `mb_environment_smooth(d)` and,
+// where environmentPeak is not null, `mb_environment_sun(d)` (the peak) with the constants
+// kPeakAxis, kPeakU, kPeakV, kPeakOneMinusCosMax, for the named environment: its
 // parameters as constants, then shaderlib/environments/<name>.glsl behind a #line directive.
 void writeRadianceGlsl(GlslWriter& w, const ShaderLibrary& lib, const std::string& name);
 

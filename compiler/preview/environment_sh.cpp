@@ -14,8 +14,15 @@ std::array<double, 9> sh9Basis(const std::array<double, 3>& d) {
   const double y2a = 0.5 * std::sqrt(15.0 / kPi);
   const double y20 = 0.25 * std::sqrt(5.0 / kPi);
   const double y22 = 0.25 * std::sqrt(15.0 / kPi);
-  return {y00,         y1 * y,      y1 * z,  y1 * x, y2a * x * y, y2a * y * z, y20 * (3.0 * z * z - 1.0),
-          y2a * x * z, y22 * (x * x - y * y)};
+  return {y00,
+          y1 * y,
+          y1 * z,
+          y1 * x,
+          y2a * x * y,
+          y2a * y * z,
+          y20 * (3.0 * z * z - 1.0),
+          y2a * x * z,
+          y22 * (x * x - y * y)};
 }
 
 void projectSh9(const CubeLevel& level, double out[9][3]) {

@@ -5,7 +5,7 @@
 // x = d.u / d.c, y = d.v / d.c on the plane tangent at its centre c, so it is a rectangle on
 // that plane (as a real rectangular light seen from the centre) with edges soft over
 // +-kBoxSoftness.
-vec3 mb_environment_radiance(vec3 d) {
+vec3 mb_environment_smooth(vec3 d) {
     vec3 wall = mix(kWall, kWallTop, smoothstep(0.0, 1.0, d.y));
     vec3 radiance = mix(kGround, wall, smoothstep(-kHorizonBlend, 0.0, d.y));
     for (int k = 0; k < kBoxCount; ++k) {
@@ -21,4 +21,9 @@ vec3 mb_environment_radiance(vec3 d) {
         radiance += mask * kBoxRadiance[k];
     }
     return radiance;
+}
+
+// No peak the GGX lobe cannot sample: everything is smooth.
+vec3 mb_environment_radiance(vec3 d) {
+    return mb_environment_smooth(d);
 }
