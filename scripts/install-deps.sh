@@ -5,6 +5,8 @@
 # clang-format: the house style (.clang-format), checked by the CTest test `format`.
 # libcurl4-openssl-dev: the remote HTTP compile cache (--cache-url); nginx-light: the local
 # WebDAV server its tests run against (docs/targets.md "Remote cache").
+# libstb-dev: PNG writing and reading (stb_image_write, stb_image) for `matbricks report`;
+# chromium: the headless browser the report's CTest test opens it in (docs/report.md).
 set -euo pipefail
 
 PACKAGES=(
@@ -15,6 +17,7 @@ PACKAGES=(
   nlohmann-json3-dev catch2 libcli11-dev libxxhash-dev
   clang libclang-rt-14-dev clang-format
   libcurl4-openssl-dev nginx-light
+  libstb-dev chromium
 )
 
 missing=()
