@@ -15,7 +15,7 @@ using bench::xmlEscape;
 
 // Plain, readable, printable; no web fonts (nothing is fetched).
 constexpr const char* kStyle =
-    R"(body{font-family:sans-serif;margin:24px auto;max-width:1200px;color:#222;padding:0 16px}
+    R"(body{font-family:sans-serif;margin:24px auto;max-width:1500px;color:#222;padding:0 16px}
 table{border-collapse:collapse;font-size:12px;margin:8px 0 16px}
 th,td{border:1px solid #ccc;padding:3px 6px;text-align:right;white-space:nowrap}
 th{background:#f2f2f2}td.l,th.l{text-align:left}
