@@ -3,7 +3,8 @@
 # example library: compile every material (JSON and macro forms) and the glTF examples into
 # packages, compile exactly what each example scene needs to every target (with the counts
 # of --explain) and verify the packages against the scenes, and validate every permutation on
-# lavapipe against the double-precision references.
+# lavapipe against the double-precision references; finally write the HTML report of the
+# shipped materials (docs/report.md) and print its path.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
@@ -28,3 +29,10 @@ for scene in showroom mobile gallery; do
 done
 echo "== matbricks validate materials/*   (every light type the model shades, each environment mode)"
 ./build/bin/matbricks validate materials/*
+echo
+echo "== matbricks report -o out/report   (the shipped materials: errors, costs, charts, LUT; docs/report.md)"
+# A failed check is shown in the report (and exits 1): print where it is either way.
+rc=0
+./build/bin/matbricks report -o out/report || rc=$?
+echo "report: file://$(pwd)/out/report/index.html"
+exit "$rc"

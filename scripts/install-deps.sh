@@ -5,7 +5,9 @@
 # clang-format: the house style (.clang-format), checked by the CTest test `format`.
 # libcurl4-openssl-dev: the remote HTTP compile cache (--cache-url); nginx-light: the local
 # WebDAV server its tests run against (docs/targets.md "Remote cache").
-# libstb-dev: stb_image_write for the preview's PNGs (docs/preview.md), header-only here.
+# libstb-dev: PNG writing and reading (stb_image_write, stb_image) for `matbricks preview`
+# and `matbricks report` (docs/preview.md, docs/report.md).
+# chromium: the headless browser the report's CTest test opens it in (docs/report.md).
 set -euo pipefail
 
 PACKAGES=(
@@ -16,7 +18,7 @@ PACKAGES=(
   nlohmann-json3-dev catch2 libcli11-dev libxxhash-dev
   clang libclang-rt-14-dev clang-format
   libcurl4-openssl-dev nginx-light
-  libstb-dev
+  libstb-dev chromium
 )
 
 missing=()

@@ -52,6 +52,10 @@ const std::vector<CommandCase> kCommands = {
     {"bench", "bench {in} --repeats 1 --samples 64 --records 4096 --iterations 4", ""},
     {"verify", "", "verify --scene {in} {out}/pkg"},
     {"preview", "preview {in} -o {out}/preview --size 16", ""},
+    {"report",
+     "report {in} --lights dir --environment none --no-slots --no-energy --no-lut --samples 64 --slot-samples 16 --repeats 1 "
+     "--target-ms 0.5 -o {out}/report",
+     "report --scene {in} --no-slots --no-energy --no-lut --samples 64 --repeats 1 --target-ms 0.5 -o {out}/report"},
 };
 
 std::string substitute(std::string s, const std::string& key, const std::string& value) {

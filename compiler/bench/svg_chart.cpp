@@ -13,14 +13,6 @@ constexpr double kWidth = 820, kHeight = 540;
 constexpr double kLeft = 90, kRight = 200, kTop = 64, kBottom = 72;  // margins
 constexpr double kErrorFloor = 1e-12;  // an exact 0 is drawn here (log axis), labelled "= 0"
 
-// 1, 2 or 5 times a power of ten, about range/5.
-double niceStep(double range) {
-  double p = std::pow(10.0, std::floor(std::log10(range / 5.0)));
-  for (double m : {1.0, 2.0, 5.0, 10.0})
-    if (range / (m * p) <= 6.0) return m * p;
-  return 10.0 * p;
-}
-
 struct Axes {
   double x0, x1;  // cost range
   int y0, y1;     // log10 error range (decades)
@@ -111,6 +103,13 @@ Placement placeLabel(double X, double Y, size_t chars, const std::vector<Box>& t
 }
 
 }  // namespace
+
+double niceStep(double range) {
+  double p = std::pow(10.0, std::floor(std::log10(range / 5.0)));
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (range / (m * p) <= 6.0) return m * p;
+  return 10.0 * p;
+}
 
 std::string xmlEscape(const std::string& in) {
   std::string out;

@@ -1,10 +1,12 @@
 #include "cli/cli_common.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <set>
 
 #include "load/gltf_external_files.hpp"
+#include "permute/axes.hpp"
 #include "load/project_files.hpp"
 
 namespace mb::cli {
@@ -65,6 +67,40 @@ void checkDirectoryOutput(const std::string& dir, const std::vector<ProtectedPat
 void checkFileOutput(const std::string& file, const std::string& what, const std::vector<ProtectedPath>& inputs) {
   refuseOverlap(resolvedOutputFile(file), what, inputs);
   checkOutputFile(file);
+}
+
+void checkKnownNames(const std::vector<std::string>& names, const std::vector<std::string>& known, const char* code,
+                     const char* what) {
+  std::vector<Diagnostic> errors;
+  for (const auto& n : names)
+    if (std::find(known.begin(), known.end(), n) == known.end())
+      errors.push_back({Severity::Error,
+                        code,
+                        {"<command line>", 0, 0},
+                        std::string("unknown ") + what + " '" + n + "'",
+                        didYouMean(n, known)});
+  if (!errors.empty()) throw DiagnosticError(errors);
+}
+
+std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const ShaderLibrary& lib,
+                                                const std::vector<std::string>& lights,
+                                                const std::vector<std::string>& environments,
+                                                const std::string& precision, std::vector<std::string>& notes) {
+  std::vector<Permutation> out;
+  for (auto perm : validationPermutationsFor(m, lib)) {
+    if (!environments.empty() &&
+        std::find(environments.begin(), environments.end(), perm.environment) == environments.end())
+      continue;
+    if (!lights.empty()) perm.lights = canonicalLights(lights);
+    perm.precision = precision;
+    if (environments.empty())
+      if (auto broken = brokenBrickRule(*lib.findModel(m.model), perm)) {
+        notes.push_back("skipping environment '" + perm.environment + "': " + broken->message);
+        continue;
+      }
+    out.push_back(perm);
+  }
+  return out;
 }
 
 std::unique_ptr<harness::VulkanHarness> openDevice(const GlobalOptions& g) {

@@ -10,6 +10,7 @@
 #include "harness/vulkan_harness.hpp"
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
+#include "permute/permutation.hpp"
 #include "write/output_paths.hpp"
 
 namespace mb::cli {
@@ -50,6 +51,21 @@ void addMaterialInputs(std::vector<ProtectedPath>& inputs, const std::vector<Mat
 void checkDirectoryOutput(const std::string& dir, const std::vector<ProtectedPath>& inputs);
 void checkFileOutput(const std::string& file, const std::string& what, const std::vector<ProtectedPath>& inputs);
 
+// Throws DiagnosticError `code` ("unknown <what> 'x'" with a did-you-mean) for every name of
+// `names` not in `known` (bench's and report's --slot, bench's --brick).
+void checkKnownNames(const std::vector<std::string>& names, const std::vector<std::string>& known, const char* code,
+                     const char* what);
+
+// The permutations validated for one material (validate, report): the model's light types
+// together, once per environment mode, both narrowed by `lights` / `environments` (empty: all),
+// at `precision`. A mode in which the material's bricks break one of the model's brick rules is
+// skipped with a note when the user did not ask for it (the material may be meant for other
+// modes); asked for, it is an error when the probe is built.
+std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const ShaderLibrary& lib,
+                                                const std::vector<std::string>& lights,
+                                                const std::vector<std::string>& environments,
+                                                const std::string& precision, std::vector<std::string>& notes);
+
 std::unique_ptr<harness::VulkanHarness> openDevice(const GlobalOptions& g);
 // Prints validation-layer messages to stderr; returns true if there were any.
 bool reportLayerMessages(const harness::VulkanHarness& gpu);
@@ -72,5 +88,6 @@ Command addEnergyCommand(CLI::App& app, GlobalOptions& g);
 Command addVerifyCommand(CLI::App& app, GlobalOptions& g);
 Command addMergeCommand(CLI::App& app, GlobalOptions& g);
 Command addPreviewCommand(CLI::App& app, GlobalOptions& g);
+Command addReportCommand(CLI::App& app, GlobalOptions& g);
 
 }  // namespace mb::cli

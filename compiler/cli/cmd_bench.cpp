@@ -30,27 +30,14 @@ struct BenchArgs {
   std::string json, csv, outDir, markdown;
 };
 
-void checkKnown(const std::vector<std::string>& names, const std::vector<std::string>& known, const char* code,
-                const char* what) {
-  std::vector<Diagnostic> errors;
-  for (const auto& n : names)
-    if (std::find(known.begin(), known.end(), n) == known.end())
-      errors.push_back({Severity::Error,
-                        code,
-                        {"<command line>", 0, 0},
-                        std::string("unknown ") + what + " '" + n + "'",
-                        didYouMean(n, known)});
-  if (!errors.empty()) throw DiagnosticError(errors);
-}
-
 // `bench` alone measures everything: every slot, the source tree's example materials, the
 // IBL table. Any of --slot, --brick or MATERIAL narrows it to what is named (--ibl adds the
 // IBL table back).
 bench::BenchOptions resolveScope(const BenchArgs& a, const ShaderLibrary& lib, std::vector<std::string>& materials) {
   std::vector<std::string> slotNames;
   for (const auto& s : lib.slots()) slotNames.push_back(s.name);
-  checkKnown(a.slots, slotNames, "E-UNKNOWN-SLOT", "slot");
-  checkKnown(a.bricks, lib.brickIds(), "E-UNKNOWN-BRICK", "brick");
+  checkKnownNames(a.slots, slotNames, "E-UNKNOWN-SLOT", "slot");
+  checkKnownNames(a.bricks, lib.brickIds(), "E-UNKNOWN-BRICK", "brick");
   bench::BenchOptions o = a.options;
   o.slots = a.slots;
   o.bricks = a.bricks;

@@ -1,11 +1,9 @@
 // matbricks validate: run probes on the GPU against the double references.
-#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
 #include "cli/cli_common.hpp"
 #include "permute/axes.hpp"
-#include "permute/permutation.hpp"
 #include "validate/validation.hpp"
 
 namespace mb::cli {
@@ -23,30 +21,6 @@ struct ValidateArgs {
   std::vector<std::string> lights;        // empty: every light type the model shades
   std::vector<std::string> environments;  // empty: every environment mode it supports
 };
-
-// The permutations validated for one material: the model's light types together, once per
-// environment mode, both narrowed by --lights / --environment. A mode in which the material's
-// bricks break one of the model's brick rules is skipped with a note when the user did not
-// ask for it (the material may be meant for other modes); asked for, it is an error.
-std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const ShaderLibrary& lib,
-                                                const ValidateArgs& a) {
-  std::vector<Permutation> out;
-  for (auto perm : validationPermutationsFor(m, lib)) {
-    if (!a.environments.empty() &&
-        std::find(a.environments.begin(), a.environments.end(), perm.environment) == a.environments.end())
-      continue;
-    if (!a.lights.empty()) perm.lights = canonicalLights(a.lights);
-    perm.precision = a.precision;
-    if (a.environments.empty())
-      if (auto broken = brokenBrickRule(*lib.findModel(m.model), perm)) {
-        std::fprintf(stderr, "%s: note: skipping environment '%s': %s\n", m.sourceFile.c_str(),
-                     perm.environment.c_str(), broken->message.c_str());
-        continue;
-      }
-    out.push_back(perm);
-  }
-  return out;
-}
 
 int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
   if (a.materials.empty() && a.bricks.empty() && !a.allBricks)
@@ -80,9 +54,13 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
           validateProbe(*gpu, buildBrickProbe(lib, *b, true, precision), "unstable_variant", a.samples, a.seed));
     }
   }
-  for (const auto& m : materials)
-    for (const auto& perm : permutationsToValidate(m, lib, a))
+  for (const auto& m : materials) {
+    std::vector<std::string> notes;
+    auto perms = permutationsToValidate(m, lib, a.lights, a.environments, a.precision, notes);
+    for (const auto& n : notes) std::fprintf(stderr, "%s: note: %s\n", m.sourceFile.c_str(), n.c_str());
+    for (const auto& perm : perms)
       records.push_back(validateProbe(*gpu, buildPermutationProbe(lib, perm), "permutation", a.samples, a.seed));
+  }
 
   bool allPassed = true;
   for (const auto& r : records) allPassed = allPassed && r.passed();

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   commands.push_back(addVerifyCommand(app, g));
   commands.push_back(addMergeCommand(app, g));
   commands.push_back(addPreviewCommand(app, g));
+  commands.push_back(addReportCommand(app, g));
 
   try {
     app.parse(argc, argv);
