@@ -21,6 +21,7 @@
 #include <thread>
 #include <unordered_map>
 
+#include "compile/engine_includes.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
 #include "write/package_writer.hpp"
@@ -143,6 +144,7 @@ void buildUnit(CompileUnit& u, size_t index, const std::vector<std::string>& tar
       }
     }
     a.reflection = reflectSpirv(a.spirv);
+    a.includes = crossCompileIncludes(u.glsl, targets, u.displayName);
     u.compileMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     cache.store(u.cacheKey, a);
     if (src.remote) u.uploaded = src.remote->put(u.cacheKey, a);

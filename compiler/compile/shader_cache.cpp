@@ -4,7 +4,9 @@
 //   header   "MBCACHE1" (8 bytes), XXH3-64 of kFormatVersion (u64), payload size (u64),
 //            XXH3-64 of the payload (u64)
 //   payload  u64 SPIR-V word count, the words; u64 target count, then per target u64 name
-//            length, name, u64 text length, text; u64 reflection length, reflection JSON text
+//            length, name, u64 text length, text; u64 reflection length, reflection JSON text;
+//            u64 include count, then per include u64 language length, language, u64 text
+//            length, text (format 2)
 // Integers are little-endian as the host writes them: the cache is per machine.
 #include "compile/shader_cache.hpp"
 
@@ -75,6 +77,11 @@ std::string encodeCacheEntry(const CompiledArtifacts& a) {
     putBytes(payload, text);
   }
   putBytes(payload, a.reflection.dump());
+  putU64(payload, a.includes.size());
+  for (const auto& [language, text] : a.includes) {
+    putBytes(payload, language);
+    putBytes(payload, text);
+  }
   std::string file(kMagic, sizeof kMagic);
   putU64(file, formatTag());
   putU64(file, payload.size());
@@ -103,7 +110,14 @@ bool decodeCacheEntry(const std::string& file, CompiledArtifacts& out) {
     a.targets[name] = std::move(text);
   }
   std::string reflection;
-  if (!r.str(reflection) || !r.atEnd()) return false;
+  uint64_t includes = 0;
+  if (!r.str(reflection) || !r.u64(includes)) return false;
+  for (uint64_t i = 0; i < includes; ++i) {
+    std::string language, text;
+    if (!r.str(language) || !r.str(text)) return false;
+    a.includes[language] = std::move(text);
+  }
+  if (!r.atEnd()) return false;
   a.reflection = nlohmann::json::parse(reflection, nullptr, /*allow_exceptions=*/false);
   if (a.reflection.is_discarded()) return false;
   out = std::move(a);

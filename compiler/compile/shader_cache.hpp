@@ -24,6 +24,9 @@ struct CompiledArtifacts {
   std::vector<uint32_t> spirv;
   std::map<std::string, std::string> targets;  // target -> text, for every non-spirv target
   nlohmann::json reflection;                   // reflectSpirv(spirv)
+  // "hlsl" / "msl" -> the engine include's body, when that target was asked for
+  // (engine_includes.hpp crossCompileIncludes).
+  std::map<std::string, std::string> includes;
 };
 
 // The bytes of one cache entry (format in shader_cache.cpp), as stored on disk, in a shard
@@ -43,7 +46,7 @@ class ShaderCache {
   bool enabled() const { return !dir_.empty(); }
   const std::filesystem::path& dir() const { return dir_; }
   // Version of the entry format and of the key's recipe; part of every key (build.cpp).
-  static constexpr const char* kFormatVersion = "matbricks-cache-1";
+  static constexpr const char* kFormatVersion = "matbricks-cache-2";
   // 32 hex digits (XXH3-128) over the given parts, each length-prefixed.
   static std::string key(const std::vector<std::string>& parts);
 

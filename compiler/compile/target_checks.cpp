@@ -34,15 +34,16 @@ struct Reparse {
   int defaultVersion;
   EShMessages messages;
   spv_target_env validateEnv;
+  EShLanguage stage = EShLangCompute;
 };
 
 std::string reparse(const std::string& text, const Reparse& r) {
   ensureGlslangInitialized();
-  glslang::TShader shader(EShLangCompute);
+  glslang::TShader shader(r.stage);
   const char* str = text.c_str();
   shader.setStrings(&str, 1);
   shader.setEntryPoint("main");
-  shader.setEnvInput(r.source, EShLangCompute, r.client, 100);
+  shader.setEnvInput(r.source, r.stage, r.client, 100);
   shader.setEnvClient(r.client, r.clientVersion);
   shader.setEnvTarget(glslang::EShTargetSpv, r.spirvVersion);
   // The #version line of the source decides the profile; defaultVersion only applies without one.
@@ -58,7 +59,7 @@ std::string reparse(const std::string& text, const Reparse& r) {
   spv::SpvBuildLogger logger;
   glslang::SpvOptions options;
   options.disableOptimizer = true;
-  glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), spirv, &logger, &options);
+  glslang::GlslangToSpv(*program.getIntermediate(r.stage), spirv, &logger, &options);
   return validate(spirv, r.validateEnv);
 }
 
@@ -75,10 +76,11 @@ std::string checkGlsl(const std::string& source, bool es) {
                           glslang::EShTargetSpv_1_0, es ? 310 : 450, EShMsgSpvRules, SPV_ENV_OPENGL_4_5});
 }
 
-std::string checkHlsl(const std::string& source) {
+std::string checkHlsl(const std::string& source, bool pixel) {
   const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | EShMsgReadHlsl);
-  return reparse(source, {glslang::EShSourceHlsl, glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1,
-                          glslang::EShTargetSpv_1_3, 100, messages, SPV_ENV_VULKAN_1_1});
+  return reparse(
+      source, {glslang::EShSourceHlsl, glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1,
+               glslang::EShTargetSpv_1_3, 100, messages, SPV_ENV_VULKAN_1_1, pixel ? EShLangFragment : EShLangCompute});
 }
 
 std::string checkMsl(const std::string& source, const SpvcModule& module) {
