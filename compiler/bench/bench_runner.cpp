@@ -16,8 +16,6 @@
 namespace mb::bench {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 bool selected(const std::vector<std::string>& filter, const std::string& name) {
   return filter.empty() || std::find(filter.begin(), filter.end(), name) != filter.end();
 }
@@ -51,18 +49,6 @@ BenchItem measure(harness::VulkanHarness& gpu, const ProbeProgram& probe, const 
   return item;
 }
 
-void report(std::ostream* progress, const std::string& group, const BenchItem& it, Clock::time_point t0) {
-  if (!progress) return;
-  char line[320];
-  std::snprintf(
-      line, sizeof line,
-      "bench: %-18s %-40s %8.2f ns/eval (min %.2f, raw %.2f, loop %.2f) %5zu instr  max err %.3g vs %s  [%.1f s]\n",
-      group.c_str(), it.id.c_str(), it.cost.nsPerEval, it.cost.nsPerEvalMin, it.cost.nsRaw, it.cost.nsBaseline,
-      it.spirvInstructions, it.error.maxScaled(), it.yardstick.c_str(),
-      std::chrono::duration<double>(Clock::now() - t0).count());
-  *progress << line << std::flush;
-}
-
 }  // namespace
 
 void markFrontier(BenchGroup& group) {
@@ -79,12 +65,20 @@ void markFrontier(BenchGroup& group) {
 }
 
 BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, const std::vector<MaterialDesc>& materials,
-                     const BenchOptions& o, std::ostream* progress) {
+                     const BenchOptions& o, ProgressSink* progress) {
   BenchReport rep;
   rep.device = gpu.deviceName();
   rep.toolchain = toolchainVersion();
   rep.options = o;
   BenchProbeOptions timedOpt{o.cost.iterations, false}, baseOpt{o.cost.iterations, true};
+  const std::vector<Permutation> perms = permutationsFor(materials);
+  if (progress) {
+    size_t units = perms.size();
+    for (const auto& slot : lib.slots())
+      if (o.includeBricks && selected(o.slots, slot.name))
+        for (const auto& id : lib.bricksOfSlot(slot.name)) units += selected(o.bricks, id);
+    progress->addToTotal(units);
+  }
 
   for (const auto& slot : lib.slots()) {
     if (!o.includeBricks || !selected(o.slots, slot.name)) continue;
@@ -92,12 +86,11 @@ BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, cons
     for (const auto& id : lib.bricksOfSlot(slot.name)) {
       if (!selected(o.bricks, id)) continue;
       const Brick& b = *lib.findBrick(id);
-      auto t0 = Clock::now();
       group.items.push_back(measure(gpu, buildBrickProbe(lib, b), emitBrickBenchProbe(lib, b, timedOpt),
                                     emitBrickBenchProbe(lib, b, baseOpt), brickYardstick(b), o));
       group.items.back().id = id;
       group.items.back().kind = "brick";
-      report(progress, group.name, group.items.back(), t0);
+      if (progress) progress->advance();
     }
     if (group.items.empty()) continue;
     markFrontier(group);
@@ -105,14 +98,13 @@ BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, cons
   }
 
   BenchGroup mats{"materials", {}};
-  for (const auto& perm : permutationsFor(materials)) {
-    auto t0 = Clock::now();
+  for (const auto& perm : perms) {
     ProbeProgram probe = buildPermutationProbe(lib, perm);
     mats.items.push_back(measure(gpu, probe, emitPermutationBenchProbe(lib, perm, timedOpt),
                                  emitPermutationBenchProbe(lib, perm, baseOpt),
                                  materialYardstick(*perm.material, probe.shader.layout), o));
     mats.items.back().kind = "permutation";
-    report(progress, mats.name, mats.items.back(), t0);
+    if (progress) progress->advance();
   }
   if (!mats.items.empty()) {
     markFrontier(mats);

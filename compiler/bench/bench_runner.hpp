@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/progress_sink.hpp"
 #include "bench/cost.hpp"
 #include "bench/dfg_lut.hpp"
 #include "bench/error_summary.hpp"
@@ -70,8 +71,8 @@ struct BenchReport {
 // items measured against a ground truth if there are any, else over all.
 void markFrontier(BenchGroup& group);
 
-// `progress` (may be null) gets one line per measured item.
+// `progress` (may be null) counts one unit per measured item (brick, permutation, LUT).
 BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, const std::vector<MaterialDesc>& materials,
-                     const BenchOptions& options, std::ostream* progress);
+                     const BenchOptions& options, ProgressSink* progress);
 
 }  // namespace mb::bench

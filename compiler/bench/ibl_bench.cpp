@@ -9,7 +9,7 @@
 
 namespace mb::bench {
 
-bool measureDfgLuts(const ShaderLibrary& lib, const BenchOptions& o, IblSection& out, std::ostream* progress) {
+bool measureDfgLuts(const ShaderLibrary& lib, const BenchOptions& o, IblSection& out, ProgressSink* progress) {
   std::vector<std::string> envBricks = lib.bricksOfSlot("env_brdf");
   if (envBricks.empty()) return false;
   // The samples of the first env_brdf brick: validate and bench draw the same ones for it.
@@ -19,6 +19,8 @@ bool measureDfgLuts(const ShaderLibrary& lib, const BenchOptions& o, IblSection&
   if (!f0 || !rough || !nov || f0->type != ValueType::Vec3) return false;
   SampleDomain domain{b.domain, b.geometry};
   std::vector<float> in = generateSamples(layout, domain, o.samples, o.seed);
+  // One unit for the exact integrals of every sample, one per LUT measured.
+  if (progress) progress->addToTotal(1 + 2 * o.lutSizes.size());
 
   // The integrals once per sample; each LUT is then compared on every channel of f0.
   struct Point {
@@ -34,6 +36,7 @@ bool measureDfgLuts(const ShaderLibrary& lib, const BenchOptions& o, IblSection&
     p.NoV = r[nov->offset];
     p.truth = ref::dfgIntegrals(p.NoV, p.roughness * p.roughness);
   });
+  if (progress) progress->advance();
 
   out.samplesFrom = b.id;
   out.samples = o.samples;
@@ -47,13 +50,7 @@ bool measureDfgLuts(const ShaderLibrary& lib, const BenchOptions& o, IblSection&
         // Split sum with Schlick's F: f0 Int Gv + (1 - f0) Int Gv Fc (ibl_reference.hpp).
         for (double f : p.f0) item.error.add(f * d.y + (1.0 - f) * d.x, f * p.truth.gv + (1.0 - f) * p.truth.gvFc);
       }
-      if (progress) {
-        char line[200];
-        std::snprintf(line, sizeof line, "bench: %-18s dfg_lut %3ux%-3u %s %8llu bytes  max err %.3g\n", "ibl", size,
-                      size, lutFormatName(format).c_str(), static_cast<unsigned long long>(item.bytes),
-                      item.error.maxScaled());
-        *progress << line << std::flush;
-      }
+      if (progress) progress->advance();
       out.luts.push_back(item);
     }
   }

@@ -10,6 +10,6 @@ namespace mb::bench {
 
 // Fills `out` and returns true; false (nothing measured) when the library has no env_brdf
 // slot with the inputs f0, perceptualRoughness, NoV to take samples from.
-bool measureDfgLuts(const ShaderLibrary& lib, const BenchOptions& options, IblSection& out, std::ostream* progress);
+bool measureDfgLuts(const ShaderLibrary& lib, const BenchOptions& options, IblSection& out, ProgressSink* progress);
 
 }  // namespace mb::bench

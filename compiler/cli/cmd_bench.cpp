@@ -13,6 +13,7 @@
 #include "core/data_dir.hpp"
 #include "bench/svg_chart.hpp"
 #include "cli/cli_common.hpp"
+#include "cli/progress.hpp"
 #include "write/package_writer.hpp"
 
 namespace mb::cli {
@@ -28,6 +29,7 @@ struct BenchArgs {
   std::vector<uint32_t> lutSizes{16, 32, 64, 128};
   bench::BenchOptions options;
   std::string json, csv, outDir, markdown;
+  bool quiet = false;
 };
 
 // `bench` alone measures everything: every slot, the source tree's example materials, the
@@ -97,8 +99,8 @@ int runBench(const BenchArgs& a, const GlobalOptions& g) {
   if (a.materials.empty()) {
     // The shipped materials, not named by the user: skip those bench cannot measure (user
     // surface code has no C++ ground truth) with a note, rather than refuse the whole run.
-    std::erase_if(materials, [](const MaterialDesc& m) {
-      if (m.surface.present())
+    std::erase_if(materials, [&a](const MaterialDesc& m) {
+      if (m.surface.present() && !a.quiet)
         std::fprintf(stderr, "%s: note: skipped: bench cannot measure user surface code\n", m.sourceFile.c_str());
       return m.surface.present();
     });
@@ -106,7 +108,9 @@ int runBench(const BenchArgs& a, const GlobalOptions& g) {
   bench::refuseUnmeasurable(materials);
   refuseUnsafeOutputs(a, lib, materials);
   auto gpu = openDevice(g);
-  bench::BenchReport report = bench::runBench(lib, *gpu, materials, o, &std::cerr);
+  Progress progress("bench", 0, a.quiet);  // runBench adds its units
+  bench::BenchReport report = bench::runBench(lib, *gpu, materials, o, &progress);
+  progress.finish();
 
   // Everything is rendered before anything is written; each file is written atomically.
   std::string json = bench::toJson(report).dump(2) + "\n", csv = bench::toCsv(report);
@@ -123,7 +127,8 @@ int runBench(const BenchArgs& a, const GlobalOptions& g) {
   if (!a.csv.empty()) PackageWriter::writeFileAtomically(a.csv, csv);
   if (!a.markdown.empty())
     PackageWriter::writeFileAtomically(a.markdown, bench::spliceGenerated(readFileIfAny(a.markdown), md));
-  printTable(report);
+  // -q: the results are in the files; nothing on stdout.
+  if (!a.quiet) printTable(report);
   return reportLayerMessages(*gpu) ? kExitCheckFailed : kExitOk;
 }
 
@@ -159,6 +164,7 @@ Command addBenchCommand(CLI::App& app, GlobalOptions& g) {
       "Write bench.json, bench.csv, bench.md and one SVG chart per group to this directory (new, empty or a matbricks output)");
   cmd->add_option("--markdown", a->markdown,
                   "Write the Markdown tables (replacing the generated part of an existing file)");
+  cmd->add_flag("-q,--quiet", a->quiet, "No progress, no notes and no table on stdout (the files hold the results)");
   return {cmd, [a, &g] { return runBench(*a, g); }};
 }
 

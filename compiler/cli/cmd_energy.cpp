@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/cli_common.hpp"
+#include "cli/progress.hpp"
 #include "energy/energy_checks.hpp"
 #include "write/package_writer.hpp"
 
@@ -14,6 +15,7 @@ struct EnergyArgs {
   bool markdown = false;
   std::string output;
   std::string grid = "fine";
+  bool quiet = false;
 };
 
 int runEnergy(const EnergyArgs& a, const GlobalOptions& g) {
@@ -22,8 +24,11 @@ int runEnergy(const EnergyArgs& a, const GlobalOptions& g) {
   if (!a.output.empty()) checkFileOutput(a.output, "report", libraryInputs(lib));
   auto gpu = openDevice(g);
   energy::EnergyReport report;
+  Progress progress("energy", 0, a.quiet,
+                    (a.json || a.markdown) && a.output.empty());  // the checks add their units as they find them
   energy::runEnergyChecks(lib, *gpu, a.grid == "coarse" ? energy::EnergyGrid::coarse() : energy::EnergyGrid::fine(),
-                          report);
+                          report, &progress);
+  progress.finish();
   std::string command = "matbricks energy";
   if (a.grid != "fine") command += " --grid " + a.grid;
   std::string text;
@@ -35,7 +40,8 @@ int runEnergy(const EnergyArgs& a, const GlobalOptions& g) {
     text = energy::energyText(report);
   }
   if (a.output.empty()) {
-    std::cout << text;
+    // -q keeps a report asked for on stdout (--json, --markdown) and drops the plain summary.
+    if (!(a.quiet && !a.json && !a.markdown && report.failures().empty())) std::cout << text;
   } else {
     PackageWriter::writeFileAtomically(a.output, text);
   }
@@ -55,6 +61,8 @@ Command addEnergyCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("-o,--output", args->output, "With --markdown or --json: write to this file (atomically)");
   cmd->add_option("--grid", args->grid, "fine (the published tables) or coarse (seconds; what the tests use)")
       ->check(CLI::IsMember({"fine", "coarse"}));
+  cmd->add_flag("-q,--quiet", args->quiet,
+                "No progress; the plain text summary only when a check fails (--json, --markdown still print)");
   return {cmd, [args, &g] { return runEnergy(*args, g); }};
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_common.hpp"
+#include "cli/progress.hpp"
 #include "lut/lut_check.hpp"
 #include "lut/lut_formats.hpp"
 #include "lut/lut_gpu.hpp"
@@ -23,6 +24,7 @@ struct LutArgs {
   std::string outputFormat;
   uint32_t checkGrid = 16;
   bool json = false;
+  bool quiet = false;
 };
 
 // The output format, decided before any GPU work so that a bad command line costs nothing.
@@ -60,8 +62,12 @@ int runLut(const LutArgs& a, const GlobalOptions& g) {
   ShaderLibrary lib = loadLibrary(g);
   if (!a.output.empty()) checkFileOutput(a.output, "LUT file", libraryInputs(lib));
   auto gpu = openDevice(g);
+  // One unit for the GPU generation, then one per texel checked on the CPU (checkLut adds them).
+  Progress progress("lut", 1, a.quiet, a.json);
   lut::GpuLut generated = lut::generateDfgLutOnGpu(*gpu, lib, a.size, a.samples);
-  lut::LutCheck check = lut::checkLut(generated.table, a.checkGrid, true);
+  progress.advance();
+  lut::LutCheck check = lut::checkLut(generated.table, a.checkGrid, true, &progress);
+  progress.finish();
   const bool layerMessages = reportLayerMessages(*gpu);
   const bool ok = check.passed() && !layerMessages;
   // A LUT that fails its check is not written.
@@ -98,6 +104,8 @@ int runLut(const LutArgs& a, const GlobalOptions& g) {
         {"vs_quadrature", {{"channels", channelJson(check.quadrature)}}},
         {"passed", ok}};
     std::cout << out.dump(2) << "\n";
+  } else if (a.quiet && ok) {
+    // -q: nothing on success; the exit code says it.
   } else {
     if (a.samples)
       std::printf("DFG LUT %ux%u, %u Hammersley samples per texel, on %s\n", a.size, a.size, a.samples,
@@ -147,6 +155,7 @@ Command addLutCommand(CLI::App& app, GlobalOptions& g) {
       "--check-grid", args->checkGrid,
       "Texels per axis checked on the CPU (default 16, evenly spread, first and last included; 0 = every texel)");
   cmd->add_flag("--json", args->json, "JSON report");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress; without --json, print the report only when the check fails");
   return {cmd, [args, &g] { return runLut(*args, g); }};
 }
 

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/cli_common.hpp"
+#include "cli/progress.hpp"
 #include "permute/axes.hpp"
 #include "validate/validation.hpp"
 
@@ -17,6 +18,7 @@ struct ValidateArgs {
   uint64_t samples = 4096;
   uint64_t seed = 1;
   bool json = false;
+  bool quiet = false;
   std::string precision = "fp32";
   std::vector<std::string> lights;        // empty: every light type the model shades
   std::vector<std::string> environments;  // empty: every environment mode it supports
@@ -45,26 +47,42 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
   auto gpu = openDevice(g);
   const ShaderPrecision precision = *parsePrecision(a.precision);
 
+  std::vector<Permutation> perms;
+  for (const auto& m : materials) {
+    std::vector<std::string> notes;
+    for (auto& perm : permutationsToValidate(m, lib, a.lights, a.environments, a.precision, notes))
+      perms.push_back(std::move(perm));
+    if (!a.quiet)
+      for (const auto& n : notes) std::fprintf(stderr, "%s: note: %s
+", m.sourceFile.c_str(), n.c_str());
+  }
+  size_t units = bricks.size() + perms.size();
+  if (a.unstable)
+    for (const Brick* b : bricks) units += !b->unstableFile.empty();
+  Progress progress("validate", units, a.quiet, a.json);
+
   std::vector<ValidationRecord> records, unstableRecords;
   for (const Brick* b : bricks) {
     records.push_back(validateProbe(*gpu, buildBrickProbe(lib, *b, false, precision), "brick", a.samples, a.seed));
+    progress.advance();
     if (a.unstable && !b->unstableFile.empty()) {
       // Expected to fail: it shows the problem the shipped form fixes. Reported, not judged.
       unstableRecords.push_back(
           validateProbe(*gpu, buildBrickProbe(lib, *b, true, precision), "unstable_variant", a.samples, a.seed));
+      progress.advance();
     }
   }
-  for (const auto& m : materials) {
-    std::vector<std::string> notes;
-    auto perms = permutationsToValidate(m, lib, a.lights, a.environments, a.precision, notes);
-    for (const auto& n : notes) std::fprintf(stderr, "%s: note: %s\n", m.sourceFile.c_str(), n.c_str());
-    for (const auto& perm : perms)
-      records.push_back(validateProbe(*gpu, buildPermutationProbe(lib, perm), "permutation", a.samples, a.seed));
+  for (const auto& perm : perms) {
+    records.push_back(validateProbe(*gpu, buildPermutationProbe(lib, perm), "permutation", a.samples, a.seed));
+    progress.advance();
   }
+  progress.finish();
 
   bool allPassed = true;
   for (const auto& r : records) allPassed = allPassed && r.passed();
-  if (a.json) {
+  if (a.quiet && allPassed && !a.json) {
+    // -q: nothing on success; the exit code says it.
+  } else if (a.json) {
     nlohmann::json out = nlohmann::json::array();
     for (const auto& r : records) out.push_back(toJson(r));
     for (const auto& r : unstableRecords) out.push_back(toJson(r));
@@ -97,6 +115,8 @@ Command addValidateCommand(CLI::App& app, GlobalOptions& g) {
       ->check(CLI::Range(uint64_t{1}, uint64_t{50000000}));
   cmd->add_option("--seed", args->seed, "Sampler seed");
   cmd->add_flag("--json", args->json, "One JSON record per permutation or brick");
+  cmd->add_flag("-q,--quiet", args->quiet,
+                "No progress and no notes; without --json, print the table only when a check fails");
   cmd->add_option(
          "--precision", args->precision,
          "fp32, or fp16: true half arithmetic on the fp16 domain; errors are reported, only NaN/Inf fail (docs/fp16.md)")

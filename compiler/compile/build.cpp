@@ -21,6 +21,7 @@
 #include <thread>
 #include <unordered_map>
 
+#include "compile/engine_includes.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
 #include "emit/fragment_shader.hpp"
@@ -171,6 +172,7 @@ void buildUnit(CompileUnit& u, size_t index, const std::vector<std::string>& tar
       a.fragment = compileStage(u.fragmentGlsl, u.fragmentDisplayName, u.fragmentMediumpGlsl,
                                 u.fragmentMediumpDisplayName, fragment, targets);
     }
+    a.includes = crossCompileIncludes(u.glsl, targets, u.displayName);
     u.compileMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     cache.store(u.cacheKey, a);
     if (src.remote) u.uploaded = src.remote->put(u.cacheKey, a);

@@ -6,7 +6,9 @@
 //   payload  the kernel, then the fragment shader (docs/fragment-stage.md; no words and a
 //            null reflection when it was not built), each as: u64 SPIR-V word count, the
 //            words; u64 target count, then per target u64 name length, name, u64 text length,
-//            text; u64 reflection length, reflection JSON text
+//            text; u64 reflection length, reflection JSON text;
+//            then u64 include count, then per include u64 language length, language,
+//            u64 text length, text
 // Integers are little-endian as the host writes them: the cache is per machine.
 #include "compile/shader_cache.hpp"
 
@@ -102,6 +104,11 @@ std::string encodeCacheEntry(const CompiledArtifacts& a) {
   std::string payload;
   putModule(payload, a.spirv, a.targets, a.reflection);
   putModule(payload, a.fragment.spirv, a.fragment.targets, a.fragment.reflection);
+  putU64(payload, a.includes.size());
+  for (const auto& [language, text] : a.includes) {
+    putBytes(payload, language);
+    putBytes(payload, text);
+  }
   std::string file(kMagic, sizeof kMagic);
   putU64(file, formatTag());
   putU64(file, payload.size());
@@ -120,9 +127,16 @@ bool decodeCacheEntry(const std::string& file, CompiledArtifacts& out) {
   if (XXH3_64bits(file.data() + kHeaderSize, size) != hash) return false;
   Reader r(file, kHeaderSize);
   CompiledArtifacts a;
+  uint64_t includes = 0;
   if (!readModule(r, size, a.spirv, a.targets, a.reflection) ||
-      !readModule(r, size, a.fragment.spirv, a.fragment.targets, a.fragment.reflection) || !r.atEnd())
+      !readModule(r, size, a.fragment.spirv, a.fragment.targets, a.fragment.reflection) || !r.u64(includes))
     return false;
+  for (uint64_t i = 0; i < includes; ++i) {
+    std::string language, text;
+    if (!r.str(language) || !r.str(text)) return false;
+    a.includes[language] = std::move(text);
+  }
+  if (!r.atEnd()) return false;
   out = std::move(a);
   return true;
 }

@@ -30,6 +30,9 @@ struct StageArtifacts {
 // its fragment shader (docs/fragment-stage.md; empty when the build made none).
 struct CompiledArtifacts : StageArtifacts {
   StageArtifacts fragment;
+  // "hlsl" / "msl" -> the engine include's body, when that target was asked for
+  // (engine_includes.hpp crossCompileIncludes).
+  std::map<std::string, std::string> includes;
 };
 
 // The bytes of one cache entry (format in shader_cache.cpp), as stored on disk, in a shard
@@ -49,7 +52,8 @@ class ShaderCache {
   bool enabled() const { return !dir_.empty(); }
   const std::filesystem::path& dir() const { return dir_; }
   // Version of the entry format and of the key's recipe; part of every key (build.cpp).
-  static constexpr const char* kFormatVersion = "matbricks-cache-2";  // 2: + the fragment shader
+  // 2: + the fragment shader and the HLSL/MSL includes
+  static constexpr const char* kFormatVersion = "matbricks-cache-2";
   // 32 hex digits (XXH3-128) over the given parts, each length-prefixed.
   static std::string key(const std::vector<std::string>& parts);
 

@@ -1,21 +1,32 @@
 #include "energy/energy_checks.hpp"
 
 #include <chrono>
+#include <set>
+#include <string>
 
 namespace mb::energy {
 
 void runEnergyChecks(const ShaderLibrary& lib, harness::VulkanHarness& gpu, const EnergyGrid& grid,
-                     EnergyReport& report) {
+                     EnergyReport& report, ProgressSink* progress) {
   auto t0 = std::chrono::steady_clock::now();
   report.device = gpu.deviceName();
   report.grid = grid;
   report.lobes = energyLobes(lib);
   ProbeCache probes(lib);
-  report.furnace = whiteFurnace(gpu, probes, report.lobes, grid);
+  if (progress) {
+    // Announced up front, so that the ETA holds: a unit per lobe (white furnace), one for the
+    // compensation, one per distinct brick (reciprocity).
+    std::set<std::string> bricks;
+    for (const Lobe& lobe : report.lobes)
+      for (const Brick* b : lobe.factors) bricks.insert(b->id);
+    progress->addToTotal(report.lobes.size() + 1 + bricks.size());
+  }
+  report.furnace = whiteFurnace(gpu, probes, report.lobes, grid, progress);
   for (const LobeAlbedo& a : report.furnace)
     if (a.lobe->name == "d_ggx * v_smith_ggx_correlated")
       report.compensation = multiscatterCompensation(gpu, probes, lib, a, grid);
-  report.reciprocity = reciprocity(gpu, probes, report.lobes, grid);
+  if (progress) progress->advance();
+  report.reciprocity = reciprocity(gpu, probes, report.lobes, grid, progress);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 

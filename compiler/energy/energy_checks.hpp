@@ -31,7 +31,7 @@ struct EnergyReport {
 
 // Fills `report` (not returned by value: its results point into report.lobes).
 void runEnergyChecks(const ShaderLibrary& lib, harness::VulkanHarness& gpu, const EnergyGrid& grid,
-                     EnergyReport& report);
+                     EnergyReport& report, ProgressSink* progress = nullptr);
 
 nlohmann::json energyJson(const EnergyReport& report);
 std::string energyText(const EnergyReport& report);

@@ -53,7 +53,8 @@ std::string ReciprocityResult::verdict() const {
 }
 
 std::vector<ReciprocityResult> reciprocity(harness::VulkanHarness& gpu, ProbeCache& probes,
-                                           const std::vector<Lobe>& lobes, const EnergyGrid& grid) {
+                                           const std::vector<Lobe>& lobes, const EnergyGrid& grid,
+                                           ProgressSink* progress) {
   const std::vector<Pair> pairs = randomPairs(grid);
   const size_t n = pairs.size();
   // Records 0..n-1 are (v, l), n..2n-1 the same pairs swapped.
@@ -62,10 +63,14 @@ std::vector<ReciprocityResult> reciprocity(harness::VulkanHarness& gpu, ProbeCac
     if (i >= n) std::swap(in.v, in.l);
     return in;
   };
-  std::map<std::string, BrickValues> values;
+  std::map<std::string, const Brick*> bricks;
   for (const Lobe& lobe : lobes)
-    for (const Brick* b : lobe.factors)
-      if (!values.count(b->id)) values[b->id] = sweepBrick(gpu, probes.get(*b), 2 * n, recordAt);
+    for (const Brick* b : lobe.factors) bricks.emplace(b->id, b);
+  std::map<std::string, BrickValues> values;
+  for (const auto& [id, b] : bricks) {
+    values[id] = sweepBrick(gpu, probes.get(*b), 2 * n, recordAt);
+    if (progress) progress->advance();
+  }
 
   std::vector<ReciprocityResult> out;
   for (const Lobe& lobe : lobes) {

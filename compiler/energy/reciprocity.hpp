@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/progress_sink.hpp"
 #include "energy/energy_grid.hpp"
 
 namespace mb::energy {
@@ -30,7 +31,10 @@ struct ReciprocityResult {
   static constexpr double kSymmetric = 1e-12;
 };
 
+// `progress` advances one unit per distinct brick of the lobes, as each is swept (the caller
+// announced them).
 std::vector<ReciprocityResult> reciprocity(harness::VulkanHarness& gpu, ProbeCache& probes,
-                                           const std::vector<Lobe>& lobes, const EnergyGrid& grid);
+                                           const std::vector<Lobe>& lobes, const EnergyGrid& grid,
+                                           ProgressSink* progress = nullptr);
 
 }  // namespace mb::energy

@@ -69,7 +69,7 @@ bool LobeAlbedo::exceedsOne() const {
 }
 
 std::vector<LobeAlbedo> whiteFurnace(harness::VulkanHarness& gpu, ProbeCache& probes, const std::vector<Lobe>& lobes,
-                                     const EnergyGrid& grid) {
+                                     const EnergyGrid& grid, ProgressSink* progress) {
   const std::vector<GridCell> cells = gridCells(grid);
   std::map<std::string, std::vector<size_t>> families;
   for (size_t i = 0; i < lobes.size(); ++i) families[lobes[i].familyKey()].push_back(i);
@@ -126,6 +126,7 @@ std::vector<LobeAlbedo> whiteFurnace(harness::VulkanHarness& gpu, ProbeCache& pr
         r.cells[c].convergence = std::abs(r.cells[c].reference - coarser);
       }
       std::erase_if(values, [&](const auto& kv) { return kv.first != shared; });
+      if (progress) progress->advance();
     }
   }
   return out;

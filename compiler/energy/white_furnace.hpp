@@ -19,6 +19,7 @@
 #pragma once
 #include <vector>
 
+#include "core/progress_sink.hpp"
 #include "energy/energy_grid.hpp"
 
 namespace mb::energy {
@@ -45,8 +46,9 @@ struct LobeAlbedo {
   bool exceedsOne() const;
 };
 
-// One result per lobe, in the order of `lobes`.
+// One result per lobe, in the order of `lobes`; `progress` advances one unit per lobe (the
+// caller announced them).
 std::vector<LobeAlbedo> whiteFurnace(harness::VulkanHarness& gpu, ProbeCache& probes, const std::vector<Lobe>& lobes,
-                                     const EnergyGrid& grid);
+                                     const EnergyGrid& grid, ProgressSink* progress = nullptr);
 
 }  // namespace mb::energy

@@ -30,7 +30,7 @@ std::vector<uint32_t> checkIndices(uint32_t size, uint32_t grid) {
   return idx;
 }
 
-LutCheck checkLut(const LutTable& gpu, uint32_t grid, bool withQuadrature) {
+LutCheck checkLut(const LutTable& gpu, uint32_t grid, bool withQuadrature, ProgressSink* progress) {
   auto t0 = std::chrono::steady_clock::now();
   const bool exactJudged = gpu.samples == 0;
   withQuadrature = withQuadrature || exactJudged;
@@ -43,12 +43,14 @@ LutCheck checkLut(const LutTable& gpu, uint32_t grid, bool withQuadrature) {
 
   // The texel work is independent: spread it over the cores.
   std::vector<TexelResult> results(texels.size());
+  if (progress) progress->addToTotal(texels.size());
   std::atomic<size_t> next{0};
   auto worker = [&] {
     for (size_t k; (k = next.fetch_add(1)) < texels.size();) {
       const float NoV = inputs[2 * texels[k]], rough = inputs[2 * texels[k] + 1];
       if (!exactJudged) results[k].sum = sameSum.evaluate(NoV, rough, gpu.samples);
       if (withQuadrature) results[k].quad = quadrature(NoV, rough);
+      if (progress) progress->advance();
     }
   };
   std::vector<std::thread> pool(std::max(1u, std::thread::hardware_concurrency()));

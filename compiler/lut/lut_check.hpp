@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/progress_sink.hpp"
 #include "lut/dfg_lut.hpp"
 
 namespace mb::lut {
@@ -44,6 +45,6 @@ struct LutCheck {
 std::vector<uint32_t> checkIndices(uint32_t size, uint32_t grid);
 
 // Runs the CPU side on the texels of checkIndices() x checkIndices(), on every core.
-LutCheck checkLut(const LutTable& gpu, uint32_t grid, bool withQuadrature);
+LutCheck checkLut(const LutTable& gpu, uint32_t grid, bool withQuadrature, ProgressSink* progress = nullptr);
 
 }  // namespace mb::lut

@@ -46,6 +46,7 @@ nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutatio
       {"spirv_instructions", b.spirvInstructions},
       {"files", p.files},
       {"include", p.include},
+      {"includes", p.includes},
       {"needs_fetch_hooks", needsFetchHooks(perm)},
       {"record_layout", recordLayoutJson(b.shader.layout)},
       {"reflection", b.artifacts.reflection.is_null() ? nlohmann::json::object() : b.artifacts.reflection}};

@@ -57,6 +57,11 @@ void PackageStream::add(const Permutation& perm, const BuiltPermutation& built) 
   }
   p.include = "include/" + built.shader.key + ".glsl";
   pkg_.addFile(p.include, engineInclude(p));
+  p.includes["glsl"] = p.include;
+  for (const auto& [target, body] : built.artifacts.includes) {
+    p.includes[target] = crossIncludePath(built.shader.key, target);
+    pkg_.addFile(p.includes[target], crossInclude(p, target, body));
+  }
   manifest_->add(p);
   header_->add(p);
 }

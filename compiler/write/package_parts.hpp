@@ -20,8 +20,9 @@ namespace mb {
 struct PackagedPermutation {
   const Permutation* perm = nullptr;
   const BuiltPermutation* built = nullptr;
-  std::map<std::string, std::string> files;  // target -> path in the package ("spirv/<hash>.spv")
-  std::string include;                       // "include/<key>.glsl"
+  std::map<std::string, std::string> files;     // target -> path in the package ("spirv/<hash>.spv")
+  std::string include;                          // "include/<key>.glsl"
+  std::map<std::string, std::string> includes;  // "glsl", "hlsl", "msl" -> path of that include
   // target -> path of the fragment shader ("fragment/spirv/<hash>.spv"); empty: none built
   std::map<std::string, std::string> fragmentFiles;
 };
@@ -43,6 +44,15 @@ std::string frameBlockHeader(const nlohmann::json* reflected, const std::string&
 // #line (each #line becomes a "// from <file>:<line>" comment), an include guard and a header
 // comment naming the hooks the engine defines and the entry points it gets.
 std::string engineInclude(const PackagedPermutation& p);
+// The HLSL or MSL include (target "hlsl" or "msl") around its body from the build
+// (compile/engine_includes.hpp): header comment with the exact signatures, include guard.
+std::string crossInclude(const PackagedPermutation& p, const std::string& target, const std::string& body);
+// "include/<key>.hlsl" or "include/<key>.metal".
+std::string crossIncludePath(const std::string& key, const std::string& target);
+// Shared by the includes: the guard macro (MB_INCLUDE_<KEY><SUFFIX>) and the first comment
+// lines naming the permutation.
+std::string includeGuard(const std::string& key, const std::string& suffix);
+std::string includeOrigin(const PackagedPermutation& p, const std::string& language);
 // Whether the permutation's environment calls the engine's fetch hooks (IBL modes).
 bool needsFetchHooks(const Permutation& perm);
 
