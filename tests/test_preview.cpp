@@ -18,11 +18,9 @@
 #include "preview/preview.hpp"
 #include "preview/preview_scene.hpp"
 #include "support/harness_support.hpp"
+#include "write/png_image.hpp"
 #include "support/pipeline_support.hpp"
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_PNG
-#include <stb/stb_image.h>
 
 using namespace mb;
 namespace fs = std::filesystem;
@@ -144,14 +142,10 @@ TEST_CASE("preview writes decodable PNGs of the right size", "[preview][vulkan]"
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
   for (const char* suffix : {".png", ".reference.png", ".diff.png"}) {
-    int w = 0, h = 0, n = 0;
-    const std::string png = test::readFile(dir.path / (std::string("velvet_green") + suffix));
-    unsigned char* pixels = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(png.data()),
-                                                  static_cast<int>(png.size()), &w, &h, &n, 3);
-    REQUIRE(pixels != nullptr);
-    stbi_image_free(pixels);
-    CHECK(w == 48);
-    CHECK(h == 24);
+    const Image8 image = decodePng(test::readFile(dir.path / (std::string("velvet_green") + suffix)));
+    CHECK(image.width == 48);
+    CHECK(image.height == 24);
+    CHECK(image.channels == 3);
   }
   // The directory carries the ownership marker, so a second run may replace it.
   CHECK(fs::exists(dir.path / kOutputMarkerName));

@@ -9,7 +9,7 @@
 
 #include "lut/dfg_lut.hpp"
 #include "report/lut_images.hpp"
-#include "report/png_image.hpp"
+#include "write/png_image.hpp"
 #include "support/cli_support.hpp"
 #include "write/output_paths.hpp"
 
@@ -32,29 +32,29 @@ size_t count(const std::string& text, const std::string& what) {
 }  // namespace
 
 TEST_CASE("PNG encoding round-trips through stb, and the LUT image is the table, texel for texel", "[report]") {
-  report::Image8 im{3, 2, 3, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 250, 251, 252, 253, 254, 255}};
-  report::Image8 back = report::decodePng(report::encodePng(im));
+  Image8 im{3, 2, 3, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 250, 251, 252, 253, 254, 255}};
+  Image8 back = decodePng(encodePng(im));
   CHECK(back.width == 3);
   CHECK(back.height == 2);
   CHECK(back.channels == 3);
   CHECK(back.pixels == im.pixels);
-  CHECK_THROWS(report::decodePng("not a png"));
+  CHECK_THROWS(decodePng("not a png"));
 
   lut::LutTable t{4, 0, {}};
   for (uint32_t j = 0; j < 4; ++j)
     for (uint32_t i = 0; i < 4; ++i)
       for (uint32_t c = 0; c < lut::kChannels; ++c) t.values.push_back(float(i * 0.25 + j * 0.05 + c * 0.01));
-  report::Image8 rgb = report::lutRgbImage(t), grey = report::lutChannelImage(t, 1);
+  Image8 rgb = report::lutRgbImage(t), grey = report::lutChannelImage(t, 1);
   // x = n.v index i, y = roughness index j with row 0 (smoothest) at the top.
   for (uint32_t j = 0; j < 4; ++j)
     for (uint32_t i = 0; i < 4; ++i) {
-      CHECK(rgb.pixels[(j * 4 + i) * 3 + 2] == report::toByte(t.at(i, j, 2)));
-      CHECK(grey.pixels[j * 4 + i] == report::toByte(t.at(i, j, 1)));
+      CHECK(rgb.pixels[(j * 4 + i) * 3 + 2] == toByte(t.at(i, j, 2)));
+      CHECK(grey.pixels[j * 4 + i] == toByte(t.at(i, j, 1)));
     }
-  CHECK(report::toByte(-1) == 0);
-  CHECK(report::toByte(std::nan("")) == 0);
-  CHECK(report::toByte(2) == 255);
-  CHECK(report::toByte(0.5) == 128);
+  CHECK(toByte(-1) == 0);
+  CHECK(toByte(std::nan("")) == 0);
+  CHECK(toByte(2) == 255);
+  CHECK(toByte(0.5) == 128);
 }
 
 TEST_CASE("report writes index.html and every image it references, from this run's measurements", "[report][vulkan]") {
@@ -80,12 +80,12 @@ TEST_CASE("report writes index.html and every image it references, from this run
     REQUIRE(fs::is_regular_file(file));
     const std::string bytes = test::readFile(file);
     if (file.extension() == ".png")
-      CHECK(report::decodePng(bytes).width > 0);
+      CHECK(decodePng(bytes).width > 0);
     else
       CHECK_THAT(bytes, Catch::Contains("<svg"));
   }
   CHECK(images >= 6);  // the fresnel chart, at least one lobe, the LUT and its three channels
-  CHECK(report::decodePng(test::readFile(out / "lut/dfg.png")).width == 16);
+  CHECK(decodePng(test::readFile(out / "lut/dfg.png")).width == 16);
   CHECK(fs::is_regular_file(out / "slots/fresnel.svg"));
 
   // Written again over its own output: replaced as a whole.

@@ -8,11 +8,14 @@
 #include <map>
 
 #include "cli/cli_common.hpp"
+#include "cli/progress.hpp"
 #include "bench/report.hpp"
 #include "core/data_dir.hpp"
 #include "load/scene_desc.hpp"
 #include "permute/axes.hpp"
 #include "permute/scene_plan.hpp"
+#include "preview/environment.hpp"
+#include "report/preview_renderer.hpp"
 #include "report/report_html.hpp"
 #include "report/report_run.hpp"
 #include "write/package_writer.hpp"
@@ -27,7 +30,9 @@ struct ReportArgs {
   std::string scene;
   std::string out;
   std::vector<std::string> lights, environments;  // empty: all the model shades / supports
-  bool noSlots = false, noEnergy = false, noLut = false, noCache = false;
+  bool noSlots = false, noEnergy = false, noLut = false, noCache = false, noPreviews = false, quiet = false;
+  uint32_t previewSize = 128;
+  std::vector<std::string> previewEnvironments = preview::environmentNames();
   report::ReportOptions options;
 };
 
@@ -77,6 +82,8 @@ std::string commandLine(const ReportArgs& a) {
   for (const auto& s : o.slotFilter) c += " --slot " + s;
   if (a.noSlots) c += " --no-slots";
   if (a.noEnergy) c += " --no-energy";
+  if (a.noPreviews) c += " --no-previews";
+  if (a.previewSize != ReportArgs{}.previewSize) c += " --preview-size " + std::to_string(a.previewSize);
   if (a.noLut) c += " --no-lut";
   if (o.lutSize != d.lutSize) c += " --lut-size " + std::to_string(o.lutSize);
   if (a.noCache) c += " --no-cache";
@@ -121,8 +128,13 @@ int runReport(ReportArgs& a, const GlobalOptions& g) {
   a.options.slots = !a.noSlots;
   a.options.energy = !a.noEnergy;
   a.options.lut = !a.noLut;
+  if (!a.noPreviews) a.options.previews = report::makePreviewRenderer(lib, a.previewEnvironments, a.previewSize);
   auto gpu = openDevice(g);
-  report::ReportData data = report::runReport(lib, *gpu, groups, a.options, &std::cerr);
+  size_t units = groups.size();
+  for (const auto& mp : groups) units += mp.permutations.size();
+  Progress progress("report", units, a.quiet);
+  report::ReportData data = report::runReport(lib, *gpu, groups, a.options, &progress);
+  progress.finish();
   data.command = commandLine(a);
   data.layerMessages = reportLayerMessages(*gpu);
 
@@ -130,7 +142,7 @@ int runReport(ReportArgs& a, const GlobalOptions& g) {
   PackageWriter w("report");
   for (auto& [path, bytes] : report::renderReport(data)) w.addFile(path, std::move(bytes));
   w.commit(a.out);
-  std::cout << "report: " << (fs::path(a.out) / "index.html").string() << "\n";
+  if (!a.quiet) std::cout << "report: " << (fs::path(a.out) / "index.html").string() << "\n";
   for (const auto& f : data.failures()) std::cerr << "error: " << f << "\n";
   return data.failures().empty() ? kExitOk : kExitCheckFailed;
 }
@@ -172,6 +184,14 @@ Command addReportCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_flag("--no-slots", a->noSlots, "No per-slot Pareto charts (the slowest part)")->excludes(slot);
   cmd->add_flag("--no-energy", a->noEnergy, "No albedo charts");
   cmd->add_flag("--no-lut", a->noLut, "No DFG LUT section");
+  cmd->add_flag("--no-previews", a->noPreviews, "No preview pictures (GPU, reference, difference)");
+  cmd->add_option("--preview-size", a->previewSize, "Preview edge in pixels (default 128)")
+      ->check(CLI::Range(16u, 1024u));
+  cmd->add_option("--preview-environment", a->previewEnvironments,
+                  "Environments the previews are lit by (default: studio,sky)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(preview::environmentNames()));
+  cmd->add_flag("-q,--quiet", a->quiet, "No progress and no path line on success");
   cmd->add_option("--lut-size", a->options.lutSize, "DFG LUT texels per side (default 64)")
       ->check(CLI::Range(2u, 1024u));
   cmd->add_flag("--no-cache", a->noCache, "Compile every probe (compile times without the probe cache)");

@@ -53,8 +53,7 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
     for (auto& perm : permutationsToValidate(m, lib, a.lights, a.environments, a.precision, notes))
       perms.push_back(std::move(perm));
     if (!a.quiet)
-      for (const auto& n : notes) std::fprintf(stderr, "%s: note: %s
-", m.sourceFile.c_str(), n.c_str());
+      for (const auto& n : notes) std::fprintf(stderr, "%s: note: %s\n", m.sourceFile.c_str(), n.c_str());
   }
   size_t units = bricks.size() + perms.size();
   if (a.unstable)

@@ -166,20 +166,20 @@ Image8 tonemapGpu(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const P
   std::vector<float> in(rgb.size());
   for (size_t i = 0; i < rgb.size(); ++i) in[i] = static_cast<float>(rgb[i] * o.exposure);
   const ProbeRun run = runProbeOnGpu(gpu, probe, std::move(in));
-  Image8 image{width, height, std::vector<uint8_t>(rgb.size())};
-  for (size_t i = 0; i < rgb.size(); ++i) image.rgb[i] = encodeSrgb8(run.gpu[i]);
+  Image8 image{width, height, 3, std::vector<uint8_t>(rgb.size())};
+  for (size_t i = 0; i < rgb.size(); ++i) image.pixels[i] = encodeSrgb8(run.gpu[i]);
   return image;
 }
 
 Image8 tonemapReference(const PreviewOptions& o, const std::vector<double>& rgb, uint32_t width, uint32_t height) {
   const ref::Reference* tonemap = ref::Registry::references().find(o.tonemap);
   if (!tonemap) throw std::logic_error("tonemap brick '" + o.tonemap + "' has no reference");
-  Image8 image{width, height, std::vector<uint8_t>(rgb.size())};
+  Image8 image{width, height, 3, std::vector<uint8_t>(rgb.size())};
   for (size_t p = 0; p < rgb.size() / 3; ++p) {
     const double in[3] = {rgb[p * 3] * o.exposure, rgb[p * 3 + 1] * o.exposure, rgb[p * 3 + 2] * o.exposure};
     double out[3] = {0, 0, 0};
     tonemap->eval(in, out);
-    for (int c = 0; c < 3; ++c) image.rgb[p * 3 + c] = encodeSrgb8(out[c]);
+    for (int c = 0; c < 3; ++c) image.pixels[p * 3 + c] = encodeSrgb8(out[c]);
   }
   return image;
 }
@@ -230,9 +230,9 @@ void compare(const ReferenceScene& scene, const PixelAttributes& attributes, Pre
 }
 
 Image8 heatmap(const PreviewResult& r) {
-  Image8 image{r.width, r.height, std::vector<uint8_t>(size_t{r.width} * r.height * 3, 40)};
+  Image8 image{r.width, r.height, 3, std::vector<uint8_t>(size_t{r.width} * r.height * 3, 40)};
   for (size_t p = 0; p < r.covered.size(); ++p)
-    if (r.covered[p]) heatmapColor(r.errorRatio[p], &image.rgb[p * 3]);
+    if (r.covered[p]) heatmapColor(r.errorRatio[p], &image.pixels[p * 3]);
   return image;
 }
 

@@ -6,11 +6,6 @@
 
 #include "write/package_writer.hpp"
 
-// stb_image_write's implementation lives in this file only (its header is single-file).
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#define STBI_WRITE_NO_STDIO
-#include <stb/stb_image_write.h>
-
 namespace mb::preview {
 
 uint8_t encodeSrgb8(double linear) {
@@ -32,17 +27,6 @@ void heatmapColor(double e, uint8_t rgb[3]) {
   const double t = s - i;
   for (int c = 0; c < 3; ++c)
     rgb[c] = static_cast<uint8_t>(std::lround(kStops[i][c] + (kStops[i + 1][c] - kStops[i][c]) * t));
-}
-
-std::string encodePng(const Image8& image) {
-  std::string bytes;
-  auto append = [](void* context, void* data, int size) {
-    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
-  };
-  if (!stbi_write_png_to_func(append, &bytes, static_cast<int>(image.width), static_cast<int>(image.height), 3,
-                              image.rgb.data(), static_cast<int>(image.width * 3)))
-    throw std::runtime_error("stb_image_write could not encode a PNG");
-  return bytes;
 }
 
 void writePng(const std::filesystem::path& file, const Image8& image) {

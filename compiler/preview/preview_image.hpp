@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
+#include "write/png_image.hpp"
+
 namespace mb::preview {
 
-// 8-bit RGB pixels, row 0 at the top.
-struct Image8 {
-  uint32_t width = 0, height = 0;
-  std::vector<uint8_t> rgb;
-};
+// The preview's pictures are 8-bit RGB (channels 3), row 0 at the top.
+using mb::Image8;
+using mb::encodePng;
 
 // The sRGB OETF (IEC 61966-2-1: 12.92 x below 0.0031308, else 1.055 x^(1/2.4) - 0.055) of a
 // display-referred linear value, clamped to [0, 1] and rounded to 8 bits.
@@ -24,8 +24,6 @@ uint8_t encodeSrgb8(double linear);
 // pixel outside the tolerance). Background pixels are drawn in dark grey by the caller.
 void heatmapColor(double e, uint8_t rgb[3]);
 
-// PNG bytes of `image` (stbi_write_png_to_mem); throws std::runtime_error if stb fails.
-std::string encodePng(const Image8& image);
 // encodePng, written atomically (write/package_writer.hpp).
 void writePng(const std::filesystem::path& file, const Image8& image);
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "lut/dfg_lut.hpp"
-#include "report/png_image.hpp"
+#include "write/png_image.hpp"
 
 namespace mb::report {
 

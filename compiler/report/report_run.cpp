@@ -32,26 +32,21 @@ void addUnique(std::vector<std::string>& to, const std::vector<std::string>& fro
 }
 
 MaterialSection measureMaterial(const ShaderLibrary& lib, harness::VulkanHarness& gpu, const MaterialPermutations& mp,
-                                const ReportOptions& o, std::ostream* progress) {
+                                const ReportOptions& o, ProgressSink* progress) {
   const MaterialDesc& m = *mp.material;
   MaterialSection s{m.name, m.model, m.sourceFile, mp.notes, {}, {}};
   if (o.previews)
     s.previews = o.previews(m, gpu);
   else
-    s.previews.text = "No previews: this build of matbricks has no preview renderer.";
+    s.previews.text = "No previews: not asked for (--no-previews).";
+  if (progress) progress->advance();
   for (const auto& perm : mp.permutations) {
-    auto t0 = Clock::now();
     ProbeProgram probe = buildPermutationProbe(lib, perm);
     PermutationRow row;
     row.validation = validateProbe(gpu, probe, "permutation", o.samples, o.seed);
     row.bricks = probe.shader.bricks;
     row.cost = permutationCost(lib, gpu, perm, probe, o.cost);
-    if (progress) {
-      char line[256];
-      std::snprintf(line, sizeof line, "report: %-52s %s  %.2f ns/eval  [%.1f s]\n", row.validation.key.c_str(),
-                    row.validation.passed() ? "ok  " : "FAIL", row.cost.nsPerEval, secondsSince(t0));
-      *progress << line << std::flush;
-    }
+    if (progress) progress->advance();
     s.permutations.push_back(std::move(row));
   }
   return s;
@@ -96,7 +91,7 @@ std::vector<energy::Lobe> lobesUsing(const std::vector<energy::Lobe>& all, const
 
 ReportData runReport(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
                      const std::vector<MaterialPermutations>& materials, const ReportOptions& o,
-                     std::ostream* progress) {
+                     ProgressSink* progress) {
   ReportData r;
   r.device = gpu.deviceName();
   r.toolchain = toolchainVersion();
@@ -127,7 +122,7 @@ ReportData runReport(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
     r.energy->grid = o.grid;
     r.energy->lobes = lobesUsing(energy::energyLobes(lib), usedBricks);
     energy::ProbeCache probes(lib);
-    if (!r.energy->lobes.empty()) r.energy->furnace = energy::whiteFurnace(gpu, probes, r.energy->lobes, o.grid);
+    if (!r.energy->lobes.empty()) r.energy->furnace = energy::whiteFurnace(gpu, probes, r.energy->lobes, o.grid, progress);
     r.times.push_back({"energy (white furnace)", secondsSince(t0)});
   }
 
@@ -135,7 +130,7 @@ ReportData runReport(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
     t0 = Clock::now();
     LutSection l;
     l.generated = lut::generateDfgLutOnGpu(gpu, lib, o.lutSize, 0);
-    l.check = lut::checkLut(l.generated.table, o.lutCheckGrid, true);
+    l.check = lut::checkLut(l.generated.table, o.lutCheckGrid, true, progress);
     r.lut = std::move(l);
     r.times.push_back({"DFG LUT (GPU + check)", secondsSince(t0)});
   }
@@ -144,9 +139,11 @@ ReportData runReport(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
 
 std::vector<std::string> ReportData::failures() const {
   std::vector<std::string> f;
-  for (const auto& m : materials)
+  for (const auto& m : materials) {
+    if (m.previews.failed) f.push_back(m.name + ": preview outside the tolerance of the reference render");
     for (const auto& p : m.permutations)
       if (!p.validation.passed()) f.push_back(p.validation.key + ": outside its tolerance");
+  }
   if (energy)
     for (const auto& a : energy->furnace)
       if (!a.gpuMatchesReference())

@@ -4,6 +4,7 @@
 // check against the exact integrals. Nothing is built here: every shader comes from
 // validate/, emit/bench_probe and lut/.
 #pragma once
+#include "core/progress_sink.hpp"
 #include <ostream>
 #include <string>
 #include <vector>
@@ -20,10 +21,11 @@ struct MaterialPermutations {
   std::vector<std::string> notes;  // what was skipped and why
 };
 
-// `progress` (may be null) gets one line per measured item.
+// `progress` (may be null) counts one unit per material (its previews) and per permutation,
+// and whatever bench, energy and the LUT check add to its total as they go.
 ReportData runReport(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
                      const std::vector<MaterialPermutations>& materials, const ReportOptions& options,
-                     std::ostream* progress);
+                     ProgressSink* progress);
 
 // The lobes of `all` whose every factor brick is among `bricks` (those the reported shaders
 // call), in library order.

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "report/png_image.hpp"
+#include "write/png_image.hpp"
 #include "support/chromium_pipe.hpp"
 
 namespace mb::test {
@@ -111,7 +111,7 @@ inline PageCheck checkPage(ChromiumPipe& browser, const std::string& url, double
   }
   nlohmann::json shot = browser.call("Page.captureScreenshot", {{"format", "png"}}, session, timeoutSeconds);
   c.screenshotPng = base64Decode(shot.value("data", ""));
-  report::Image8 im = report::decodePng(c.screenshotPng);
+  Image8 im = decodePng(c.screenshotPng);
   std::set<uint32_t> colours;
   for (size_t p = 0; p + im.channels <= im.pixels.size() && colours.size() < 1000; p += im.channels) {
     uint32_t rgba = 0;

@@ -1,4 +1,4 @@
-#include "report/png_image.hpp"
+#include "write/png_image.hpp"
 
 #include <stb_image.h>
 #include <stb_image_write.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace mb::report {
+namespace mb {
 namespace {
 
 void appendBytes(void* context, void* data, int size) {
@@ -44,4 +44,4 @@ uint8_t toByte(double v) {
   return uint8_t(std::lround(v * 255.0));
 }
 
-}  // namespace mb::report
+}  // namespace mb
