@@ -104,7 +104,7 @@ class Gpu {
     const bool relaxed = hasDeviceExtension(maintenance4);
     VkPhysicalDeviceMaintenance4FeaturesKHR m4{};
     m4.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_FEATURES_KHR;
-    m4.maintenance4 = VK_TRUE;
+    m4.maintenance4 = VK_TRUE;  // supported wherever the extension is (Vulkan spec "Feature Requirements")
     if (relaxed) {
       dci.enabledExtensionCount = 1;
       dci.ppEnabledExtensionNames = &maintenance4;
