@@ -3,6 +3,9 @@
 // it uses, loads their SPIR-V, fills the std140 parameter block from the generated struct and
 // the shading records from the generated record layout, shades a 32x32 lit sphere on the
 // Vulkan device, writes engine_<material>.ppm next to the binary, and checks the pixels.
+// Then it draws the same materials as an engine draws: a UV sphere mesh through the reference
+// vertex shader and each permutation's fragment shader (raster.hpp), checked against the
+// kernel at the same n, v, l, written as engine_<material>_raster.ppm.
 // Plain Vulkan 1.1, no matbricks library: this is what an outside engine would write.
 #include <vulkan/vulkan.h>
 
@@ -11,11 +14,15 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "camera.hpp"
 #include "engine_materials.hpp"
+#include "gpu.hpp"
+#include "raster.hpp"
 
 namespace em = engine_materials;
 
@@ -30,261 +37,15 @@ constexpr const em::Permutation* kPlastic = em::findPermutation(kPlasticKey);
 static_assert(kMetal->inputCount == 3 && kPlastic->inputCount == 3, "unexpected shading record inputs");
 static_assert(em::recordOffset(*kPlastic, "l") != ~0u, "records without a light direction");
 static_assert(kPlastic->paramsSize <= sizeof(em::filament_plastic_Params), "parameter struct too small");
+// The raster path binds no textures (docs/fragment-stage.md: bindings 4 + i).
+static_assert(kMetal->fragmentTextureCount == 0 && kPlastic->fragmentTextureCount == 0, "textured permutation");
 
 namespace {
 
 constexpr int kSize = 32;
-int gValidationMessages = 0;
+using namespace engine;
 
-// A zeroed Vulkan info struct with its sType set.
-template <class T>
-T info(VkStructureType type) {
-  T t{};
-  t.sType = type;
-  return t;
-}
-
-void check(VkResult r, const char* what) {
-  if (r != VK_SUCCESS) throw std::runtime_error(std::string(what) + " failed (VkResult " + std::to_string(r) + ")");
-}
-
-VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                         VkDebugUtilsMessageTypeFlagsEXT,
-                                         const VkDebugUtilsMessengerCallbackDataEXT* data, void*) {
-  if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) {
-    std::fprintf(stderr, "validation: %s\n", data->pMessage);
-    ++gValidationMessages;
-  }
-  return VK_FALSE;
-}
-
-struct Buffer {
-  VkBuffer buffer = VK_NULL_HANDLE;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  void* mapped = nullptr;
-  VkDeviceSize size = 0;
-};
-
-class Gpu {
- public:
-  Gpu() {
-    bool layer = hasLayer("VK_LAYER_KHRONOS_validation");
-    const char* layers[] = {"VK_LAYER_KHRONOS_validation"};
-    const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
-    auto app = info<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
-    app.pApplicationName = "matbricks engine example";
-    app.apiVersion = VK_API_VERSION_1_1;
-    auto ici = info<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
-    ici.pApplicationInfo = &app;
-    ici.enabledLayerCount = layer ? 1 : 0;
-    ici.ppEnabledLayerNames = layers;
-    ici.enabledExtensionCount = layer ? 1 : 0;
-    ici.ppEnabledExtensionNames = extensions;
-    check(vkCreateInstance(&ici, nullptr, &instance_), "vkCreateInstance");
-    if (layer) {
-      auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-          vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-      auto mci = info<VkDebugUtilsMessengerCreateInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
-      mci.messageSeverity =
-          VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-      mci.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                        VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-      mci.pfnUserCallback = onMessage;
-      if (create) check(create(instance_, &mci, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT");
-    }
-    std::printf("validation layer: %s\n", layer ? "on" : "not installed");
-    uint32_t count = 0;
-    vkEnumeratePhysicalDevices(instance_, &count, nullptr);
-    if (count == 0) throw std::runtime_error("no Vulkan device");
-    std::vector<VkPhysicalDevice> devices(count);
-    vkEnumeratePhysicalDevices(instance_, &count, devices.data());
-    physical_ = devices[0];
-    VkPhysicalDeviceProperties props;
-    vkGetPhysicalDeviceProperties(physical_, &props);
-    std::printf("device: %s\n", props.deviceName);
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &count, nullptr);
-    std::vector<VkQueueFamilyProperties> families(count);
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &count, families.data());
-    family_ = count;
-    for (uint32_t i = 0; i < count && family_ == count; ++i)
-      if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) family_ = i;
-    if (family_ == count) throw std::runtime_error("no compute queue");
-    float priority = 1.0f;
-    auto qci = info<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
-    qci.queueFamilyIndex = family_;
-    qci.queueCount = 1;
-    qci.pQueuePriorities = &priority;
-    auto dci = info<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
-    dci.queueCreateInfoCount = 1;
-    dci.pQueueCreateInfos = &qci;
-    check(vkCreateDevice(physical_, &dci, nullptr, &device_), "vkCreateDevice");
-    vkGetDeviceQueue(device_, family_, 0, &queue_);
-    auto pci = info<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
-    pci.queueFamilyIndex = family_;
-    check(vkCreateCommandPool(device_, &pci, nullptr, &pool_), "vkCreateCommandPool");
-  }
-  ~Gpu() {
-    vkDestroyCommandPool(device_, pool_, nullptr);
-    vkDestroyDevice(device_, nullptr);
-    if (messenger_) {
-      auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-          vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-      if (destroy) destroy(instance_, messenger_, nullptr);
-    }
-    vkDestroyInstance(instance_, nullptr);
-  }
-  Gpu(const Gpu&) = delete;
-  Gpu& operator=(const Gpu&) = delete;
-
-  Buffer buffer(VkDeviceSize size, VkBufferUsageFlags usage) {
-    Buffer b;
-    b.size = size;
-    auto bci = info<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
-    bci.size = size;
-    bci.usage = usage;
-    check(vkCreateBuffer(device_, &bci, nullptr, &b.buffer), "vkCreateBuffer");
-    VkMemoryRequirements req;
-    vkGetBufferMemoryRequirements(device_, b.buffer, &req);
-    VkPhysicalDeviceMemoryProperties mem;
-    vkGetPhysicalDeviceMemoryProperties(physical_, &mem);
-    const VkMemoryPropertyFlags want = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    uint32_t type = mem.memoryTypeCount;
-    for (uint32_t i = 0; i < mem.memoryTypeCount && type == mem.memoryTypeCount; ++i)
-      if ((req.memoryTypeBits & (1u << i)) && (mem.memoryTypes[i].propertyFlags & want) == want) type = i;
-    if (type == mem.memoryTypeCount) throw std::runtime_error("no host-visible coherent memory");
-    auto mai = info<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
-    mai.allocationSize = req.size;
-    mai.memoryTypeIndex = type;
-    check(vkAllocateMemory(device_, &mai, nullptr, &b.memory), "vkAllocateMemory");
-    check(vkBindBufferMemory(device_, b.buffer, b.memory, 0), "vkBindBufferMemory");
-    check(vkMapMemory(device_, b.memory, 0, size, 0, &b.mapped), "vkMapMemory");
-    return b;
-  }
-  void release(Buffer& b) {
-    vkUnmapMemory(device_, b.memory);
-    vkDestroyBuffer(device_, b.buffer, nullptr);
-    vkFreeMemory(device_, b.memory, nullptr);
-  }
-
-  // Runs the package's kernel ABI (docs/package.md "Kernel ABI"): records at binding 0,
-  // results at binding 1, the std140 parameter block at binding 2, the count as push constant.
-  void run(const std::vector<uint32_t>& spirv, Buffer& records, Buffer& results, Buffer* params, uint32_t count) {
-    auto smci = info<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-    smci.codeSize = spirv.size() * 4;
-    smci.pCode = spirv.data();
-    VkShaderModule module;
-    check(vkCreateShaderModule(device_, &smci, nullptr, &module), "vkCreateShaderModule");
-    VkDescriptorSetLayoutBinding bindings[3] = {};
-    for (uint32_t i = 0; i < 3; ++i) {
-      bindings[i].binding = i;
-      bindings[i].descriptorType = i == 2 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-      bindings[i].descriptorCount = 1;
-      bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
-    }
-    const uint32_t bindingCount = params ? 3 : 2;
-    auto dslci = info<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-    dslci.bindingCount = bindingCount;
-    dslci.pBindings = bindings;
-    VkDescriptorSetLayout setLayout;
-    check(vkCreateDescriptorSetLayout(device_, &dslci, nullptr, &setLayout), "vkCreateDescriptorSetLayout");
-    VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(uint32_t)};
-    auto plci = info<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
-    plci.setLayoutCount = 1;
-    plci.pSetLayouts = &setLayout;
-    plci.pushConstantRangeCount = 1;
-    plci.pPushConstantRanges = &push;
-    VkPipelineLayout pipelineLayout;
-    check(vkCreatePipelineLayout(device_, &plci, nullptr, &pipelineLayout), "vkCreatePipelineLayout");
-    auto cpci = info<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-    cpci.stage = info<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-    cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    cpci.stage.module = module;
-    cpci.stage.pName = "main";
-    cpci.layout = pipelineLayout;
-    VkPipeline pipeline;
-    check(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipeline), "vkCreateComputePipelines");
-
-    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}};
-    auto dpci = info<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
-    dpci.maxSets = 1;
-    dpci.poolSizeCount = 2;
-    dpci.pPoolSizes = sizes;
-    VkDescriptorPool descriptorPool;
-    check(vkCreateDescriptorPool(device_, &dpci, nullptr, &descriptorPool), "vkCreateDescriptorPool");
-    auto dsai = info<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
-    dsai.descriptorPool = descriptorPool;
-    dsai.descriptorSetCount = 1;
-    dsai.pSetLayouts = &setLayout;
-    VkDescriptorSet set;
-    check(vkAllocateDescriptorSets(device_, &dsai, &set), "vkAllocateDescriptorSets");
-    Buffer* buffers[3] = {&records, &results, params};
-    VkDescriptorBufferInfo infos[3];
-    VkWriteDescriptorSet writes[3];
-    for (uint32_t i = 0; i < bindingCount; ++i) {
-      infos[i] = {buffers[i]->buffer, 0, buffers[i]->size};
-      writes[i] = info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-      writes[i].dstSet = set;
-      writes[i].dstBinding = i;
-      writes[i].descriptorCount = 1;
-      writes[i].descriptorType = bindings[i].descriptorType;
-      writes[i].pBufferInfo = &infos[i];
-    }
-    vkUpdateDescriptorSets(device_, bindingCount, writes, 0, nullptr);
-
-    auto cbai = info<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
-    cbai.commandPool = pool_;
-    cbai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    cbai.commandBufferCount = 1;
-    VkCommandBuffer cmd;
-    check(vkAllocateCommandBuffers(device_, &cbai, &cmd), "vkAllocateCommandBuffers");
-    auto begin = info<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout, 0, 1, &set, 0, nullptr);
-    vkCmdPushConstants(cmd, pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(count), &count);
-    vkCmdDispatch(cmd, (count + 63) / 64, 1, 1);  // the kernel's local_size_x is 64
-    auto barrier = info<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-    barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0,
-                         nullptr, 0, nullptr);
-    check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
-    auto submit = info<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &cmd;
-    check(vkQueueSubmit(queue_, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit");
-    check(vkQueueWaitIdle(queue_), "vkQueueWaitIdle");
-
-    vkFreeCommandBuffers(device_, pool_, 1, &cmd);
-    vkDestroyDescriptorPool(device_, descriptorPool, nullptr);
-    vkDestroyPipeline(device_, pipeline, nullptr);
-    vkDestroyPipelineLayout(device_, pipelineLayout, nullptr);
-    vkDestroyDescriptorSetLayout(device_, setLayout, nullptr);
-    vkDestroyShaderModule(device_, module, nullptr);
-  }
-
- private:
-  static bool hasLayer(const char* name) {
-    uint32_t count = 0;
-    vkEnumerateInstanceLayerProperties(&count, nullptr);
-    std::vector<VkLayerProperties> layers(count);
-    vkEnumerateInstanceLayerProperties(&count, layers.data());
-    for (const auto& l : layers)
-      if (std::strcmp(l.layerName, name) == 0) return true;
-    return false;
-  }
-  VkInstance instance_ = VK_NULL_HANDLE;
-  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
-  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
-  uint32_t family_ = 0;
-  VkDevice device_ = VK_NULL_HANDLE;
-  VkQueue queue_ = VK_NULL_HANDLE;
-  VkCommandPool pool_ = VK_NULL_HANDLE;
-};
-
-std::vector<uint32_t> loadSpirv(const em::Permutation& p) {
-  const std::string path = std::string(MATBRICKS_PACKAGE_DIR) + "/" + std::string(p.spirv);
+std::vector<uint32_t> readSpirv(const std::string& path) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw std::runtime_error("cannot read " + path);
   std::vector<uint32_t> words(static_cast<size_t>(in.tellg()) / 4);
@@ -293,44 +54,69 @@ std::vector<uint32_t> loadSpirv(const em::Permutation& p) {
   return words;
 }
 
+// A file of the package, by the name the generated header gives it.
+std::vector<uint32_t> loadSpirv(std::string_view file) {
+  return readSpirv(std::string(MATBRICKS_PACKAGE_DIR) + "/" + std::string(file));
+}
+
 struct Image {
   std::vector<float> rgb = std::vector<float>(kSize * kSize * 3, 0.0f);
 };
 
-// One record per pixel covered by a unit sphere seen head-on: n from the sphere, v toward
-// the camera, one directional light from the upper left.
-Image shadeSphere(Gpu& gpu, const em::Permutation& p, const void* params, size_t paramsBytes) {
-  std::vector<int> pixels;
-  Buffer records = gpu.buffer(sizeof(float) * p.recordStride * kSize * kSize, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+// The one directional light of both paths, from the upper left, unit length.
+constexpr float kLight[3] = {-0.408248f, 0.408248f, 0.816497f};
+
+// The inputs of one shading record (the layout is the generated header's).
+struct Record {
+  float n[3], v[3], l[3];
+};
+
+// Shades `in` with p's kernel and returns each record's radiance (rgb).
+std::vector<float> shadeRecords(Gpu& gpu, const em::Permutation& p, const void* params, size_t paramsBytes,
+                                const std::vector<Record>& in) {
+  const uint32_t count = static_cast<uint32_t>(in.size());
+  Buffer records = gpu.buffer(sizeof(float) * p.recordStride * count, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   float* rec = static_cast<float*>(records.mapped);
-  const float l[3] = {-0.408248f, 0.408248f, 0.816497f};
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
-      const float sx = (x + 0.5f) / kSize * 2.0f - 1.0f, sy = 1.0f - (y + 0.5f) / kSize * 2.0f;
-      const float r2 = sx * sx + sy * sy;
-      if (r2 >= 1.0f) continue;
-      float* r = rec + pixels.size() * p.recordStride;
-      const float n[3] = {sx, sy, std::sqrt(1.0f - r2)}, v[3] = {0.0f, 0.0f, 1.0f};
-      std::memcpy(r + em::recordOffset(p, "n"), n, sizeof n);
-      std::memcpy(r + em::recordOffset(p, "v"), v, sizeof v);
-      std::memcpy(r + em::recordOffset(p, "l"), l, sizeof l);
-      pixels.push_back(y * kSize + x);
-    }
-  const uint32_t count = static_cast<uint32_t>(pixels.size());
+  for (uint32_t i = 0; i < count; ++i) {
+    float* r = rec + i * p.recordStride;
+    std::memcpy(r + em::recordOffset(p, "n"), in[i].n, sizeof in[i].n);
+    std::memcpy(r + em::recordOffset(p, "v"), in[i].v, sizeof in[i].v);
+    std::memcpy(r + em::recordOffset(p, "l"), in[i].l, sizeof in[i].l);
+  }
   Buffer results = gpu.buffer(sizeof(float) * p.resultStride * count, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   Buffer block;
   if (p.paramsSize) {
     block = gpu.buffer(paramsBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memcpy(block.mapped, params, paramsBytes);
   }
-  gpu.run(loadSpirv(p), records, results, p.paramsSize ? &block : nullptr, count);
-  Image img;
+  gpu.run(loadSpirv(p.spirv), records, results, p.paramsSize ? &block : nullptr, count);
+  std::vector<float> rgb(3 * count);
   const float* out = static_cast<const float*>(results.mapped);
   for (uint32_t i = 0; i < count; ++i)
-    for (int c = 0; c < 3; ++c) img.rgb[pixels[i] * 3 + c] = out[i * p.resultStride + c];
+    for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = out[i * p.resultStride + c];
   gpu.release(records);
   gpu.release(results);
   if (p.paramsSize) gpu.release(block);
+  return rgb;
+}
+
+// One record per pixel covered by a unit sphere seen head-on: n from the sphere, v toward
+// the camera, the light from the upper left.
+Image shadeSphere(Gpu& gpu, const em::Permutation& p, const void* params, size_t paramsBytes) {
+  std::vector<int> pixels;
+  std::vector<Record> records;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const float sx = (x + 0.5f) / kSize * 2.0f - 1.0f, sy = 1.0f - (y + 0.5f) / kSize * 2.0f;
+      const float r2 = sx * sx + sy * sy;
+      if (r2 >= 1.0f) continue;
+      records.push_back({{sx, sy, std::sqrt(1.0f - r2)}, {0.0f, 0.0f, 1.0f}, {kLight[0], kLight[1], kLight[2]}});
+      pixels.push_back(y * kSize + x);
+    }
+  const std::vector<float> rgb = shadeRecords(gpu, p, params, paramsBytes, records);
+  Image img;
+  for (size_t i = 0; i < pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) img.rgb[pixels[i] * 3 + c] = rgb[i * 3 + c];
   return img;
 }
 
@@ -364,6 +150,128 @@ void writePpm(const Image& img, const std::string& path) {
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 
+// The raster path's frame block: the camera, and the compute path's light with the unit
+// illuminance the kernel shades with (its probe scene's vec3(1.0)).
+em::MbFrameBlock frameBlock(const Camera& camera) {
+  em::MbFrameBlock f{};
+  for (int i = 0; i < 3; ++i) f.cameraPosition[i] = float(camera.eye[i]);
+  f.lightCounts[0] = 1;
+  for (int i = 0; i < 3; ++i) {
+    f.dirLights[0].direction[i] = kLight[i];
+    f.dirLights[0].illuminance[i] = 1.0f;
+  }
+  return f;
+}
+
+// The record the fragment shader builds where the ray through (x + 0.5, y + 0.5) meets the
+// mesh: the normalized interpolated normal, v towards the eye, the light.
+std::optional<Record> recordAt(const Mesh& mesh, const Camera& camera, double x, double y) {
+  double dir[3];
+  camera.ray(x, y, kSize, dir);
+  const std::optional<Hit> hit = castRay(mesh, camera.eye, dir);
+  if (!hit) return std::nullopt;
+  double v[3];
+  for (int i = 0; i < 3; ++i) v[i] = camera.eye[i] - hit->position[i];
+  const double nl = std::sqrt(hit->normal[0] * hit->normal[0] + hit->normal[1] * hit->normal[1] +
+                              hit->normal[2] * hit->normal[2]),
+               vl = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  Record r;
+  for (int i = 0; i < 3; ++i) {
+    r.n[i] = float(hit->normal[i] / nl);
+    r.v[i] = float(v[i] / vl);
+    r.l[i] = kLight[i];
+  }
+  return r;
+}
+
+// Draws p's fragment shader over a UV sphere with the reference vertex shader and checks it:
+// pixels well inside the silhouette against p's compute kernel at the same n, v, l; pixels
+// well outside are the clear colour.
+Image renderSphere(Gpu& gpu, const em::Permutation& p, const void* params, size_t paramsBytes,
+                   const std::vector<uint32_t>& vertexSpirv, const std::string& name) {
+  const Camera camera;
+  const Mesh mesh = uvSphere(32, 64);
+  DrawSpec spec;
+  spec.vertexSpirv = vertexSpirv;
+  spec.fragmentSpirv = loadSpirv(p.fragmentSpirv);
+  camera.pushConstants(spec.pushConstants);
+  if (p.paramsSize)
+    spec.params.assign(static_cast<const unsigned char*>(params),
+                       static_cast<const unsigned char*>(params) + paramsBytes);
+  const em::MbFrameBlock frame = frameBlock(camera);
+  spec.frame.assign(reinterpret_cast<const unsigned char*>(&frame),
+                    reinterpret_cast<const unsigned char*>(&frame) + sizeof frame);
+  spec.size = kSize;
+  const std::vector<float> rgba = draw(gpu, mesh, spec);
+
+  // The rasterizer snaps vertices to 1/2^subPixelPrecisionBits of a pixel (Vulkan spec
+  // "Rasterization"), which moves the point it samples on a triangle by up to half a step in x
+  // and y. So the reference is the kernel at the pixel centre and at the four corners of that
+  // +-half-step square: where shading is smooth, the rendered value lies between their minimum
+  // and maximum, up to fp32 rounding (the two paths normalize and interpolate in a different
+  // order: 1e-4 relative, ~800 ulps, plus 1e-6 absolute near zero).
+  const double h = 0.5 / double(1u << gpu.limits().subPixelPrecisionBits);
+  const double offsets[5][2] = {{0, 0}, {-h, -h}, {h, -h}, {-h, h}, {h, h}};
+  const double pixelAtOrigin = 2.0 * camera.tanHalfFov * camera.eye[2] / kSize;
+  std::vector<int> inside;
+  std::vector<Record> records;
+  int background = 0, notBackground = 0, missed = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      double dir[3];
+      camera.ray(x, y, kSize, dir);
+      // Distance of the ray from the sphere's centre (the eye is on the z axis).
+      const double d = camera.eye[2] * std::hypot(dir[0], dir[1]) / std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + 1.0);
+      const float* px = &rgba[(y * kSize + x) * 4];
+      if (d > 1.0 + pixelAtOrigin) {  // a pixel clear of the silhouette: the mesh is inside the sphere
+        ++background;
+        notBackground += px[0] != 0.0f || px[1] != 0.0f || px[2] != 0.0f || px[3] != 0.0f;
+      } else if (d < 0.8) {
+        for (const auto& o : offsets) {
+          const std::optional<Record> r = recordAt(mesh, camera, x + o[0], y + o[1]);
+          missed += r ? 0 : 1;
+          if (r) records.push_back(*r);
+        }
+        inside.push_back(y * kSize + x);
+      }
+    }
+  expect(missed == 0, name + " raster: every centre ray hits the mesh");
+  expect(background > 100 && notBackground == 0, name + " raster: " + std::to_string(notBackground) + " of " +
+                                                     std::to_string(background) +
+                                                     " background pixels are not the clear colour");
+  if (missed) return {};
+  const std::vector<float> reference = shadeRecords(gpu, p, params, paramsBytes, records);
+  int outside = 0, opaque = 0;
+  double worst = 0.0, widest = 0.0;
+  for (size_t k = 0; k < inside.size(); ++k) {
+    const float* px = &rgba[inside[k] * 4];
+    opaque += px[3] == 1.0f;
+    for (int c = 0; c < 3; ++c) {
+      float lo = reference[k * 15 + c], hi = lo;
+      for (int o = 1; o < 5; ++o) {
+        lo = std::min(lo, reference[(k * 5 + o) * 3 + c]);
+        hi = std::max(hi, reference[(k * 5 + o) * 3 + c]);
+      }
+      const double scale = std::max(std::fabs(lo), std::fabs(hi));
+      const double tol = 1e-4 * scale + 1e-6;
+      outside += px[c] < lo - tol || px[c] > hi + tol;
+      if (scale > 0.0) {
+        worst = std::max(worst, std::fabs(px[c] - reference[k * 15 + c]) / scale);
+        widest = std::max(widest, (hi - lo) / scale);
+      }
+    }
+  }
+  expect(inside.size() > 200 && outside == 0 && opaque == int(inside.size()),
+         name + " raster: " + std::to_string(inside.size()) + " centre pixels, " + std::to_string(outside) +
+             " channels outside the kernel's range, " + std::to_string(inside.size() - opaque) +
+             " with alpha != 1 (largest difference from the kernel at the pixel centre " + std::to_string(worst) +
+             " relative; widest snapping range " + std::to_string(widest) + ")");
+  Image img;
+  for (int i = 0; i < kSize * kSize; ++i)
+    for (int c = 0; c < 3; ++c) img.rgb[i * 3 + c] = rgba[i * 4 + c];
+  return img;
+}
+
 }  // namespace
 
 int main(int, char** argv) {
@@ -377,6 +285,11 @@ int main(int, char** argv) {
     const Image metalImage = shadeSphere(gpu, *kMetal, &metal, sizeof metal);
     checkImage(metalImage, "ue4_metal");
     writePpm(metalImage, dir + "/engine_ue4_metal.ppm");
+    // The same material through its fragment shader, drawn as an engine draws.
+    const std::vector<uint32_t> vertexSpirv = readSpirv(ENGINE_VERTEX_SPV);
+    const Image metalRaster = renderSphere(gpu, *kMetal, &metal, sizeof metal, vertexSpirv, "ue4_metal");
+    checkImage(metalRaster, "ue4_metal raster");
+    writePpm(metalRaster, dir + "/engine_ue4_metal_raster.ppm");
 
     em::filament_plastic_Params plastic{};
     const float red[3] = {0.8f, 0.1f, 0.1f};
@@ -386,6 +299,9 @@ int main(int, char** argv) {
     const Image smooth = shadeSphere(gpu, *kPlastic, &plastic, sizeof plastic);
     checkImage(smooth, "filament_plastic");
     writePpm(smooth, dir + "/engine_filament_plastic.ppm");
+    const Image plasticRaster = renderSphere(gpu, *kPlastic, &plastic, sizeof plastic, vertexSpirv, "filament_plastic");
+    checkImage(plasticRaster, "filament_plastic raster");
+    writePpm(plasticRaster, dir + "/engine_filament_plastic_raster.ppm");
 
     // The parameter block is live: a rougher plastic must shade differently.
     plastic.roughness = 0.9f;
