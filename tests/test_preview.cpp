@@ -21,7 +21,6 @@
 #include "write/png_image.hpp"
 #include "support/pipeline_support.hpp"
 
-
 using namespace mb;
 namespace fs = std::filesystem;
 

@@ -162,7 +162,7 @@ Command addPreviewCommand(CLI::App& app, GlobalOptions& g) {
   auto args = std::make_shared<PreviewArgs>();
   CLI::App* cmd = app.add_subcommand(
       "preview", "Render materials on spheres through their fragment shaders, and compare with the reference render");
-  cmd->add_option("materials", args->materials, "Material files (.json, .mat, .gltf, .glb)")->required();
+  cmd->add_option("materials", args->materials, kMaterialFilesHelp)->required();
   cmd->add_option("-o,--output", args->output,
                   "Directory (new, empty or matbricks-written) for <material>.png, .reference.png and .diff.png, or "
                   "one X.png (one material; X.reference.png and X.diff.png beside it)")

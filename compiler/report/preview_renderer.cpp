@@ -13,7 +13,7 @@ PreviewRenderer makePreviewRenderer(const ShaderLibrary& lib, std::vector<std::s
   // Shared by the copies of the returned function: one build of each environment per report.
   auto prepared = std::make_shared<std::map<std::string, preview::PreviewEnvironment>>();
   return [&lib, environments = std::move(environments), size, prepared](const MaterialDesc& material,
-                                                                         harness::VulkanHarness& gpu) {
+                                                                        harness::VulkanHarness& gpu) {
     PreviewSet set;
     preview::PreviewOptions options;
     options.size = size;

@@ -19,7 +19,7 @@ struct PreviewImage {
 
 struct PreviewSet {
   std::vector<PreviewImage> images;
-  std::string text;  // what was rendered and its measured error, or why nothing was
+  std::string text;     // what was rendered and its measured error, or why nothing was
   bool failed = false;  // a GPU pixel outside the permutation's tolerance of the reference
 };
 

@@ -122,7 +122,8 @@ ReportData runReport(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
     r.energy->grid = o.grid;
     r.energy->lobes = lobesUsing(energy::energyLobes(lib), usedBricks);
     energy::ProbeCache probes(lib);
-    if (!r.energy->lobes.empty()) r.energy->furnace = energy::whiteFurnace(gpu, probes, r.energy->lobes, o.grid, progress);
+    if (!r.energy->lobes.empty())
+      r.energy->furnace = energy::whiteFurnace(gpu, probes, r.energy->lobes, o.grid, progress);
     r.times.push_back({"energy (white furnace)", secondsSince(t0)});
   }
 
