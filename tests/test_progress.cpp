@@ -131,7 +131,7 @@ TEST_CASE("progress on a terminal redraws one line and ends it", "[progress]") {
   CHECK(Progress::formatDuration(3725) == "1:02:05");
 }
 
-TEST_CASE("-q: long commands print nothing on success", "[progress][vulkan]") {
+TEST_CASE("quiet long commands (-q) print nothing on success", "[progress][vulkan]") {
   namespace fs = std::filesystem;
   const fs::path dir = mb::test::freshTempDir("progress", "quiet");
   const std::string mat = (mb::test::sourceDir() / "materials" / "ue4_metal.json").string();
