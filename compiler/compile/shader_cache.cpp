@@ -49,7 +49,9 @@ class Reader {
   }
   bool raw(void* dst, uint64_t size) {
     if (bytes_.size() - pos_ < size) return false;
-    std::memcpy(dst, bytes_.data() + pos_, size);
+    // An empty module (a kernel-only entry has no fragment words) has a null data(): memcpy
+    // must not see it, even for 0 bytes (UBSan's nonnull check).
+    if (size != 0) std::memcpy(dst, bytes_.data() + pos_, size);
     pos_ += size;
     return true;
   }
