@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "bench/parallel.hpp"
+#include "core/texel_axis.hpp"
 #include "common/ibl_reference.hpp"
 
 namespace mb::bench {
@@ -48,17 +49,9 @@ DfgLut quantize(const DfgLut& lut, LutFormat format) {
 
 DfgSample sampleBilinear(const DfgLut& lut, double u, double v) {
   const int n = static_cast<int>(lut.size);
-  // Texel centres sit at (i + 0.5)/n: the continuous texel coordinate is u n - 0.5.
-  auto axis = [n](double t, int& i0, int& i1, double& f) {
-    double c = t * n - 0.5, fl = std::floor(c);
-    f = c - fl;
-    i0 = std::clamp(static_cast<int>(fl), 0, n - 1);
-    i1 = std::clamp(static_cast<int>(fl) + 1, 0, n - 1);
-  };
-  int i0, i1, j0, j1;
-  double fu, fv;
-  axis(u, i0, i1, fu);
-  axis(v, j0, j1, fv);
+  const TexelAxis x = texelAxis(u, n), y = texelAxis(v, n);
+  const int i0 = x.i0, i1 = x.i1, j0 = y.i0, j1 = y.i1;
+  const double fu = x.w, fv = y.w;
   auto lerp2 = [&](const std::vector<double>& c) {
     auto at = [&](int i, int j) { return c[size_t(j) * n + i]; };
     double lo = at(i0, j0) + (at(i1, j0) - at(i0, j0)) * fu;

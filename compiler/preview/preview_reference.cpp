@@ -1,5 +1,7 @@
 #include "preview/preview_reference.hpp"
 
+#include "core/texel_axis.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -19,18 +21,9 @@ Vec3 at(const std::vector<float>& target, size_t pixel) {
 }  // namespace
 
 ref::Vec3 sampleDfgLut(const lut::LutTable& table, double u, double v) {
-  const int size = static_cast<int>(table.size);
-  auto axis = [size](double coord, int& i0, int& i1, double& w) {
-    const double t = coord * size - 0.5;
-    const double f = std::floor(t);
-    w = t - f;
-    i0 = std::clamp(static_cast<int>(f), 0, size - 1);
-    i1 = std::clamp(static_cast<int>(f) + 1, 0, size - 1);
-  };
-  int i0, i1, j0, j1;
-  double wu, wv;
-  axis(u, i0, i1, wu);
-  axis(v, j0, j1, wv);
+  const TexelAxis x = texelAxis(u, static_cast<int>(table.size)), y = texelAxis(v, static_cast<int>(table.size));
+  const int i0 = x.i0, i1 = x.i1, j0 = y.i0, j1 = y.i1;
+  const double wu = x.w, wv = y.w;
   double c[3];
   for (uint32_t k = 0; k < 3; ++k) {
     auto texel = [&](int i, int j) {
