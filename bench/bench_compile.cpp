@@ -31,6 +31,7 @@
 #include <thread>
 #include <type_traits>
 
+#include "core/data_dir.hpp"
 #include "bench/cost.hpp"
 #include "compile/build.hpp"
 #include "compile/glsl_compiler.hpp"
@@ -71,7 +72,7 @@ double peakRssMiB() {
 
 std::vector<MaterialDesc> exampleMaterials(const ShaderLibrary& lib) {
   std::vector<MaterialDesc> out;
-  for (const auto& e : fs::directory_iterator(fs::path(MB_SOURCE_DIR) / "materials"))
+  for (const auto& e : fs::directory_iterator(mb::compiledSourceDir() / "materials"))
     if (e.path().extension() == ".json") out.push_back(loadMaterialJson(e.path().string(), lib));
   std::sort(out.begin(), out.end(), [](auto& a, auto& b) { return a.name < b.name; });
   return out;

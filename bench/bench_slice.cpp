@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "core/data_dir.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "emit/emitter.hpp"
 #include "permute/permutation.hpp"
@@ -38,7 +39,7 @@ int main(int argc, char** argv) {
   uint64_t evalCount = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 1u << 20;
   ShaderLibrary lib = ShaderLibrary::load(ShaderLibrary::defaultRoot());
   std::vector<MaterialDesc> materials;
-  for (const auto& e : fs::directory_iterator(fs::path(MB_SOURCE_DIR) / "materials"))
+  for (const auto& e : fs::directory_iterator(mb::compiledSourceDir() / "materials"))
     if (e.path().extension() == ".json") materials.push_back(loadMaterialJson(e.path().string(), lib));
   std::sort(materials.begin(), materials.end(), [](auto& a, auto& b) { return a.name < b.name; });
   auto perms = permutationsFor(materials);

@@ -10,10 +10,12 @@
 #include <string>
 #include <unistd.h>
 
+#include "support/build_paths.hpp"
+
 int main(int argc, char* argv[]) {
   ::setenv("VK_ICD_FILENAMES", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json", 0);
   ::setenv("MATBRICKS_VALIDATION", "1", 0);
-  ::setenv("MATBRICKS_CLI", MB_CLI_PATH, 0);
+  ::setenv("MATBRICKS_CLI", mb::test::cliPath().c_str(), 0);
   // Compiles in tests (and the CLI runs they start) use a cache of their own, never the
   // user's ~/.cache/matbricks: one directory per test process, removed when it ends. Tests of
   // concurrent cache use make their own shared directory.

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/build_paths.hpp"
 #include "compile/build.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
@@ -128,8 +129,8 @@ TEST_CASE("compile writes each permutation's fragment shader in every target, wi
   }
   tu += "int main() { return 0; }\n";
   std::ofstream(dir / "a" / "use.cpp") << tu;
-  const int rc = std::system(("cd " + (dir / "a").string() +
-                              " && " MB_CXX_COMPILER " -std=c++17 -Wall -Wextra -Werror -fsyntax-only "
+  const int rc = std::system(("cd " + (dir / "a").string() + " && " + test::cxxCompiler() +
+                              " -std=c++17 -Wall -Wextra -Werror -fsyntax-only "
                               "use.cpp > compile.log 2>&1")
                                  .c_str());
   INFO(test::readFile(dir / "a" / "compile.log"));

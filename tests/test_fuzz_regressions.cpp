@@ -8,6 +8,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "support/build_paths.hpp"
 #include "support/pipeline_support.hpp"
 #include "targets/fuzz_targets.hpp"
 
@@ -23,7 +24,7 @@ std::string readBytes(const fs::path& p) {
 // The seed files of `target` named by fuzz/seeds.txt ("<target> <dir>/*.<ext>" lines).
 std::vector<fs::path> seedFiles(const std::string& target) {
   std::vector<fs::path> out;
-  std::ifstream list(fs::path(MB_FUZZ_DIR) / "seeds.txt");
+  std::ifstream list(mb::test::fuzzDir() / "seeds.txt");
   std::string line;
   while (std::getline(list, line)) {
     std::istringstream fields(line);
@@ -40,7 +41,7 @@ std::vector<fs::path> seedFiles(const std::string& target) {
 // docs/bad-inputs.md for the campaigns run).
 std::vector<fs::path> regressionFiles(const std::string& target) {
   std::vector<fs::path> out;
-  fs::path dir = fs::path(MB_FUZZ_DIR) / "regressions" / target;
+  fs::path dir = mb::test::fuzzDir() / "regressions" / target;
   if (!fs::is_directory(dir)) return out;
   for (const auto& e : fs::directory_iterator(dir))
     if (e.is_regular_file()) out.push_back(e.path());

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <optional>
 
+#include "support/build_paths.hpp"
 #include "common/reference.hpp"
 #include "fake_library.hpp"
 #include "library/shader_library.hpp"
@@ -159,7 +160,7 @@ TEST_CASE("defaultRoot honours MATBRICKS_SHADERLIB", "[library]") {
   setenv("MATBRICKS_SHADERLIB", "/some/where", 1);
   CHECK(ShaderLibrary::defaultRoot() == std::filesystem::path("/some/where"));
   unsetenv("MATBRICKS_SHADERLIB");
-  CHECK(ShaderLibrary::defaultRoot() == std::filesystem::path(MB_SOURCE_DIR) / "shaderlib");
+  CHECK(ShaderLibrary::defaultRoot() == mb::test::buildSourceDir() / "shaderlib");
   if (saved) setenv("MATBRICKS_SHADERLIB", saved->c_str(), 1);
 }
 

@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/build_paths.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "emit/emitter.hpp"
 #include "emit/fp16_rewrite.hpp"
@@ -203,8 +204,8 @@ TEST_CASE("the C++ header compiles, finds every key, and its std140 asserts can 
   tu += "int main() { return 0; }\n";
   std::ofstream(dir / "pkg" / "use.cpp") << tu;
   auto compile = [&](const std::string& file) {
-    return std::system(("cd " + (dir / "pkg").string() +
-                        " && " MB_CXX_COMPILER " -std=c++17 -Wall -Wextra -Werror "
+    return std::system(("cd " + (dir / "pkg").string() + " && " + test::cxxCompiler() +
+                        " -std=c++17 -Wall -Wextra -Werror "
                         "-fsyntax-only " +
                         file + " > compile.log 2>&1")
                            .c_str());

@@ -12,9 +12,11 @@ fs::path dataRoot() {
       const fs::path installed = (exe.parent_path() / ".." / "share" / "matbricks").lexically_normal();
       if (fs::exists(installed / "shaderlib" / "manifest.json", ec)) return installed;
     }
-    return fs::path(MB_SOURCE_DIR);
+    return compiledSourceDir();
   }();
   return root;
 }
+
+fs::path compiledSourceDir() { return fs::path(MB_SOURCE_DIR); }
 
 }  // namespace mb

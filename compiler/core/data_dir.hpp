@@ -11,4 +11,7 @@ namespace mb {
 // else the source tree compiled in (MB_SOURCE_DIR).
 std::filesystem::path dataRoot();
 
+// The source tree this program was built from (for tests and benchmarks, which run in it).
+std::filesystem::path compiledSourceDir();
+
 }  // namespace mb

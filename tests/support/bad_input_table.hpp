@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "support/build_paths.hpp"
 #include "support/bad_input_cases.hpp"
 
 namespace mb::test {
@@ -25,7 +26,7 @@ inline std::string codeCell(const std::string& text) {
 // The coverage-guided fuzzing section: what runs, and the latest counts and rates that
 // scripts/fuzz.sh measured (fuzz/results.md, copied there from build-asan/fuzz-results.md).
 inline std::string fuzzingSection() {
-  std::ifstream in(std::filesystem::path(MB_FUZZ_DIR) / "results.md", std::ios::binary);
+  std::ifstream in(mb::test::fuzzDir() / "results.md", std::ios::binary);
   std::string results((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   return "\n## Coverage-guided fuzzing\n\n"
          "Five libFuzzer targets ([fuzz/](../fuzz/), [fuzzing.md](fuzzing.md)) feed the loaders inputs\n"

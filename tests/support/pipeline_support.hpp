@@ -9,13 +9,14 @@
 #include <vector>
 #include <sys/wait.h>
 
+#include "support/build_paths.hpp"
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
 #include "load/scene_desc.hpp"
 
 namespace mb::test {
 
-inline std::filesystem::path sourceDir() { return MB_SOURCE_DIR; }
+inline std::filesystem::path sourceDir() { return buildSourceDir(); }
 
 inline const ShaderLibrary& shippedLibrary() {
   static ShaderLibrary lib = ShaderLibrary::load(ShaderLibrary::defaultRoot());
