@@ -13,6 +13,7 @@
 #include "compile/build.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
+#include "core/cpp_identifiers.hpp"
 #include "load/scene_desc.hpp"
 #include "permute/scene_plan.hpp"
 #include "write/depfile.hpp"
@@ -125,6 +126,9 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
     throw CLI::ValidationError("--depfile needs -o DIR (its target is DIR/manifest.json)");
   if (a.noCache && !a.cacheUrl.empty())
     throw CLI::ValidationError("--cache-url conflicts with --no-cache (which turns every cache off)");
+  if (std::string why = cppNamespaceRefusal(a.cppNamespace); !why.empty())
+    throw DiagnosticError(
+        {{Severity::Error, "E-INVALID-NAME", {"--namespace", 0, 0}, "'" + a.cppNamespace + "' " + why}});
   ShardSpec shard;
   if (!a.shard.empty()) {
     std::string why;
@@ -168,6 +172,8 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
   std::unique_ptr<RemoteCache> remote = mergeFrom ? nullptr : openRemoteCache(a);
   options.remote = remote.get();
   refuseUnsafeOutputs(a, lib, scene, materials, options.cacheDir, protectedInputs);
+  // A path the depfile cannot carry is refused before anything is compiled or written.
+  if (!a.depfile.empty()) checkDepfilePaths(depfileTarget(a.out), compileInputs(lib, plan.required, {}, {a.scene}));
   // Streamed: each window of permutations goes to the staged package (or shard) as soon as it
   // is built, so memory stays flat however large the scene (docs/targets.md "Memory").
   options.window = a.streamWindow;
@@ -220,10 +226,8 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
   if (!a.out.empty()) writer.commit(a.out);
   if (!a.depfile.empty()) {
     // After the package, so a failed compile leaves the previous depfile with its package.
-    const std::string absTarget =
-        std::filesystem::absolute(std::filesystem::path(a.out) / "manifest.json").lexically_normal().generic_string();
     PackageWriter::writeFileAtomically(
-        a.depfile, makeDepfile(absTarget, compileInputs(lib, plan.required, glslInputs, {a.scene})));
+        a.depfile, makeDepfile(depfileTarget(a.out), compileInputs(lib, plan.required, glslInputs, {a.scene})));
   }
   if (!a.quiet) {
     std::string what = std::to_string(stats.permutations) + " permutation(s)";

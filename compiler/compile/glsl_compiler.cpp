@@ -13,6 +13,8 @@
 #include <spirv-tools/libspirv.hpp>
 #include <spirv-tools/optimizer.hpp>
 
+#include "compile/glslang_setup.hpp"
+
 namespace mb {
 namespace {
 
@@ -93,17 +95,13 @@ std::vector<uint32_t> frontEnd(const std::string& source, const std::string& dis
                                CompileStageTimes& times) {
   ensureGlslangInitialized();
   auto t0 = Clock::now();
-  const EShLanguage language = stage == ShaderStage::Fragment ? EShLangFragment
-                               : stage == ShaderStage::Vertex ? EShLangVertex
-                                                              : EShLangCompute;
+  const EShLanguage language = glslangLanguage(stage);
   glslang::TShader shader(language);
   const char* text = source.c_str();
   const char* name = displayName.c_str();
   shader.setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
-  shader.setEnvInput(glslang::EShSourceGlsl, language, glslang::EShClientVulkan, 100);
-  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
-  const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+  setVulkanEnvironment(shader, language);
+  const auto messages = kVulkanMessages;
   if (!shader.parse(GetDefaultResources(), 450, false, messages)) {
     throw DiagnosticError(parseInfoLog(shader.getInfoLog(), LineMap(source, displayName), displayName));
   }

@@ -434,7 +434,7 @@ EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm,
 
   GlslWriter w(out.fileName);
   writeHeader(w, "permutation " + out.key, precision);
-  w.line("// Material '" + mat.name + "' (" + mat.sourceFile + "), model '" + mat.model + "'.");
+  w.line(oneLineText("// Material '" + mat.name + "' (" + mat.sourceFile + "), model '" + mat.model + "'."));
   writeDefines(w, perm);
   // Bind each role of the skeleton to the brick the material chose.
   const auto roles = boundRoles(lib, perm);

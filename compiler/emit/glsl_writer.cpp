@@ -11,7 +11,7 @@ void GlslWriter::line(const std::string& text) {
 }
 
 void GlslWriter::include(const std::string& sourcePath, const std::string& text, int firstLine) {
-  line("#line " + std::to_string(firstLine) + " \"" + sourcePath + "\"");
+  line("#line " + std::to_string(firstLine) + " \"" + oneLineText(sourcePath) + "\"");
   size_t start = 0;
   while (start < text.size()) {
     size_t end = text.find('\n', start);
@@ -21,6 +21,20 @@ void GlslWriter::include(const std::string& sourcePath, const std::string& text,
   }
   // The directive names the number of the line that follows it.
   line("#line " + std::to_string(lines_ + 2) + " \"" + displayName_ + "\"");
+}
+
+std::string oneLineText(const std::string& text) {
+  static const char* const kHex = "0123456789abcdef";
+  std::string out;
+  for (char c : text) {
+    auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f || c == '"')
+      out += std::string("\\x") + kHex[u >> 4] + kHex[u & 0xf];
+    else
+      out += c;
+  }
+  if (!out.empty() && out.back() == '\\') out += ' ';
+  return out;
 }
 
 std::string glslFloat(double value) {

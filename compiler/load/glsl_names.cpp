@@ -1,6 +1,9 @@
 #include "load/glsl_names.hpp"
 
+#include <cctype>
 #include <set>
+
+#include "core/cpp_identifiers.hpp"
 
 namespace mb {
 
@@ -61,14 +64,6 @@ bool isOpaqueTypeName(const std::string& name) {
   return false;
 }
 
-// Identifiers of the generated materialInputs() / evaluateMaterial() (compiler/emit/emitter.cpp):
-// a user parameter of one of these names would redeclare or shadow them.
-const std::set<std::string>& apiNames() {
-  static const std::set<std::string> names = {"m",  "p",     "f",   "n",           "v",       "l",
-                                              "px", "light", "env", "illuminance", "surface", "unused_"};
-  return names;
-}
-
 bool startsWith(const std::string& s, const std::string& prefix) { return s.compare(0, prefix.size(), prefix) == 0; }
 
 }  // namespace
@@ -79,8 +74,122 @@ std::string reservedNameReason(const std::string& name) {
     return "reserved by GLSL (names starting with 'gl_' or containing '__')";
   if (startsWith(name, "mb_") || startsWith(name, "MB_"))
     return "reserved for matbricks' generated code (names starting with 'mb_' or 'MB_')";
-  if (apiNames().count(name)) return "already used by the generated materialInputs()/evaluateMaterial()";
+  // The package's C++ header declares every parameter as a member of its parameter struct.
+  if (isCppKeyword(name)) return "a C++ keyword (the package's C++ header declares the parameter as a struct member)";
   return {};
+}
+
+std::string reservedNameReason(const std::string& name, const std::map<std::string, std::string>& generated) {
+  std::string reason = reservedNameReason(name);
+  if (!reason.empty()) return reason;
+  auto it = generated.find(name);
+  return it == generated.end() ? std::string() : "already used by the generated code (" + it->second + ")";
+}
+
+std::vector<DeclaredName> globalNamesOf(const std::string& glsl) {
+  std::vector<DeclaredName> out;
+  auto isStart = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+  auto isPart = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  auto add = [&](const DeclaredName& d) {
+    if (d.name.empty() || glslWords().count(d.name) || isOpaqueTypeName(d.name)) return;
+    for (const auto& o : out)
+      if (o.name == d.name) return;
+    out.push_back(d);
+  };
+  int line = 0, column = 1, braces = 0, parens = 0;
+  bool lineStart = true, declaratorDone = false, structNext = false;
+  DeclaredName last;
+  auto resetStatement = [&] {
+    declaratorDone = false;
+    structNext = false;
+    last = {};
+  };
+  for (size_t i = 0; i < glsl.size();) {
+    const char c = glsl[i];
+    auto advance = [&](size_t n) {
+      for (size_t k = 0; k < n && i < glsl.size(); ++k, ++i) {
+        if (glsl[i] == '\n') {
+          ++line;
+          column = 1;
+        } else {
+          ++column;
+        }
+      }
+    };
+    if (c == '\n') {
+      lineStart = true;
+      advance(1);
+      continue;
+    }
+    if (c == '/' && i + 1 < glsl.size() && glsl[i + 1] == '/') {
+      while (i < glsl.size() && glsl[i] != '\n') advance(1);
+      continue;
+    }
+    if (c == '/' && i + 1 < glsl.size() && glsl[i + 1] == '*') {
+      size_t end = glsl.find("*/", i + 2);
+      advance(end == std::string::npos ? glsl.size() - i : end + 2 - i);
+      continue;
+    }
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      advance(1);
+      continue;
+    }
+    if (c == '#' && lineStart) {
+      // A directive: only #define declares a name.
+      advance(1);
+      while (i < glsl.size() && (glsl[i] == ' ' || glsl[i] == '\t')) advance(1);
+      const bool define = glsl.compare(i, 6, "define") == 0;
+      if (define) {
+        advance(6);
+        while (i < glsl.size() && (glsl[i] == ' ' || glsl[i] == '\t')) advance(1);
+        DeclaredName d{{}, line, column};
+        while (i < glsl.size() && isPart(glsl[i])) {
+          d.name += glsl[i];
+          advance(1);
+        }
+        if (!d.name.empty() && isStart(d.name[0])) out.push_back(d);
+      }
+      while (i < glsl.size() && glsl[i] != '\n') advance(1);
+      continue;
+    }
+    lineStart = false;
+    if (isStart(c)) {
+      DeclaredName d{{}, line, column};
+      while (i < glsl.size() && isPart(glsl[i])) {
+        d.name += glsl[i];
+        advance(1);
+      }
+      if (braces || parens) continue;
+      if (d.name == "struct") {
+        structNext = true;
+      } else if (structNext) {
+        add(d);
+        structNext = false;
+      } else {
+        last = d;
+      }
+      continue;
+    }
+    if (std::isdigit(static_cast<unsigned char>(c))) {
+      while (i < glsl.size() && (isPart(glsl[i]) || glsl[i] == '.')) advance(1);
+      continue;
+    }
+    const bool top = braces == 0 && parens == 0;
+    const bool assignment = c == '=' && !(i + 1 < glsl.size() && glsl[i + 1] == '=');
+    // `layout(...)` and the like: a qualifier, not the declared name.
+    const bool keyword = last.name.empty() || glslWords().count(last.name) || isOpaqueTypeName(last.name);
+    if (top && !declaratorDone && !keyword && (c == '(' || c == '[' || c == ';' || c == ',' || assignment)) {
+      add(last);
+      if (c != ',') declaratorDone = true;
+    }
+    if (c == '(') ++parens;
+    if (c == ')' && parens > 0) --parens;
+    if (c == '{') ++braces;
+    if (c == '}' && braces > 0 && --braces == 0) resetStatement();
+    if (c == ';' && top) resetStatement();
+    advance(1);
+  }
+  return out;
 }
 
 }  // namespace mb

@@ -6,11 +6,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cfloat>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 
 #include "core/json_fields.hpp"
+#include "emit/generated_names.hpp"
 #include "library/value_json.hpp"
 #include "load/glsl_names.hpp"
 
@@ -78,6 +81,7 @@ class Resolver {
     resolveSurface();
     resolveBricks();
     if (model_) resolveParams();
+    if (model_) checkSurfaceNames();
     return desc_;
   }
 
@@ -363,7 +367,7 @@ class Resolver {
       error("E-INVALID-NAME", sp.where, "parameter name '" + clipped(sp.name) + "' must match [A-Za-z_][A-Za-z0-9_]*");
       return std::nullopt;
     }
-    std::string reserved = reservedNameReason(sp.name);
+    std::string reserved = reservedNameReason(sp.name, generatedNames());
     if (!reserved.empty()) {
       error("E-INVALID-NAME", sp.where, "parameter name '" + sp.name + "' is " + reserved);
       ok = false;
@@ -377,13 +381,39 @@ class Resolver {
     type = declaredType(sp);
     if (!type) return std::nullopt;
     std::optional<Range> own = ownRange(sp);
-    if (sp.range && !own) ok = false;
-    Range range = own.value_or(kUserDefaultRange);
-    std::string origin =
-        own ? "the parameter's range" : "the default range [0, 1] of a user parameter (give it a range)";
+    const bool brokenRange = sp.range && !own;
+    if (brokenRange) ok = false;
+    // A broken range is already reported: the default is then only held to fp32.
+    Range range = own.value_or(brokenRange ? Range{-FLT_MAX, FLT_MAX} : kUserDefaultRange);
+    std::string origin = own           ? "the parameter's range"
+                         : brokenRange ? "the fp32 range"
+                                       : "the default range [0, 1] of a user parameter (give it a range)";
     ok = checkValue(sp, *type, range, origin) && ok;
     if (!ok) return std::nullopt;
     return param(sp, *type, range, true);
+  }
+
+  // A global name of the surface code that the generated code uses after it (a function or
+  // macro of the same name) would fail in glslang at a generated line: refused at the user's.
+  void checkSurfaceNames() {
+    if (!desc_.surface.present()) return;
+    for (const DeclaredName& d : globalNamesOf(desc_.surface.glsl)) {
+      if (d.name == "surface") continue;
+      auto it = generatedNames().find(d.name);
+      if (it == generatedNames().end()) continue;
+      SourceLocation where = desc_.surface.where;
+      where.column = d.line == 0 ? std::max(1, where.column) + d.column - 1 : d.column;
+      where.line = std::max(1, where.line) + d.line;
+      error("E-INVALID-NAME", where,
+            "surface code declares '" + d.name + "', which is already used by the generated code (" + it->second + ")");
+    }
+  }
+
+  // What the code emitted for this material (its model, features and bricks) names, derived
+  // once per material and only when it has a user parameter to check.
+  const std::map<std::string, std::string>& generatedNames() {
+    if (!generated_) generated_ = generatedIdentifiers(lib_, desc_);
+    return *generated_;
   }
 
   // The declared type, if it is one of ours; otherwise reports it.
@@ -407,8 +437,18 @@ class Resolver {
                 formatNumber(sp.range->hi));
       return std::nullopt;
     }
+    // Every value becomes an fp32 literal or uniform: a bound beyond fp32 (a double JSON or
+    // the macro form accepts, 1e39) would make an infinite range the sampler cannot draw from.
+    if (!fitsFloat(sp.range->lo) || !fitsFloat(sp.range->hi)) {
+      error("E-PARAM-RANGE", sp.rangeWhere,
+            label(sp, "range") + " " + formatRange(*sp.range) + " reaches beyond the fp32 range [" +
+                formatNumber(-FLT_MAX) + ", " + formatNumber(FLT_MAX) + "]");
+      return std::nullopt;
+    }
     return sp.range;
   }
+
+  static bool fitsFloat(double v) { return std::fabs(v) <= FLT_MAX; }
 
   // The value's count of numbers fits `type` and every number lies in `range`.
   bool checkValue(const SourceParam& sp, ValueType type, const Range& range, const std::string& origin) {
@@ -426,9 +466,13 @@ class Resolver {
       // Point at the offending component of a vector, so the column is exact.
       bool vec = n > 1;
       SourceLocation where = vec && i < sp.componentWhere.size() ? sp.componentWhere[i] : sp.valueWhere;
-      error("E-PARAM-RANGE", where,
-            label(sp, "default", vec ? static_cast<int>(i) : -1) + " = " + formatNumber(sp.value[i]) + " is outside " +
-                formatRange(range) + ", " + origin);
+      const std::string what = label(sp, "default", vec ? static_cast<int>(i) : -1) + " = " + formatNumber(sp.value[i]);
+      if (std::isfinite(sp.value[i]) && !fitsFloat(sp.value[i]))
+        error("E-PARAM-RANGE", where,
+              what + " is beyond the fp32 range [" + formatNumber(-FLT_MAX) + ", " + formatNumber(FLT_MAX) +
+                  "] of the shader's value");
+      else
+        error("E-PARAM-RANGE", where, what + " is outside " + formatRange(range) + ", " + origin);
       ok = false;
     }
     return ok;
@@ -451,6 +495,7 @@ class Resolver {
   DiagnosticSink& sink_;
   const ShadingModel* model_ = nullptr;
   MaterialDesc desc_;
+  std::optional<std::map<std::string, std::string>> generated_;
 };
 
 }  // namespace

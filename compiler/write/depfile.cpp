@@ -1,6 +1,7 @@
 #include "write/depfile.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -34,14 +35,33 @@ void addGlslInputs(const ShaderLibrary& lib, const std::string& glsl, std::set<s
 
 namespace {
 
-std::string escaped(const std::string& path) {
+// What Ninja's depfile parser (src/depfile_parser.in.cc, which follows GCC's -MD output) reads
+// back as the same path, or nullopt for a path it cannot carry: a newline or carriage return
+// ends a rule, a tab or another control character is whitespace or is kept with its escape,
+// and a path ending in a backslash would escape the separator that follows it.
+//   space: 2N+1 backslashes and a space are N backslashes and a space (GCC doubles the
+//          backslashes before a space and adds one);
+//   '#', ':': a backslash before it is dropped, earlier ones kept (one backslash added; ':'
+//          followed by whitespace would end a target);
+//   '$': "$$" (Make's and Ninja's variable character).
+std::optional<std::string> escapedForDepfile(const std::string& path) {
+  if (path.empty() || path.back() == '\\') return std::nullopt;
   std::string e;
+  size_t backslashes = 0;
   for (char c : path) {
-    if (c == ' ' || c == '#') e += '\\';
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return std::nullopt;
+    if (c == ' ') e.append(backslashes + 1, '\\');
+    if (c == '#' || c == ':') e += '\\';
     if (c == '$') e += '$';
     e += c;
+    backslashes = c == '\\' ? backslashes + 1 : 0;
   }
   return e;
+}
+
+std::string escaped(const std::string& path) {
+  if (auto e = escapedForDepfile(path)) return *e;
+  throw DiagnosticError({{Severity::Error, "E-DEPFILE-PATH", {printablePath(path), 0, 0}, depfileRefusal(path), ""}});
 }
 
 }  // namespace
@@ -66,6 +86,32 @@ std::vector<std::string> compileInputs(const ShaderLibrary& lib, const std::vect
     files.insert(absolutePath(lib.root() / "models" / (m.model + ".json")));
   }
   return {files.begin(), files.end()};
+}
+
+std::string printablePath(const std::string& path) {
+  std::string out;
+  for (char c : path) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      static const char* const kHex = "0123456789abcdef";
+      out += std::string("\\x") + kHex[(c >> 4) & 0xf] + kHex[c & 0xf];
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string depfileTarget(const std::string& out) { return absolutePath(fs::path(out) / "manifest.json"); }
+
+std::string depfileRefusal(const std::string& path) {
+  if (escapedForDepfile(path)) return {};
+  return "the depfile cannot name this path: Make and Ninja read no escape for a newline, tab or other control "
+         "character, nor for a path ending in a backslash (rename the file or compile without --depfile)";
+}
+
+void checkDepfilePaths(const std::string& target, const std::vector<std::string>& deps) {
+  escaped(target);
+  for (const auto& d : deps) escaped(d);
 }
 
 std::string makeDepfile(const std::string& target, const std::vector<std::string>& deps) {

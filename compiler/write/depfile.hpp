@@ -22,7 +22,19 @@ void addGlslInputs(const ShaderLibrary& lib, const std::string& glsl, std::set<s
 std::vector<std::string> compileInputs(const ShaderLibrary& lib, const std::vector<Permutation>& perms,
                                        const std::set<std::string>& glslInputs, const std::vector<std::string>& extra);
 
-// "target: dep1 \\\n  dep2\n" with spaces, '#' and '$' escaped the way Make and Ninja read them.
+// "target: dep1 \\\n  dep2\n" with spaces, '#', ':' and '$' escaped the way Ninja (and GCC's -MD
+// output, which Make reads) escape them. Throws DiagnosticError E-DEPFILE-PATH for a path no
+// escape can carry (depfileRefusal).
 std::string makeDepfile(const std::string& target, const std::vector<std::string>& deps);
+// The depfile's target for package directory `out`: its manifest.json, absolute.
+std::string depfileTarget(const std::string& out);
+// Why the depfile cannot name `path` (a newline, tab or other control character, a trailing
+// backslash), or empty when it can.
+std::string depfileRefusal(const std::string& path);
+// Throws DiagnosticError E-DEPFILE-PATH for the first of `target` and `deps` that the depfile
+// cannot name: run before compiling, so that nothing is written for a depfile that would fail.
+void checkDepfilePaths(const std::string& target, const std::vector<std::string>& deps);
+// `path` with control characters as \xNN, for a one-line message.
+std::string printablePath(const std::string& path);
 
 }  // namespace mb
