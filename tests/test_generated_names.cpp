@@ -42,7 +42,7 @@ std::vector<Diagnostic> errorsOf(const std::string& json) {
   return test::diagnosticsOf([&] { parseMaterialJson(json, "paint.json", test::shippedLibrary()); });
 }
 
-std::map<std::string, std::string> paintNames() {
+std::map<std::string, GeneratedName> paintNames() {
   MaterialDesc m = parseMaterialJson(paintJson(floatParam("wear")), "paint.json", test::shippedLibrary());
   return generatedIdentifiers(test::shippedLibrary(), m);
 }
@@ -100,23 +100,28 @@ TEST_CASE("the reserved names are derived from the generated code", "[names]") {
     INFO(n);
     CHECK(names.count(n) == 1);
   }
-  CHECK_THAT(names.at("b"), Catch::Contains("evaluateMaterial()"));
+  CHECK_THAT(names.at("b").what, Catch::Contains("evaluateMaterial()"));
+  CHECK(names.at("b").localOnly);
+  CHECK(names.at("n").localOnly);
+  CHECK_FALSE(names.at("normalize").localOnly);
+  CHECK_FALSE(names.at("materialInputs").localOnly);
+  CHECK_FALSE(names.at("ShadingFrame").localOnly);
   // Library globals come from glslang's AST, macros from the text.
   CHECK(std::any_of(names.begin(), names.end(),
-                    [](const auto& e) { return e.second.find("a function of shaderlib/") == 0; }));
-  CHECK(std::any_of(names.begin(), names.end(), [](const auto& e) { return e.second.find("a macro of") == 0; }));
+                    [](const auto& e) { return e.second.what.find("a function of shaderlib/") == 0; }));
+  CHECK(std::any_of(names.begin(), names.end(), [](const auto& e) { return e.second.what.find("a macro of") == 0; }));
   // Model inputs are the model's parameters, not collisions; the placeholder leaves no trace.
   CHECK(names.count("baseColor") == 0);
   CHECK(names.count("clearCoat") == 0);
-  for (const auto& [name, what] : names) CHECK(name.find("placeholder") == std::string::npos);
+  for (const auto& [name, g] : names) CHECK(name.find("placeholder") == std::string::npos);
 }
 
 TEST_CASE("every derived name is refused as a user parameter, at the name", "[names]") {
   const auto names = paintNames();
   REQUIRE(names.size() > 50);
   size_t checked = 0;
-  for (const auto& [name, what] : names) {
-    INFO(name << ": " << what);
+  for (const auto& [name, g] : names) {
+    INFO(name << ": " << g.what);
     auto ds = errorsOf(paintJson(floatParam(name)));
     REQUIRE(ds.size() == 1);
     CHECK(ds[0].code == "E-INVALID-NAME");
@@ -186,15 +191,16 @@ TEST_CASE("every name outside the derived set compiles in every permutation", "[
 TEST_CASE("surface code may not declare a name the generated code uses", "[names]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   auto withSurface = [](const std::string& glsl) {
-    return "#define MATERIAL s\n#define MODEL standard\n#define BRICK_specular_d d_ggx\n#define BRICK_fresnel "
-           "f_schlick\n#define PARAM_gain 0.5\n" +
+    return "#define MATERIAL s\n#define MODEL standard\n#define BRICK_roughness roughness_clamped\n#define "
+           "BRICK_diffuse diffuse_lambert\n#define BRICK_specular_d d_ggx\n#define BRICK_specular_v "
+           "v_smith_ggx_correlated\n#define BRICK_fresnel f_schlick\n#define PARAM_gain 0.5\n" +
            glsl;
   };
   SECTION("a macro and a function of the generated code, at the user's line and column") {
     auto ds = test::diagnosticsOf([&] {
-      parseMaterialMacro(withSurface("#define f 2.0\n"
+      parseMaterialMacro(withSurface("vec3 emittedRadiance(ShadingPixel q) { return vec3(0.0); }\n"
+                                     "#define f 2.0\n"
                                      "float helper(float x) { return x * f; }\n"
-                                     "vec3 emittedRadiance(ShadingPixel q) { return vec3(0.0); }\n"
                                      "void surface(inout MaterialInputs m, MaterialParams p) {\n"
                                      "    m.roughness = helper(p.gain);\n"
                                      "}\n"),
@@ -202,20 +208,25 @@ TEST_CASE("surface code may not declare a name the generated code uses", "[names
     });
     REQUIRE(ds.size() == 2);
     CHECK(ds[0].code == "E-INVALID-NAME");
-    CHECK(ds[0].where.line == 6);
-    CHECK(ds[0].where.column == 9);
-    CHECK_THAT(ds[0].message, Catch::Contains("surface code declares 'f'"));
+    CHECK(ds[0].where.line == 9);
+    CHECK(ds[0].where.column == 6);
+    CHECK_THAT(ds[0].message, Catch::Contains("surface code declares 'emittedRadiance'"));
     CHECK(ds[1].code == "E-INVALID-NAME");
-    CHECK(ds[1].where.line == 8);
-    CHECK(ds[1].where.column == 6);
-    CHECK_THAT(ds[1].message, Catch::Contains("'emittedRadiance'"));
+    CHECK(ds[1].where.line == 10);
+    CHECK(ds[1].where.column == 9);
+    CHECK_THAT(ds[1].message, Catch::Contains("surface code declares 'f', which is already used by the generated "
+                                              "code (used in the generated"));
   }
   SECTION("helpers, constants and structs of free names compile") {
-    MaterialDesc m = parseMaterialMacro(withSurface("const float kScale = 0.5;\n"
+    // `k` and `f` are locals of generated functions (a loop counter, the ShadingFrame): there
+    // they shadow the user's globals, which is legal GLSL.
+    MaterialDesc m = parseMaterialMacro(withSurface("const float k = 0.5;\n"
+                                                    "float f(float x) { return x * k; }\n"
+                                                    "const float kScale = 0.5;\n"
                                                     "struct Wear { float amount; };\n"
                                                     "float helper(Wear w) { return w.amount * kScale; }\n"
                                                     "void surface(inout MaterialInputs m, MaterialParams p) {\n"
-                                                    "    m.roughness = helper(Wear(p.gain));\n"
+                                                    "    m.roughness = f(helper(Wear(p.gain)));\n"
                                                     "}\n"),
                                         "s.mat", lib);
     for (Permutation perm : validationPermutationsFor(m, lib)) {

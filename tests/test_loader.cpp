@@ -555,7 +555,7 @@ TEST_CASE("user parameters need surface code, a type, and a valid name", "[loade
     CHECK_THAT(ds[1].message, Contains("reserved by GLSL"));
     CHECK(ds[2].code == "E-INVALID-NAME");
     CHECK(ds[3].code == "E-INVALID-NAME");
-    CHECK_THAT(ds[3].message, Contains("materialInputs()"));
+    CHECK_THAT(ds[3].message, Contains("already used by the generated code"));
     CHECK(ds[4].code == "E-PARAM-RANGE");
     requireAt(ds[4], 11, 42);
     CHECK_THAT(ds[4].message, Equals("'parameters.gain.default' = 2.0 is outside [0.0, 1.0], the default range "

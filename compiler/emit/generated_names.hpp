@@ -12,6 +12,13 @@
 
 namespace mb {
 
+struct GeneratedName {
+  std::string what;  // for the message
+  // Only ever a local or parameter of a generated function (`b`, `f`, `px`, the probe's p_x):
+  // a global of the same name in user surface code is shadowed there, not redefined.
+  bool localOnly = false;
+};
+
 // name -> what it is, for the message ("used in the generated evaluateMaterial()", "a
 // function of common/geometry.glsl", "a macro of the generated code", "the probe's local
 // 'p_n'"). `material` needs its model, features and bricks; its parameters and surface code
@@ -29,6 +36,6 @@ namespace mb {
 //    parameter X).
 // The model's input names are left out: a parameter of that name is the model's input.
 // Never throws: a permutation that cannot be emitted or parsed contributes what it can.
-std::map<std::string, std::string> generatedIdentifiers(const ShaderLibrary& lib, const MaterialDesc& material);
+std::map<std::string, GeneratedName> generatedIdentifiers(const ShaderLibrary& lib, const MaterialDesc& material);
 
 }  // namespace mb

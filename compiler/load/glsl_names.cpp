@@ -74,16 +74,19 @@ std::string reservedNameReason(const std::string& name) {
     return "reserved by GLSL (names starting with 'gl_' or containing '__')";
   if (startsWith(name, "mb_") || startsWith(name, "MB_"))
     return "reserved for matbricks' generated code (names starting with 'mb_' or 'MB_')";
+  // A user parameter is read as a member (p.name, mbParams.name): glslang takes `.length` for
+  // the method of arrays and vectors (GLSL 4.50 spec 5.9) and rejects it on a struct.
+  if (name == "length") return "the GLSL method .length(), which a member of that name would hide";
   // The package's C++ header declares every parameter as a member of its parameter struct.
   if (isCppKeyword(name)) return "a C++ keyword (the package's C++ header declares the parameter as a struct member)";
   return {};
 }
 
-std::string reservedNameReason(const std::string& name, const std::map<std::string, std::string>& generated) {
+std::string reservedNameReason(const std::string& name, const std::map<std::string, GeneratedName>& generated) {
   std::string reason = reservedNameReason(name);
   if (!reason.empty()) return reason;
   auto it = generated.find(name);
-  return it == generated.end() ? std::string() : "already used by the generated code (" + it->second + ")";
+  return it == generated.end() ? std::string() : "already used by the generated code (" + it->second.what + ")";
 }
 
 std::vector<DeclaredName> globalNamesOf(const std::string& glsl) {
@@ -142,7 +145,7 @@ std::vector<DeclaredName> globalNamesOf(const std::string& glsl) {
       if (define) {
         advance(6);
         while (i < glsl.size() && (glsl[i] == ' ' || glsl[i] == '\t')) advance(1);
-        DeclaredName d{{}, line, column};
+        DeclaredName d{{}, line, column, true};
         while (i < glsl.size() && isPart(glsl[i])) {
           d.name += glsl[i];
           advance(1);
@@ -154,7 +157,7 @@ std::vector<DeclaredName> globalNamesOf(const std::string& glsl) {
     }
     lineStart = false;
     if (isStart(c)) {
-      DeclaredName d{{}, line, column};
+      DeclaredName d{{}, line, column, false};
       while (i < glsl.size() && isPart(glsl[i])) {
         d.name += glsl[i];
         advance(1);

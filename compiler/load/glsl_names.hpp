@@ -6,15 +6,18 @@
 #include <string>
 #include <vector>
 
+#include "emit/generated_names.hpp"
+
 namespace mb {
 
 // Why `name` cannot be a GLSL identifier of ours, or empty when it can, by the fixed rules: a
 // GLSL 4.50 keyword or reserved word (spec section 3.6), a `gl_` or `__` name (reserved by
-// GLSL), an `mb_`/`MB_` name (the emitter's own).
+// GLSL), an `mb_`/`MB_` name (the emitter's own), `length` (GLSL's .length() method: it cannot
+// be read as a member), a C++ keyword (a member of the C++ header's parameter struct).
 std::string reservedNameReason(const std::string& name);
 // The same, then `generated`: the identifiers the code generated for the material declares or
 // uses where the name goes (emit/generated_names.hpp), name -> what it is.
-std::string reservedNameReason(const std::string& name, const std::map<std::string, std::string>& generated);
+std::string reservedNameReason(const std::string& name, const std::map<std::string, GeneratedName>& generated);
 
 // A name user surface code declares at global scope, where: `line` counts from 0 within the
 // code, `column` from 1 within that line.
@@ -22,6 +25,7 @@ struct DeclaredName {
   std::string name;
   int line = 0;
   int column = 1;
+  bool macro = false;  // #define'd
 };
 // The macros (#define), functions, structs and global variables `glsl` declares: a token scan
 // at brace and parenthesis depth 0, comments skipped, GLSL keywords left out. A declaration

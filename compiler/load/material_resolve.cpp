@@ -400,18 +400,21 @@ class Resolver {
     for (const DeclaredName& d : globalNamesOf(desc_.surface.glsl)) {
       if (d.name == "surface") continue;
       auto it = generatedNames().find(d.name);
-      if (it == generatedNames().end()) continue;
+      // A macro rewrites every later use; a function, struct or variable only clashes with a
+      // global (a generated local shadows it).
+      if (it == generatedNames().end() || (!d.macro && it->second.localOnly)) continue;
       SourceLocation where = desc_.surface.where;
       where.column = d.line == 0 ? std::max(1, where.column) + d.column - 1 : d.column;
       where.line = std::max(1, where.line) + d.line;
       error("E-INVALID-NAME", where,
-            "surface code declares '" + d.name + "', which is already used by the generated code (" + it->second + ")");
+            "surface code declares '" + d.name + "', which is already used by the generated code (" + it->second.what +
+                ")");
     }
   }
 
   // What the code emitted for this material (its model, features and bricks) names, derived
   // once per material and only when it has a user parameter to check.
-  const std::map<std::string, std::string>& generatedNames() {
+  const std::map<std::string, GeneratedName>& generatedNames() {
     if (!generated_) generated_ = generatedIdentifiers(lib_, desc_);
     return *generated_;
   }
@@ -495,7 +498,7 @@ class Resolver {
   DiagnosticSink& sink_;
   const ShadingModel* model_ = nullptr;
   MaterialDesc desc_;
-  std::optional<std::map<std::string, std::string>> generated_;
+  std::optional<std::map<std::string, GeneratedName>> generated_;
 };
 
 }  // namespace
