@@ -21,6 +21,7 @@ struct EvalArgs {
   std::string input;
   bool json = false;
   std::string precision = "fp32";
+  std::string fp16 = "emulated";  // Fp16Mode
 };
 
 // --name picks one material of a file that holds several (glTF); without it, the first.
@@ -39,6 +40,7 @@ MaterialDesc pickMaterial(const std::vector<MaterialDesc>& materials, const Eval
 }
 
 int runEval(const EvalArgs& a, const GlobalOptions& g) {
+  setFp16Mode(*parseFp16Mode(a.fp16));
   if (a.brick.empty() == a.material.empty())
     throw CLI::ValidationError("eval", "give exactly one of --brick ID or --material FILE");
   ShaderLibrary lib = loadLibrary(g);
@@ -127,8 +129,12 @@ Command addEvalCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--input", args->input, "CSV file; header = the probe's input names (see `bricks --json`)")
       ->required();
   cmd->add_flag("--json", args->json, "JSON output");
-  cmd->add_option("--precision", args->precision, "fp32, or fp16 (true half arithmetic; only NaN/Inf fail)")
+  cmd->add_option("--precision", args->precision, "fp32, or fp16 (half arithmetic, see --fp16; only NaN/Inf fail)")
       ->check(CLI::IsMember({"fp32", "fp16"}));
+  cmd->add_option(
+         "--fp16", args->fp16,
+         "How fp16 kernels compute: emulated (default; the least precise conforming device: half rounding, flushed denormals, division by the reciprocal, transcendentals at their spec error bounds) or driver (the device's own half arithmetic; needs shaderFloat16). docs/fp16.md")
+      ->check(CLI::IsMember({"emulated", "driver"}));
   return {cmd, [args, &g] { return runEval(*args, g); }};
 }
 

@@ -16,6 +16,7 @@ struct StressArgs {
   std::vector<std::string> bricks;
   bool allBricks = false;
   std::string precision = "fp32";
+  std::string fp16 = "emulated";  // Fp16Mode
   uint64_t samples = 1024;
   uint64_t seed = 1;
   bool json = false;
@@ -46,6 +47,7 @@ bool tryBuild(ShaderPrecision p, Build build, ProbeProgram& program, StressResul
 }
 
 int runStress(const StressArgs& a, const GlobalOptions& g) {
+  setFp16Mode(*parseFp16Mode(a.fp16));
   if (a.materials.empty() && a.bricks.empty() && !a.allBricks)
     throw CLI::ValidationError("stress", "give MATERIAL files, --brick ID or --all-bricks");
   if (!a.output.empty() && !a.markdown) throw CLI::ValidationError("stress", "-o needs --markdown");
@@ -117,7 +119,8 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
     std::string command = "matbricks stress";
     for (const auto& m : a.materials) command += " " + m;
     for (const auto& id : a.bricks) command += " --brick " + id;
-    command += std::string(a.allBricks ? " --all-bricks" : "") + " --precision " + a.precision + " --markdown";
+    command += std::string(a.allBricks ? " --all-bricks" : "") + " --precision " + a.precision +
+               (a.fp16 == "driver" ? " --fp16 driver" : "") + " --markdown";
     std::string md =
         formatStressMarkdown(results, command + (a.output.empty() ? "" : " -o " + a.output), gpu->deviceName());
     if (a.output.empty())
@@ -150,8 +153,12 @@ Command addStressCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("materials", args->materials, kMaterialFilesHelp);
   cmd->add_option("--brick", args->bricks, "Stress this brick (repeatable)");
   cmd->add_flag("--all-bricks", args->allBricks, "Stress every brick of the library");
-  cmd->add_option("--precision", args->precision, "fp32, fp16 (true half arithmetic) or all")
+  cmd->add_option("--precision", args->precision, "fp32, fp16 (half arithmetic, see --fp16) or all")
       ->check(CLI::IsMember({"fp32", "fp16", "all"}));
+  cmd->add_option(
+         "--fp16", args->fp16,
+         "How fp16 kernels compute: emulated (default; the least precise conforming device: half rounding, flushed denormals, division by the reciprocal, transcendentals at their spec error bounds) or driver (the device's own half arithmetic; needs shaderFloat16). docs/fp16.md")
+      ->check(CLI::IsMember({"emulated", "driver"}));
   cmd->add_option("--samples", args->samples, "Validation-sampler records added to the adversarial set")
       ->check(CLI::Range(uint64_t{0}, uint64_t{10000000}));
   cmd->add_option("--seed", args->seed, "Sampler seed");

@@ -20,11 +20,13 @@ struct ValidateArgs {
   bool json = false;
   bool quiet = false;
   std::string precision = "fp32";
+  std::string fp16 = "emulated";          // Fp16Mode
   std::vector<std::string> lights;        // empty: every light type the model shades
   std::vector<std::string> environments;  // empty: every environment mode it supports
 };
 
 int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
+  setFp16Mode(*parseFp16Mode(a.fp16));
   if (a.materials.empty() && a.bricks.empty() && !a.allBricks)
     throw CLI::ValidationError("validate", "give MATERIAL files, --brick ID or --all-bricks");
   ShaderLibrary lib = loadLibrary(g);
@@ -118,8 +120,12 @@ Command addValidateCommand(CLI::App& app, GlobalOptions& g) {
                 "No progress and no notes; without --json, print the table only when a check fails");
   cmd->add_option(
          "--precision", args->precision,
-         "fp32, or fp16: true half arithmetic on the fp16 domain; errors are reported, only NaN/Inf fail (docs/fp16.md)")
+         "fp32, or fp16: half arithmetic, see --fp16 on the fp16 domain; errors are reported, only NaN/Inf fail (docs/fp16.md)")
       ->check(CLI::IsMember({"fp32", "fp16"}));
+  cmd->add_option(
+         "--fp16", args->fp16,
+         "How fp16 kernels compute: emulated (default; the least precise conforming device: half rounding, flushed denormals, division by the reciprocal, transcendentals at their spec error bounds) or driver (the device's own half arithmetic; needs shaderFloat16). docs/fp16.md")
+      ->check(CLI::IsMember({"emulated", "driver"}));
   cmd->add_option("--lights", args->lights,
                   "Light types shaded together in each material permutation (default: all the model shades)")
       ->delimiter(',')

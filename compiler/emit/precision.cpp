@@ -10,6 +10,14 @@ std::optional<ShaderPrecision> parsePrecision(const std::string& name) {
   return std::nullopt;
 }
 
+const char* fp16ModeName(Fp16Mode m) { return m == Fp16Mode::Emulated ? "emulated" : "driver"; }
+
+std::optional<Fp16Mode> parseFp16Mode(const std::string& name) {
+  if (name == "emulated") return Fp16Mode::Emulated;
+  if (name == "driver") return Fp16Mode::Driver;
+  return std::nullopt;
+}
+
 double minPerceptualRoughness(ShaderPrecision p) {
   return isHalf(p) ? kMinPerceptualRoughnessFp16 : kMinPerceptualRoughnessFp32;
 }

@@ -21,6 +21,15 @@ inline bool isHalf(ShaderPrecision p) { return p != ShaderPrecision::Fp32; }
 const char* precisionName(ShaderPrecision p);  // "fp32", "fp16"
 std::optional<ShaderPrecision> parsePrecision(const std::string& name);
 
+// How validate, stress and eval run an fp16 kernel (docs/fp16.md). Emulated (the default):
+// as the least precise conforming Vulkan device may compute it, whatever the driver does
+// (compile/fp16_emulation.hpp: half rounding of every result, denormals flushed, division
+// by the reciprocal, transcendentals at the edge of their error bounds), in fp32, so it runs
+// without shaderFloat16. Driver: the device's own half arithmetic (needs shaderFloat16).
+enum class Fp16Mode { Emulated, Driver };
+const char* fp16ModeName(Fp16Mode m);  // "emulated", "driver"
+std::optional<Fp16Mode> parseFp16Mode(const std::string& name);
+
 // Minimum perceptual roughness per precision (Filament, "Physically Based Rendering in
 // Filament" sec. 4.8.3.3, MIN_PERCEPTUAL_ROUGHNESS: 0.045 with fp32, 0.089 on mobile/fp16;
 // seed 000 "Specular Miscs"). alpha = r^2, so the alpha floors are 0.002025 and 0.007921:

@@ -51,6 +51,7 @@ StressResult stressProbe(harness::VulkanHarness& gpu, const ProbeProgram& progra
   const ProbeLayout& layout = program.shader.layout;
   StressResult res;
   res.key = program.shader.key;
+  res.fp16Mode = program.fp16Mode;
   res.kind = kind;
   res.id = id;
   res.precision = program.precision;

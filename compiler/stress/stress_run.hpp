@@ -38,7 +38,8 @@ struct StressResult {
   std::string id;            // brick id, or the material file (for the replay command)
   std::string materialName;  // the material within that file (a glTF file holds several)
   ShaderPrecision precision = ShaderPrecision::Fp32;
-  std::string compileError;  // set when the probe did not build at this precision
+  Fp16Mode fp16Mode = Fp16Mode::Emulated;  // how an fp16 probe computed (ProbeProgram::fp16Mode)
+  std::string compileError;                // set when the probe did not build at this precision
   StressStats inDomain, outOfDomain;
   std::vector<std::string> columns;
   std::vector<float> worstInDomainRow, worstOutOfDomainRow;  // empty if none

@@ -11,6 +11,7 @@
 
 #include "common/model_reference.hpp"
 #include "common/reference.hpp"
+#include "compile/fp16_emulation.hpp"
 #include "compile/shader_cache.hpp"
 #include "validate/precision_domain.hpp"
 #include "validate/probe_scene_reference.hpp"
@@ -33,8 +34,15 @@ ProbeCacheSetting& probeCacheSetting() {
   return s;
 }
 
+std::atomic<Fp16Mode>& fp16ModeSetting() {
+  static std::atomic<Fp16Mode> mode{Fp16Mode::Emulated};
+  return mode;
+}
+
 void compileInto(ProbeProgram& p) {
   auto t0 = std::chrono::steady_clock::now();
+  p.fp16Mode = fp16Mode();
+  const bool emulate = p.precision == ShaderPrecision::Fp16 && p.fp16Mode == Fp16Mode::Emulated;
   // fp16 probes skip spirv-opt (spirv-val still runs): SPIRV-Tools v2023.1's constant folding
   // emits 16-bit OpConstants with a 32-bit word count that spirv-val rejects (measured on
   // ue4_metal at fp16), and folding half arithmetic at compile time need not round as half.
@@ -50,15 +58,22 @@ void compileInto(ProbeProgram& p) {
     if (cache.load(key, hit) == ShaderCache::Lookup::Hit) {
       p.compiled.spirv = std::move(hit.spirv);
       p.compileCacheHit = true;
-      p.compileMs = msSince(t0);
-      return;
     }
   }
-  p.compiled = compileComputeGlsl(p.shader.glsl, p.shader.fileName, options);
-  if (cache.enabled()) {
-    CompiledArtifacts entry;
-    entry.spirv = p.compiled.spirv;
-    cache.store(key, entry);  // a failed write only means the next run compiles again
+  if (!p.compileCacheHit) {
+    p.compiled = compileComputeGlsl(p.shader.glsl, p.shader.fileName, options);
+    if (cache.enabled()) {
+      CompiledArtifacts entry;
+      entry.spirv = p.compiled.spirv;
+      cache.store(key, entry);  // a failed write only means the next run compiles again
+    }
+  }
+  // The cache holds glslang's half kernel; the emulation pass is cheap and runs every time,
+  // once per denormal behaviour (compile/fp16_emulation.hpp).
+  if (emulate) {
+    const std::vector<uint32_t> half = std::move(p.compiled.spirv);
+    p.compiled.spirv = emulateWorstCaseFp16(half, p.shader.fileName, Denormals::Flush);
+    p.denormalsKeptSpirv = emulateWorstCaseFp16(half, p.shader.fileName, Denormals::Keep);
   }
   p.compileMs = msSince(t0);
 }
@@ -88,6 +103,14 @@ std::filesystem::path probeCacheDir() {
     s.set = true;
   }
   return s.dir;
+}
+
+void setFp16Mode(Fp16Mode mode) { fp16ModeSetting() = mode; }
+Fp16Mode fp16Mode() { return fp16ModeSetting(); }
+
+std::string ProbeProgram::arithmetic() const {
+  if (precision == ShaderPrecision::Fp32) return "fp32";
+  return std::string("fp16 ") + fp16ModeName(fp16Mode);
 }
 
 Tolerance fp16Tolerance() {
@@ -214,7 +237,10 @@ ProbeRun runProbeOnGpu(harness::VulkanHarness& gpu, const ProbeProgram& program,
   const ProbeLayout& layout = program.shader.layout;
   ProbeRun run;
   run.count = layout.inStride ? inputs.size() / layout.inStride : 0;
-  if (program.precision == ShaderPrecision::Fp16 && !gpu.supportsShaderFloat16()) {
+  // An emulated fp16 kernel is fp32 SPIR-V: only the driver's own half arithmetic needs the
+  // feature.
+  if (program.precision == ShaderPrecision::Fp16 && program.fp16Mode == Fp16Mode::Driver &&
+      !gpu.supportsShaderFloat16()) {
     throw harness::HarnessError("device \"" + gpu.deviceName() + "\" does not support shaderFloat16 " +
                                 "(VK_KHR_shader_float16_int8); fp16 probes cannot run on it");
   }
@@ -223,6 +249,20 @@ ProbeRun runProbeOnGpu(harness::VulkanHarness& gpu, const ProbeProgram& program,
   run.gpu = std::move(result.outputs);
   run.gpuMs = result.gpuMs;
   run.firstDispatchMs = result.firstDispatchMs;
+  if (!program.denormalsKeptSpirv.empty()) {
+    // The emulated fp16 kernel under the other denormal behaviour: a value is NaN (Inf) when
+    // either behaviour gives NaN (Inf), as some conforming device computes it that way;
+    // otherwise the flushing kernel's value is kept.
+    auto kept =
+        gpu.run(*gpu.kernelFor(program.denormalsKeptSpirv), inputs, layout.inStride, layout.outStride, run.count);
+    for (size_t k = 0; k < run.gpu.size(); ++k) {
+      float& v = run.gpu[k];
+      const float w = kept.outputs[k];
+      if (std::isnan(w) || (std::isinf(w) && !std::isnan(v))) v = w;
+    }
+    run.gpuMs += kept.gpuMs;
+    run.firstDispatchMs += kept.firstDispatchMs;
+  }
   run.inputs = std::move(inputs);
   return run;
 }

@@ -26,6 +26,13 @@ struct ProbeProgram {
   Tolerance tolerance;
   SampleDomain domain;
   ShaderPrecision precision = ShaderPrecision::Fp32;
+  // How an fp16 kernel computes. Emulated: `compiled` is emulateWorstCaseFp16's kernel with
+  // denormals flushed and `denormalsKeptSpirv` the one with denormals kept; runProbeOnGpu
+  // runs both and reports a value as NaN/Inf when either gives NaN/Inf.
+  Fp16Mode fp16Mode = Fp16Mode::Emulated;
+  std::vector<uint32_t> denormalsKeptSpirv;
+  // "fp16 emulated", "fp16 driver" or "fp32", for reports.
+  std::string arithmetic() const;
 };
 
 // Probes' SPIR-V is kept in the content-addressed ShaderCache (compile/shader_cache.hpp) under
@@ -35,6 +42,11 @@ struct ProbeProgram {
 // path turns it off. Process-wide; set it before building probes.
 void setProbeCacheDir(const std::filesystem::path& dir);
 std::filesystem::path probeCacheDir();
+
+// How fp16 probes built from now on compute (default Fp16Mode::Emulated). Process-wide, like
+// the probe cache: the CLI sets it from --fp16 before building probes.
+void setFp16Mode(Fp16Mode mode);
+Fp16Mode fp16Mode();
 
 // `unstableVariant`: probe the brick's naive form against the same reference and tolerance.
 // At fp16 the domain is the fp16 domain (precision_domain.hpp) and the tolerance is

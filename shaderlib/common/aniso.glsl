@@ -51,3 +51,16 @@ vec2 mb_aniso_light_tangent(Geometry g, vec3 tangent, vec3 bitangent) {
     float len2 = dot(p, p);
     return len2 > 0.0 ? p * inversesqrt(len2) : vec2(1.0, 0.0);
 }
+
+// |v| for the anisotropic masking terms (at t.w, ab b.w, n.w). In half precision their
+// squares underflow at the fp16 roughness floor (at = 0.089^2: (at 0.5)^2 = 1.6e-5, a
+// denormal that may be flushed), so |v| is taken of v scaled by its largest component: the
+// same number in real arithmetic. fp32 keeps length().
+float mb_aniso_length(vec3 v) {
+#ifdef MB_FP16
+    float m = max(max(abs(v.x), abs(v.y)), abs(v.z));
+    return m > 0.0 ? m * length(v / m) : 0.0;
+#else
+    return length(v);
+#endif
+}

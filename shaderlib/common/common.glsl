@@ -7,6 +7,16 @@
 // keep finite visibility terms. The reference uses the same constant (reference.hpp).
 #define MB_MIN_N_DOT_V 1e-4
 
+// A light's radiance (per-unit-illuminance BRDF times the illuminance), clamped to the
+// largest half at fp16 as Filament's saturateMediump does: at the top of the half range the
+// fp16 errors of a sharp peak, or a half vector lost to rounding near v = -l, overflow to
+// Inf although the exact radiance is in range (`stress --precision fp16`, docs/fp16.md).
+#ifdef MB_FP16
+#define MB_SATURATE_MEDIUMP(x) min(x, 65504.0)
+#else
+#define MB_SATURATE_MEDIUMP(x) (x)
+#endif
+
 struct Geometry {
     vec3 n;
     vec3 v;

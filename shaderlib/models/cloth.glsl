@@ -56,14 +56,14 @@ vec3 mb_cloth_light(ShadingPixel px, Geometry g) {
 
 #ifdef MB_LIGHT_DIR
 vec3 mb_shade_dir(ShadingPixel px, ShadingFrame f, DirectionalLight light) {
-    return mb_cloth_light(px, makeGeometry(f.n, f.v, light.l)) * light.illuminance;
+    return MB_SATURATE_MEDIUMP(mb_cloth_light(px, makeGeometry(f.n, f.v, light.l)) * light.illuminance);
 }
 #endif
 
 #ifdef MB_LIGHT_POINT
 vec3 mb_shade_point(ShadingPixel px, ShadingFrame f, PointLight light) {
     vec3 illuminance = light.intensity * MB_SLOT_light_falloff(light.toLight, light.falloffRadius);
-    return mb_cloth_light(px, makeGeometry(f.n, f.v, light.toLight)) * illuminance;
+    return MB_SATURATE_MEDIUMP(mb_cloth_light(px, makeGeometry(f.n, f.v, light.toLight)) * illuminance);
 }
 #endif
 
@@ -72,7 +72,7 @@ vec3 mb_shade_spot(ShadingPixel px, ShadingFrame f, SpotLight light) {
     vec3 l = normalize(light.toLight);
     float cone = mb_spot_attenuation(l, light.axis, light.cosOuter, light.cosInner);
     vec3 illuminance = light.intensity * (MB_SLOT_light_falloff(light.toLight, light.falloffRadius) * cone);
-    return mb_cloth_light(px, makeGeometry(f.n, f.v, l)) * illuminance;
+    return MB_SATURATE_MEDIUMP(mb_cloth_light(px, makeGeometry(f.n, f.v, l)) * illuminance);
 }
 #endif
 

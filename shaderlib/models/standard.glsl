@@ -105,7 +105,7 @@ vec3 mb_standard_light(ShadingPixel px, ShadingFrame f, Geometry g, Geometry gD,
 #ifdef MB_LIGHT_DIR
 vec3 mb_shade_dir(ShadingPixel px, ShadingFrame f, DirectionalLight light) {
     Geometry g = makeGeometry(f.n, f.v, light.l);
-    return mb_standard_light(px, f, g, g, 1.0, g.NoL, g.NoL) * light.illuminance;
+    return MB_SATURATE_MEDIUMP(mb_standard_light(px, f, g, g, 1.0, g.NoL, g.NoL) * light.illuminance);
 }
 #endif
 

@@ -7,7 +7,7 @@
 #if defined(MB_LIGHT_POINT) || defined(MB_LIGHT_SPOT)
 // A punctual light of direction g.l and illuminance E at the surface (facing the light).
 vec3 mb_shade_punctual(ShadingPixel px, ShadingFrame f, Geometry g, vec3 illuminance) {
-    return mb_standard_light(px, f, g, g, 1.0, g.NoL, g.NoL) * illuminance;
+    return MB_SATURATE_MEDIUMP(mb_standard_light(px, f, g, g, 1.0, g.NoL, g.NoL) * illuminance);
 }
 #endif
 
@@ -96,7 +96,7 @@ vec3 mb_shade_sphere(ShadingPixel px, ShadingFrame f, SphereLight light) {
     lD = dot(lD, lD) > 0.5 ? lD : s.g.l;
     Geometry gD = makeGeometry(f.n, f.v, lD);
     float energy = mb_facing(gD) ? MB_SLOT_sphere_energy_normalization(s.g, px.alpha, s.sinAlpha) : 0.0;
-    return mb_standard_light(px, f, s.g, gD, energy, s.cosine, s.cosine) * s.illuminance;
+    return MB_SATURATE_MEDIUMP(mb_standard_light(px, f, s.g, gD, energy, s.cosine, s.cosine) * s.illuminance);
 }
 #endif
 
@@ -135,6 +135,6 @@ vec3 mb_shade_tube(ShadingPixel px, ShadingFrame f, TubeLight light) {
     Geometry gD = makeGeometry(f.n, f.v, lD);
     float energy =
         mb_facing(gD) ? MB_SLOT_tube_energy_normalization(gD, px.alpha, light.toStart, light.toEnd, light.radius) : 0.0;
-    return mb_standard_light(px, f, s.g, gD, energy, s.cosine, s.cosine) * s.illuminance;
+    return MB_SATURATE_MEDIUMP(mb_standard_light(px, f, s.g, gD, energy, s.cosine, s.cosine) * s.illuminance);
 }
 #endif

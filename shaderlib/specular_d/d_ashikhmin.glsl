@@ -13,8 +13,18 @@ float mb_d_ashikhmin(Geometry g, float alpha) {
     float cos2 = g.NoH * g.NoH;
     float a2 = alpha * alpha;
     float term = 0.0;
+#ifdef MB_FP16
+    // Half precision: below sin^2 = 2^-5 the term is < 4 e^-31 / 2^-10 = 1.4e-10 for every
+    // alpha <= 1, nothing beside the 1 it is added to; skipping it avoids a denormal sin^2
+    // whose reciprocal overflows (0 * Inf = NaN on an NVIDIA H100). The exponent is divided
+    // by sin^2 before alpha^2, so a2 * sin2 never underflows (0 / 0 at n.h = 0).
+    if (sin2 > 0.03125) {
+        term = 4.0 * exp(-(cos2 / sin2) / a2) / sin2 / sin2;
+    }
+#else
     if (sin2 > 0.0) {
         term = 4.0 * exp(-cos2 / (a2 * sin2)) / sin2 / sin2;
     }
+#endif
     return (1.0 + term) / (MB_PI * (1.0 + 4.0 * a2));
 }

@@ -10,6 +10,15 @@ float mb_d_beckmann_aniso(Geometry g, vec3 t, float at, float ab) {
     if (cos2 == 0.0) {
         return 0.0;
     }
+#ifdef MB_FP16
+    // Half precision: below cos^2 = 2^-5, D < 1.5e-9 for every at, ab in [0.089^2, 1]
+    // (exp(-31) / (pi at ab 2^-10) with the larger alpha 1 along h), which rounds to 0 in
+    // half; returning it avoids a denormal cos^2 whose reciprocal overflows (0 * Inf = NaN on
+    // an NVIDIA H100, docs/fp16.md).
+    if (cos2 < 0.03125) {
+        return 0.0;
+    }
+#endif
     vec3 tangent = mb_aniso_tangent(g.n, t);
     float x = dot(tangent, g.h) / at;
     float y = dot(cross(g.n, tangent), g.h) / ab;

@@ -7,5 +7,11 @@ float mb_v_schlick_ggx_ibl(Geometry g, float alpha) {
     float k = 0.5 * alpha;
     float gl = g.NoL * (1.0 - k) + k;
     float gv = g.NoV * (1.0 - k) + k;
+#ifdef MB_FP16
+    // Half precision: at n.l = 0 and grazing n.v, gl * gv (2e-5 at alpha = 0.089^2) is a
+    // denormal whose reciprocal overflows, although V (12735) is in range. Dividing by each
+    // factor in turn is the same number in real arithmetic; gl, gv >= alpha / 2 >= 2^-8.
+    return 0.25 / gl / gv;
+#endif
     return 0.25 / (gl * gv);
 }

@@ -9,8 +9,14 @@
 float mb_v_smith_ggx_correlated_aniso(Geometry g, vec3 t, float at, float ab) {
     vec3 tangent = mb_aniso_tangent(g.n, t);
     vec3 bitangent = cross(g.n, tangent);
-    float lambdaV = g.NoL * length(vec3(at * dot(tangent, g.v), ab * dot(bitangent, g.v), g.NoV));
+    float lambdaV = g.NoL * mb_aniso_length(vec3(at * dot(tangent, g.v), ab * dot(bitangent, g.v), g.NoV));
     vec2 lt = mb_aniso_light_tangent(g, tangent, bitangent);  // l below the horizon: see aniso.glsl
-    float lambdaL = g.NoV * length(vec3(at * lt.x, ab * lt.y, g.NoL));
+    float lambdaL = g.NoV * mb_aniso_length(vec3(at * lt.x, ab * lt.y, g.NoL));
+#ifdef MB_FP16
+    // Half precision: at n.l = 0 and grazing n.v the sum is a denormal whose reciprocal
+    // overflows to Inf although V is in range (an NVIDIA H100 gave Inf); clamped as Filament's
+    // V_SmithGGXCorrelated_Anisotropic does (saturateMediump, min(x, 65504)).
+    return min(0.5 / (lambdaV + lambdaL), 65504.0);
+#endif
     return 0.5 / (lambdaV + lambdaL);
 }

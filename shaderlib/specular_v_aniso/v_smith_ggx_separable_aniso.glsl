@@ -7,8 +7,14 @@
 float mb_v_smith_ggx_separable_aniso(Geometry g, vec3 t, float at, float ab) {
     vec3 tangent = mb_aniso_tangent(g.n, t);
     vec3 bitangent = cross(g.n, tangent);
-    float maskV = g.NoV + length(vec3(at * dot(tangent, g.v), ab * dot(bitangent, g.v), g.NoV));
+    float maskV = g.NoV + mb_aniso_length(vec3(at * dot(tangent, g.v), ab * dot(bitangent, g.v), g.NoV));
     vec2 lt = mb_aniso_light_tangent(g, tangent, bitangent);  // l below the horizon: see aniso.glsl
-    float maskL = g.NoL + length(vec3(at * lt.x, ab * lt.y, g.NoL));
+    float maskL = g.NoL + mb_aniso_length(vec3(at * lt.x, ab * lt.y, g.NoL));
+#ifdef MB_FP16
+    // Half precision: maskV * maskL underflows at grazing angles (a denormal whose
+    // reciprocal overflows) where V is in range; dividing by each factor in turn is the same
+    // number in real arithmetic, and maskV >= n.v >= 1e-4.
+    return 1.0 / maskV / maskL;
+#endif
     return 1.0 / (maskV * maskL);
 }

@@ -1,0 +1,140 @@
+// Standard model, lights part: point, spot, sphere and tube lights (seed 002 "Lighting model"
+// and "Area lights", after Karis 2013, Real Shading in Unreal Engine 4). Each light becomes the
+// BRDF of one light direction (mb_standard_light, standard.glsl) times an illuminance; the
+// area lights add a representative direction for D, an energy normalization on D and a
+// horizon-wrapped cosine. Conventions and their known errors: docs/models/lights.md.
+
+#if defined(MB_LIGHT_POINT) || defined(MB_LIGHT_SPOT)
+// A punctual light of direction g.l and illuminance E at the surface (facing the light).
+vec3 mb_shade_punctual(ShadingPixel px, ShadingFrame f, Geometry g, vec3 illuminance) {
+    return mb_standard_light(px, f, g, g, 1.0, g.NoL, g.NoL) * illuminance;
+}
+#endif
+
+#ifdef MB_LIGHT_POINT
+// E = I * falloff(d): seed 002's windowed inverse square, whichever light_falloff brick is bound.
+vec3 mb_shade_point(ShadingPixel px, ShadingFrame f, PointLight light) {
+    Geometry g = makeGeometry(f.n, f.v, light.toLight);
+    float falloff = MB_SLOT_light_falloff(light.toLight, light.falloffRadius);
+    return mb_shade_punctual(px, f, g, light.intensity * falloff);
+}
+#endif
+
+#ifdef MB_LIGHT_SPOT
+// The point light times Filament's smooth cone (lights.glsl), applied to the illuminance.
+vec3 mb_shade_spot(ShadingPixel px, ShadingFrame f, SpotLight light) {
+    Geometry g = makeGeometry(f.n, f.v, light.toLight);
+    float falloff = MB_SLOT_light_falloff(light.toLight, light.falloffRadius);
+    float cone = mb_spot_attenuation(g.l, light.axis, light.cosOuter, light.cosInner);
+    return mb_shade_punctual(px, f, g, light.intensity * (falloff * cone));
+}
+#endif
+
+#if defined(MB_LIGHT_SPHERE) || defined(MB_LIGHT_TUBE)
+// The sphere light bricks are declared for sin(alpha) <= 0.95 (their slot.json domains); a
+// shading point nearer than radius / 0.95 to the centre (on or inside the light, where the
+// representative-point method means nothing) is shaded as at that bound, so the result stays
+// finite and continuous.
+const float MB_AREA_LIGHT_MAX_SIN_ALPHA = 0.95;
+
+// A sphere of `radius` centred at `toCenter`, as the surface sees it: the geometry of its
+// centre direction, sin of its angular radius, the horizon-wrapped cosine and the illuminance.
+// `intensity` is the luminous intensity of the whole sphere, so that above the horizon
+// E = I * falloff(d): a Lambertian sphere of luminance L has I = pi R^2 L and gives
+// E = pi L sin^2(alpha) = I / d^2 (Karis 2013, "Sphere Lights": the sphere's irradiance is the
+// point light's). Inside the light the falloff is taken at the radius (the sphere's surface).
+struct MbSphereView {
+    Geometry g;
+    float sinAlpha;
+    float cosine;
+    vec3 illuminance;
+};
+
+MbSphereView mb_sphere_view(ShadingFrame f, vec3 toCenter, float radius, vec3 intensity, float falloffRadius) {
+    MbSphereView s;
+    float d = length(toCenter);
+    // At the centre itself there is no direction: take the normal (any choice is finite).
+    vec3 l = d > 0.0 ? toCenter / d : f.n;
+    float dLight = max(d, radius);
+    s.g = makeGeometry(f.n, f.v, l);
+    s.sinAlpha = dLight > 0.0 ? min(radius / dLight, MB_AREA_LIGHT_MAX_SIN_ALPHA) : 0.0;
+    // Seed 002, implementation notes 1-2 (UE4): n.l from the centre, wrapped where the sphere crosses the
+    // horizon; UE4 multiplies diffuse and specular alike by it.
+    s.cosine = MB_SLOT_sphere_horizon_wrap(s.g, s.sinAlpha);
+    s.illuminance = intensity * MB_SLOT_light_falloff(l * dLight, falloffRadius);
+    return s;
+}
+
+// GGX D has the factor chi+(n.h) (Walter et al. 2007, eq. 33): no microfacet faces away from
+// n. A representative direction may lie so far below the horizon (the light itself still
+// partly above it) that its half vector does; its D is then 0, whatever the bound D brick
+// (declared for n.h >= 0) would return for the clamped geometry. n.h <= 1e-4 counts as facing
+// away: inside a tube's ball and behind the mirror ray the representative direction is
+// exactly -r, whose half vector lies in the tangent plane (n.h = 0 up to rounding), and fp32
+// and double would otherwise take different sides of the jump from alpha^2 / pi to 0.
+const float MB_AREA_LIGHT_MIN_NOH = 1e-4;
+
+bool mb_facing(Geometry gD) {
+    return gD.NoH > MB_AREA_LIGHT_MIN_NOH;
+}
+#endif
+
+#ifdef MB_LIGHT_SPHERE
+// Seed 002 "Sphere Lights": D at Karis's representative point (the point of the sphere closest
+// to the mirror ray) times the energy normalization; diffuse, V and F at the centre direction;
+// both lobes times the horizon-wrapped cosine. The representative direction comes from the
+// sphere_light_point role (a tube_light_point brick, called with a zero-length segment: the
+// tube bricks' sphere step is Karis's sphere closest point, eqs. 11-12), built from vectors.
+// An earlier form took D at the n.h of the sphere_max_noh bricks and rebuilt a direction from
+// it; one fp32 n.h carries an angle error ~6e-7 / sin(theta_h), which GGX D amplifies by up to
+// 2 / alpha (13% at roughness 0.04, docs/models/lights.md), so the direction is passed instead.
+vec3 mb_shade_sphere(ShadingPixel px, ShadingFrame f, SphereLight light) {
+    MbSphereView s = mb_sphere_view(f, light.toCenter, light.radius, light.intensity, light.falloffRadius);
+    vec3 lD = MB_SLOT_sphere_light_point(s.g, light.toCenter, light.toCenter, light.radius);
+    // The shading point on the sphere's centre has no direction (the brick's normalize(0)):
+    // the centre direction stands in (false for NaN too).
+    lD = dot(lD, lD) > 0.5 ? lD : s.g.l;
+    Geometry gD = makeGeometry(f.n, f.v, lD);
+    float energy = mb_facing(gD) ? MB_SLOT_sphere_energy_normalization(s.g, px.alpha, s.sinAlpha) : 0.0;
+    return mb_standard_light(px, f, s.g, gD, energy, s.cosine, s.cosine) * s.illuminance;
+}
+#endif
+
+#ifdef MB_LIGHT_TUBE
+// Karis 2013 ("Tube Lights"; UE4 LineIrradiance) approximates the irradiance of a segment
+// L0..L1 whose elements emit I / length each as
+//   E / I = (n.L0/|L0| + n.L1/|L1|) / (|L0||L1| + L0.L1).
+// With u0, u1 the unit endpoint directions, theta their angle and w = (u0 + u1) / |u0 + u1|:
+// n.u0 + n.u1 = 2 cos(theta/2) n.w and |L0||L1| + L0.L1 = 2 |L0||L1| cos^2(theta/2), so
+//   E / I = n.w / (|L0||L1| cos(theta/2)):
+// a point light in the bisector direction w at distance sqrt(|L0||L1| cos(theta/2)). This
+// returns that point; the tube is shaded as a sphere of its radius there (the falloff brick's
+// window and bias applied at that distance, the horizon wrap for the radius). Zero length gives
+// the centre, so a zero-length tube is the sphere light.
+vec3 mb_tube_equivalent_point(ShadingFrame f, vec3 L0, vec3 L1) {
+    float d0 = length(L0);
+    float d1 = length(L1);
+    vec3 u0 = d0 > 0.0 ? L0 / d0 : vec3(0.0);
+    vec3 u1 = d1 > 0.0 ? L1 / d1 : vec3(0.0);
+    vec3 bisector = u0 + u1;  // length 2 cos(theta/2): no cancellation in 1 + cos(theta)
+    float b = length(bisector);
+    vec3 w = b > 0.0 ? bisector / b : f.n;  // the segment through the shading point: any w
+    return w * sqrt(d0 * d1 * (0.5 * b));
+}
+
+// Seed 002 "Tube Lights": D at the tube_light_point brick's representative direction times
+// the tube's energy normalization; diffuse, V, F and the cosine from the equivalent sphere.
+vec3 mb_shade_tube(ShadingPixel px, ShadingFrame f, TubeLight light) {
+    vec3 P = mb_tube_equivalent_point(f, light.toStart, light.toEnd);
+    MbSphereView s = mb_sphere_view(f, P, light.radius, light.intensity, light.falloffRadius);
+    vec3 lD = MB_SLOT_tube_light_point(s.g, light.toStart, light.toEnd, light.radius);
+    // A segment through the shading point has its representative point there, and the brick's
+    // normalize(0) is NaN: fall back to the equivalent direction. (The comparison is false for
+    // NaN, which is what selects the fallback.)
+    lD = dot(lD, lD) > 0.5 ? lD : s.g.l;
+    Geometry gD = makeGeometry(f.n, f.v, lD);
+    float energy =
+        mb_facing(gD) ? MB_SLOT_tube_energy_normalization(gD, px.alpha, light.toStart, light.toEnd, light.radius) : 0.0;
+    return mb_standard_light(px, f, s.g, gD, energy, s.cosine, s.cosine) * s.illuminance;
+}
+#endif
