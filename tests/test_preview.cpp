@@ -10,6 +10,7 @@
 #include <fstream>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <unistd.h>
 
 #include "harness/vulkan_graphics.hpp"
@@ -199,4 +200,54 @@ TEST_CASE("preview rejects bad input with one line and writes nothing", "[previe
   auto noDir = test::runCli("preview " + material + " -o " + (dir.path / "missing" / "x.png").string());
   CHECK(noDir.exitCode == 3);
   CHECK_FALSE(fs::exists(dir.path / "x.png"));
+}
+
+namespace {
+
+// What a fixed-point device would draw, judged as the GPU image is: the reference rendered with
+// the double's quantized fetches, with the sampling bound assuming the double's precision.
+preview::PreviewResult fixedPointPreview(const MaterialDesc& m, const std::string& env,
+                                         const preview::WeightQuantizer& hardware,
+                                         std::optional<harness::SamplerPrecision> assumed = std::nullopt) {
+  preview::PreviewOptions o = smallOptions();
+  o.gpuDouble = hardware;
+  o.samplerLimits = assumed.value_or(hardware.bits);
+  return preview::renderPreview(device(), test::shippedLibrary(), m, o, environment(env));
+}
+
+// The largest |drawn - reference| over the sampling bound of its pixel and channel, less the
+// fp32 rounding of the drawn target (the double writes RGBA32F like the GPU).
+double overSamplingBound(const preview::PreviewResult& r) {
+  double worst = 0;
+  for (size_t p = 0; p < r.covered.size(); ++p)
+    if (r.covered[p])
+      for (int c = 0; c < 3; ++c) {
+        const double ref = r.reference[p * 3 + c];
+        const double change = std::abs(r.gpu[p * 3 + c] - ref) - 0x1p-23 * std::abs(ref);
+        if (change > 0) worst = std::max(worst, change / r.samplingBound[p * 3 + c]);
+      }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("a fixed-point sampler's image lies within the derived sampling bound", "[preview][vulkan][sampling]") {
+  const preview::WeightQuantizer devices[] = {{{4, 4}, preview::WeightRounding::Truncate},
+                                              {{4, 4}, preview::WeightRounding::Nearest},
+                                              {{8, 8}, preview::WeightRounding::Truncate},
+                                              {{8, 8}, preview::WeightRounding::Nearest}};
+  const auto files = test::exampleMaterialFiles();
+  for (const std::string env : {"studio", "sky"})
+    for (const auto& file : files) {
+      const MaterialDesc m = loadMaterialJson(file, test::shippedLibrary());
+      for (const auto& d : devices) {
+        const preview::PreviewResult r = fixedPointPreview(m, env, d);
+        INFO(m.name << " under " << env << " with " << d.bits.subTexelBits << "-bit "
+                    << (d.rounding == preview::WeightRounding::Truncate ? "truncated" : "rounded")
+                    << " weights: max error/tolerance " << r.maxErrorRatio << ", " << r.failures
+                    << " pixels outside; over the sampling bound alone " << overSamplingBound(r));
+        CHECK(r.passed());
+        CHECK(overSamplingBound(r) <= 1.0);
+      }
+    }
 }

@@ -51,6 +51,12 @@ nlohmann::json resultJson(const preview::PreviewResult& r, const std::string& gp
           {"passed_by_conditioning", r.passedByConditioning},
           {"radiance_bound", r.radianceBound},
           {"tolerance", {{"abs", r.tolerance.abs}, {"rel", r.tolerance.rel}, {"reason", r.tolerance.reason}}},
+          {"sampling",
+           {{"sub_texel_bits", r.samplerPrecision.subTexelBits},
+            {"mipmap_bits", r.samplerPrecision.mipmapBits},
+            {"max", r.samplingMax},
+            {"max_over_arithmetic", r.samplingOverArithmeticMax},
+            {"mean_over_arithmetic", r.samplingOverArithmeticMean}}},
           {"compile_ms", r.compileMs},
           {"pipeline_ms", r.pipelineMs},
           {"render_ms", r.renderMs},
@@ -73,6 +79,11 @@ void printResult(const preview::PreviewResult& r, const std::string& gpuPng) {
       "non-finite\n",
       r.tolerance.abs, r.tolerance.rel, r.radianceBound, r.maxErrorRatio, static_cast<unsigned long long>(r.failures),
       static_cast<unsigned long long>(r.nonFinite));
+  std::printf(
+      "  sampling share (subTexelPrecisionBits %u, mipmapPrecisionBits %u): max %.3g; over the arithmetic "
+      "tolerance max %.3g, mean %.3g\n",
+      r.samplerPrecision.subTexelBits, r.samplerPrecision.mipmapBits, r.samplingMax, r.samplingOverArithmeticMax,
+      r.samplingOverArithmeticMean);
   std::printf(
       "  compile %.0f ms, pipelines %.0f ms, render %.0f ms, attributes %.0f ms, reference %.0f ms, "
       "tonemap %.0f ms: %s\n",

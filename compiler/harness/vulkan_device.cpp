@@ -183,6 +183,12 @@ bool offersShaderFloat16(VkPhysicalDevice device) {
 
 bool isLavapipeName(const std::string& name) { return containsNoCase(name, "llvmpipe"); }
 
+// Taken as reported, even below the spec's minimum of 4: the bound derived from them
+// (preview/texel_filter.hpp) only widens as they shrink, down to 0 bits (any weight in [0, 1]).
+SamplerPrecision deviceSamplerPrecision(const DeviceContext& ctx) {
+  return {ctx.props.limits.subTexelPrecisionBits, ctx.props.limits.mipmapPrecisionBits};
+}
+
 void createInstance(DeviceContext& ctx, bool validation) {
   std::vector<const char*> layers;
   std::vector<const char*> extensions;

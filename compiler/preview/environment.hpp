@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "preview/texel_filter.hpp"
+
 namespace mb::harness {
 class VulkanHarness;
 }
@@ -49,6 +51,9 @@ struct EnvironmentMaps {
   // and at a corner the missing texel as the average of the other three. In double; dir
   // need not be normalized. The measured difference from lavapipe is in docs/environments.md.
   std::array<double, 3> sample(const std::array<double, 3>& dir, double lod) const;
+  // The same with its sampling bound: how far a device filtering with `filter.limits` may be
+  // from it (texel_filter.hpp), or, with a quantizer, what such a device returns.
+  FilteredRgb sampleFiltered(const std::array<double, 3>& dir, double lod, const TexelFilter& filter) const;
 };
 
 // {"studio", "sky"}.

@@ -6,8 +6,6 @@
 namespace mb::preview {
 namespace {
 
-using Rgb = std::array<double, 3>;
-
 Rgb texelAt(const CubeLevel& level, uint32_t face, uint32_t i, uint32_t j) {
   const size_t k = ((size_t{face} * level.size + j) * level.size + i) * 4;
   return {level.rgba[k], level.rgba[k + 1], level.rgba[k + 2]};
@@ -83,51 +81,49 @@ double cubeTexelSolidAngle(uint32_t i, uint32_t j, uint32_t size) {
   return area(x0, y0) - area(x0, y1) - area(x1, y0) + area(x1, y1);
 }
 
-std::array<double, 3> sampleCubeLevel(const CubeLevel& level, const FaceCoord& fc) {
+FilteredRgb sampleCubeLevel(const CubeLevel& level, const FaceCoord& fc, const TexelFilter& filter) {
   const double u = fc.s * level.size - 0.5, v = fc.t * level.size - 0.5;
   const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v));
-  const double a = u - i0, b = v - j0;
+  Footprint f;
+  f.a = u - i0, f.b = v - j0;
   const int n = static_cast<int>(level.size);
   auto outside = [n](int k) { return k < 0 || k >= n; };
-  Rgb t[2][2];
-  int cornerX = -1, cornerY = -1;
   for (int dy = 0; dy < 2; ++dy)
     for (int dx = 0; dx < 2; ++dx) {
       if (outside(i0 + dx) && outside(j0 + dy))
-        cornerX = dx, cornerY = dy;
+        f.corner = dy * 2 + dx;
       else
-        t[dy][dx] = edgeTexel(level, fc.face, i0 + dx, j0 + dy);
+        f.t[dy][dx] = edgeTexel(level, fc.face, i0 + dx, j0 + dy);
     }
   // At a cube corner three faces meet and the fourth texel of the footprint does not exist;
   // it is taken as the average of the other three (the spec's suggested behaviour, and
-  // lavapipe's).
-  if (cornerX >= 0) {
-    Rgb& c = t[cornerY][cornerX];
+  // lavapipe's; texel_filter.hpp bounds what other methods may give).
+  if (f.corner >= 0) {
+    Rgb& c = f.t[f.corner / 2][f.corner % 2];
     c = {0, 0, 0};
-    for (int dy = 0; dy < 2; ++dy)
-      for (int dx = 0; dx < 2; ++dx)
-        if (dx != cornerX || dy != cornerY)
-          for (int k = 0; k < 3; ++k) c[k] += t[dy][dx][k] / 3.0;
+    for (int k = 0; k < 4; ++k)
+      if (k != f.corner)
+        for (int ch = 0; ch < 3; ++ch) c[ch] += f.t[k / 2][k % 2][ch] / 3.0;
   }
-  Rgb out;
-  for (int k = 0; k < 3; ++k)
-    out[k] = (1 - a) * (1 - b) * t[0][0][k] + a * (1 - b) * t[0][1][k] + (1 - a) * b * t[1][0][k] + a * b * t[1][1][k];
-  return out;
+  return filterBilinear(f, filter);
 }
 
-std::array<double, 3> EnvironmentMaps::sample(const std::array<double, 3>& dir, double lod) const {
-  if (levels.empty()) return {0, 0, 0};
+FilteredRgb EnvironmentMaps::sampleFiltered(const std::array<double, 3>& dir, double lod,
+                                            const TexelFilter& filter) const {
+  if (levels.empty()) return {};
   const FaceCoord fc = cubeFaceCoord(dir);
   const double q = maxMip();
   const double d = std::clamp(lod, 0.0, q);
   const auto lo = static_cast<size_t>(std::floor(d));
   const double frac = d - lo;
-  std::array<double, 3> out = sampleCubeLevel(levels[lo], fc);
-  if (frac > 0.0 && lo + 1 < levels.size()) {
-    const std::array<double, 3> hi = sampleCubeLevel(levels[lo + 1], fc);
-    for (int k = 0; k < 3; ++k) out[k] = (1.0 - frac) * out[k] + frac * hi[k];
-  }
-  return out;
+  const FilteredRgb low = sampleCubeLevel(levels[lo], fc, filter);
+  // An exact integer level (or the clamped ends) has fraction 0, which every quantization keeps.
+  if (!(frac > 0.0 && lo + 1 < levels.size())) return low;
+  return blendLevels(low, sampleCubeLevel(levels[lo + 1], fc, filter), frac, filter);
+}
+
+std::array<double, 3> EnvironmentMaps::sample(const std::array<double, 3>& dir, double lod) const {
+  return sampleFiltered(dir, lod, TexelFilter{}).value;
 }
 
 }  // namespace mb::preview

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "preview/environment.hpp"
+#include "preview/texel_filter.hpp"
 
 namespace mb::preview {
 
@@ -28,7 +29,7 @@ std::array<double, 3> cubeTexelDirection(uint32_t face, uint32_t i, uint32_t j, 
 // atan(x y / sqrt(1 + x^2 + y^2)) evaluated at the four corners.
 double cubeTexelSolidAngle(uint32_t i, uint32_t j, uint32_t size);
 
-// Bilinear lookup of one level at (face, s, t) with seamless edges.
-std::array<double, 3> sampleCubeLevel(const CubeLevel& level, const FaceCoord& fc);
+// Bilinear lookup of one level at (face, s, t) with seamless edges, with its sampling bound.
+FilteredRgb sampleCubeLevel(const CubeLevel& level, const FaceCoord& fc, const TexelFilter& filter);
 
 }  // namespace mb::preview

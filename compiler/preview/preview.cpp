@@ -190,13 +190,13 @@ Image8 tonemapReference(const PreviewOptions& o, const std::vector<double>& rgb,
 void compare(const ReferenceScene& scene, const PixelAttributes& attributes, PreviewResult& r) {
   const size_t pixels = size_t{r.width} * r.height;
   r.errorRatio.assign(pixels, 0.0);
-  double sum[3] = {0, 0, 0};
+  double sum[3] = {0, 0, 0}, samplingRatioSum = 0;
   std::vector<ref::ModelEvalInput> work;
   for (size_t s = 0; s < scene.sphereInputs.size(); ++s) work.push_back(referenceWorkspace(scene, s));
   for (size_t p = 0; p < pixels; ++p) {
     if (!r.covered[p]) continue;
     ++r.coveredPixels;
-    double ratio = 0;
+    double ratio = 0, samplingRatio = 0;
     bool conditioned = false;
     std::array<double, 3> allowance{0, 0, 0};
     for (int c = 0; c < 3; ++c) {
@@ -209,7 +209,10 @@ void compare(const ReferenceScene& scene, const PixelAttributes& attributes, Pre
       const double err = std::abs(g - ref);
       r.channels[c].maxAbs = std::max(r.channels[c].maxAbs, err);
       sum[c] += err;
-      double allowed = r.tolerance.abs + r.tolerance.rel * std::abs(ref);
+      const double arithmetic = r.tolerance.abs + r.tolerance.rel * std::abs(ref);
+      const double sampling = r.samplingBound[p * 3 + c];
+      samplingRatio = std::max(samplingRatio, arithmetic > 0 ? sampling / arithmetic : 0.0);
+      double allowed = arithmetic + sampling;
       if (err > allowed && !conditioned) {
         const uint32_t x = static_cast<uint32_t>(p % r.width), y = static_cast<uint32_t>(p / r.width);
         const ref::Vec3 reference{r.reference[p * 3], r.reference[p * 3 + 1], r.reference[p * 3 + 2]};
@@ -224,9 +227,12 @@ void compare(const ReferenceScene& scene, const PixelAttributes& attributes, Pre
     }
     r.errorRatio[p] = ratio;
     r.maxErrorRatio = std::max(r.maxErrorRatio, ratio);
+    r.samplingOverArithmeticMax = std::max(r.samplingOverArithmeticMax, samplingRatio);
+    samplingRatioSum += samplingRatio;
     if (ratio > 1.0) ++r.failures;
   }
   for (int c = 0; c < 3; ++c) r.channels[c].meanAbs = r.coveredPixels ? sum[c] / r.coveredPixels : 0.0;
+  r.samplingOverArithmeticMean = r.coveredPixels ? samplingRatioSum / r.coveredPixels : 0.0;
 }
 
 Image8 heatmap(const PreviewResult& r) {
@@ -358,16 +364,26 @@ PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& li
   scene.lights = lights;
   scene.environment = &env.maps;
   scene.dfg = &env.dfg;
+  scene.samplerLimits = r.samplerPrecision = o.samplerLimits.value_or(gpu.samplerPrecision());
   scene.tile = o.size;
   scene.sphereInputs = sphereModelInputs(gpu, lib, perm, spheres);
   for (auto& inputs : scene.sphereInputs)
     for (const auto& [name, value] : o.referenceOverrides) inputs[name] = value;
 
   t0 = Clock::now();
-  r.reference = referenceImage(scene, a, o.threads);
+  r.reference = referenceImage(scene, a, o.threads, &r.samplingBound);
   for (size_t p = 0; p < pixels; ++p)
     if (!r.covered[p])
       for (int c = 0; c < 3; ++c) r.reference[p * 3 + c] = kBackground[c];
+  r.samplingMax = *std::max_element(r.samplingBound.begin(), r.samplingBound.end());
+  if (o.gpuDouble) {
+    ReferenceScene device = scene;
+    device.quantizer = &*o.gpuDouble;
+    const std::vector<double> drawn = referenceImage(device, a, o.threads);
+    for (size_t p = 0; p < pixels; ++p)
+      if (r.covered[p])
+        for (int c = 0; c < 3; ++c) r.gpu[p * 3 + c] = static_cast<float>(drawn[p * 3 + c]);
+  }
   r.referenceMs = msSince(t0);
 
   r.radianceBound = sceneRadianceBound(lights, perm.environment == "none" ? nullptr : &env.maps);

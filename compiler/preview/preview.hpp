@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "lut/dfg_lut.hpp"
 #include "preview/environment.hpp"
 #include "preview/preview_image.hpp"
+#include "preview/texel_filter.hpp"
 #include "validate/error_metrics.hpp"
 
 namespace mb::harness {
@@ -42,6 +44,12 @@ struct PreviewOptions {
   // Test hook: model inputs that the reference render alone takes at these values (a wrong
   // reference, which the comparison must catch). Empty in every real use.
   std::map<std::string, std::vector<double>> referenceOverrides;
+  // Test hooks for the sampling share (docs/preview.md "Sampling share"): the sampler precision
+  // the bound assumes instead of the device's, and a CPU double of fixed-point hardware
+  // filtering whose image replaces the GPU's (the reference rendered with its quantized
+  // fetches), so that what such a device would draw is judged as the GPU image is.
+  std::optional<harness::SamplerPrecision> samplerLimits;
+  std::optional<WeightQuantizer> gpuDouble;
 };
 
 // The environment a preview lights with, made once and shared by every material rendered
@@ -83,6 +91,13 @@ struct PreviewResult {
   uint64_t coveredPixels = 0, failures = 0, passedByConditioning = 0, nonFinite = 0;
   Tolerance tolerance;  // abs already scaled by the scene's radiance bound
   double radianceBound = 0;
+  // The sampling share of the tolerance (docs/preview.md): the sampler precision it assumes,
+  // per pixel rgb the bound on what the device's filtering may change, its largest value, and
+  // the largest and mean (over covered pixels) of its ratio to the arithmetic tolerance
+  // abs + rel |ref| of the same pixel and channel.
+  harness::SamplerPrecision samplerPrecision;
+  std::vector<double> samplingBound;
+  double samplingMax = 0, samplingOverArithmeticMax = 0, samplingOverArithmeticMean = 0;
   Image8 gpuImage, referenceImage, diffImage;
   // Host times in ms: shader emission and compilation, pipeline creation (lavapipe compiles
   // the shaders there), the two render passes (submit to fence), the reference render, the

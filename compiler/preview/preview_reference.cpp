@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <stdexcept>
 #include <thread>
 
 #include "validate/probe_program.hpp"
@@ -20,23 +21,39 @@ Vec3 at(const std::vector<float>& target, size_t pixel) {
 
 }  // namespace
 
-ref::Vec3 sampleDfgLut(const lut::LutTable& table, double u, double v) {
+FilteredRgb sampleDfgLut(const lut::LutTable& table, double u, double v, const TexelFilter& filter) {
   const TexelAxis x = texelAxis(u, static_cast<int>(table.size)), y = texelAxis(v, static_cast<int>(table.size));
-  const int i0 = x.i0, i1 = x.i1, j0 = y.i0, j1 = y.i1;
-  const double wu = x.w, wv = y.w;
-  double c[3];
-  for (uint32_t k = 0; k < 3; ++k) {
-    auto texel = [&](int i, int j) {
-      return static_cast<double>(table.at(static_cast<uint32_t>(i), static_cast<uint32_t>(j), k));
-    };
-    const double top = texel(i0, j0) * (1 - wu) + texel(i1, j0) * wu;
-    const double bottom = texel(i0, j1) * (1 - wu) + texel(i1, j1) * wu;
-    c[k] = top * (1 - wv) + bottom * wv;
-  }
-  return {c[0], c[1], c[2]};
+  Footprint f;
+  f.a = x.w, f.b = y.w;
+  for (int row = 0; row < 2; ++row)
+    for (int column = 0; column < 2; ++column)
+      for (uint32_t k = 0; k < 3; ++k)
+        f.t[row][column][k] =
+            table.at(static_cast<uint32_t>(column ? x.i1 : x.i0), static_cast<uint32_t>(row ? y.i1 : y.i0), k);
+  return filterBilinear(f, filter);
 }
 
-ref::ModelEvalInput referenceWorkspace(const ReferenceScene& scene, size_t sphere) {
+namespace {
+
+// One texture fetch of the reference: sampled (and recorded) or, replaying, the recorded one
+// with the moved component shifted by its bound.
+template <class Sample>
+Vec3 fetched(FetchLog* log, const Sample& sample) {
+  if (log && log->replay) {
+    if (log->next >= log->fetches.size()) throw std::logic_error("a replayed reference fetched more than it recorded");
+    const size_t k = log->next++;
+    FilteredRgb f = log->fetches[k];
+    if (k == log->moved) f.value[log->component] += f.bound[log->component];
+    return {f.value[0], f.value[1], f.value[2]};
+  }
+  const FilteredRgb f = sample();
+  if (log) log->fetches.push_back(f);
+  return {f.value[0], f.value[1], f.value[2]};
+}
+
+}  // namespace
+
+ref::ModelEvalInput referenceWorkspace(const ReferenceScene& scene, size_t sphere, FetchLog* log) {
   ref::ModelEvalInput e;
   e.bricks = scene.bricks;
   e.features.insert(scene.features.begin(), scene.features.end());
@@ -48,17 +65,17 @@ ref::ModelEvalInput referenceWorkspace(const ReferenceScene& scene, size_t spher
   std::copy(sh.begin(), sh.end(), env.sh);
   env.ao = 1.0;
   env.maxMip = static_cast<float>(scene.environment->maxMip());
+  const TexelFilter filter{scene.samplerLimits, scene.quantizer};
   if (env.ibl()) {
     const EnvironmentMaps* maps = scene.environment;
-    env.fetchPrefiltered = [maps](const Vec3& r, double lod) {
-      const auto s = maps->sample({r.x, r.y, r.z}, lod);
-      return Vec3{s[0], s[1], s[2]};
+    env.fetchPrefiltered = [maps, filter, log](const Vec3& r, double lod) {
+      return fetched(log, [&] { return maps->sampleFiltered({r.x, r.y, r.z}, lod, filter); });
     };
   }
   if (env.mode == "ibl_lut") {
     const lut::LutTable* table = scene.dfg;
-    env.fetchDfg = [table](double NoV, double perceptualRoughness) {
-      return sampleDfgLut(*table, NoV, perceptualRoughness);
+    env.fetchDfg = [table, filter, log](double NoV, double perceptualRoughness) {
+      return fetched(log, [&] { return sampleDfgLut(*table, NoV, perceptualRoughness, filter); });
     };
   }
   e.env = std::move(env);
@@ -112,24 +129,52 @@ std::array<double, 3> conditioningAllowance(const ReferenceScene& scene, const P
   return allowance;
 }
 
-std::vector<double> referenceImage(const ReferenceScene& scene, const PixelAttributes& a, unsigned threads) {
+std::array<double, 3> samplingShare(const ReferenceScene& scene, const PixelAttributes& a, uint32_t x, uint32_t y,
+                                    const ref::Vec3& reference, ref::ModelEvalInput& work, FetchLog& log) {
+  std::array<double, 3> share{0, 0, 0};
+  log.replay = true;
+  for (size_t k = 0; k < log.fetches.size(); ++k)
+    for (int c = 0; c < 3; ++c) {
+      if (log.fetches[k].bound[c] == 0.0) continue;  // equal texels: every device returns the same
+      log.next = 0, log.moved = k, log.component = c;
+      const Vec3 moved = referencePixel(scene, a, x, y, work);
+      const double d[3] = {std::abs(moved.x - reference.x), std::abs(moved.y - reference.y),
+                           std::abs(moved.z - reference.z)};
+      for (int ch = 0; ch < 3; ++ch)
+        if (std::isfinite(d[ch])) share[ch] += d[ch];
+    }
+  log.replay = false;
+  return share;
+}
+
+std::vector<double> referenceImage(const ReferenceScene& scene, const PixelAttributes& a, unsigned threads,
+                                   std::vector<double>* samplingBound) {
   std::vector<double> out(size_t{a.width} * a.height * 3, 0.0);
+  if (samplingBound) samplingBound->assign(out.size(), 0.0);
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   threads = std::min<unsigned>(threads, a.height);
   std::vector<std::exception_ptr> errors(threads);
   auto work = [&](unsigned t) {
     try {
+      FetchLog log;
       std::vector<ref::ModelEvalInput> spheres;
-      for (size_t s = 0; s < scene.sphereInputs.size(); ++s) spheres.push_back(referenceWorkspace(scene, s));
+      for (size_t s = 0; s < scene.sphereInputs.size(); ++s)
+        spheres.push_back(referenceWorkspace(scene, s, samplingBound ? &log : nullptr));
       // Rows interleaved: the spheres fill the middle rows, so blocks of rows would not balance.
       for (uint32_t y = t; y < a.height; y += threads) {
         for (uint32_t x = 0; x < a.width; ++x) {
           const size_t pixel = size_t{y} * a.width + x;
           if (a.position[pixel * 4 + 3] != 1.0f) continue;
-          const Vec3 r = referencePixel(scene, a, x, y, spheres.at(x / scene.tile));
+          log.fetches.clear();
+          ref::ModelEvalInput& work = spheres.at(x / scene.tile);
+          const Vec3 r = referencePixel(scene, a, x, y, work);
           out[pixel * 3] = r.x;
           out[pixel * 3 + 1] = r.y;
           out[pixel * 3 + 2] = r.z;
+          if (samplingBound) {
+            const auto share = samplingShare(scene, a, x, y, r, work, log);
+            std::copy(share.begin(), share.end(), samplingBound->begin() + pixel * 3);
+          }
         }
       }
     } catch (...) {

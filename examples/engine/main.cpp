@@ -39,6 +39,13 @@ static_assert(em::recordOffset(*kPlastic, "l") != ~0u, "records without a light 
 static_assert(kPlastic->paramsSize <= sizeof(em::filament_plastic_Params), "parameter struct too small");
 // The raster path binds no textures (docs/fragment-stage.md: bindings 4 + i).
 static_assert(kMetal->fragmentTextureCount == 0 && kPlastic->fragmentTextureCount == 0, "textured permutation");
+// Nor an environment (the permutations' environment mode is "none"): neither path fetches a
+// texel, so the sampling share of the tolerance, which the device's subTexelPrecisionBits and
+// mipmapPrecisionBits bound per fetch (docs/preview.md "Sampling share"), is exactly 0 here
+// on any device. A permutation with an environment or textures would need that share.
+static_assert(kMetalKey.find(".none.") != std::string_view::npos &&
+                  kPlasticKey.find(".none.") != std::string_view::npos,
+              "a permutation that samples an environment");
 
 namespace {
 
@@ -279,6 +286,9 @@ int main(int, char** argv) {
     std::string dir = argv[0];
     dir = dir.find('/') == std::string::npos ? "." : dir.substr(0, dir.rfind('/'));
     Gpu gpu;
+    std::printf(
+        "engine example: subTexelPrecisionBits %u, mipmapPrecisionBits %u; no texture fetches, sampling share 0\n",
+        gpu.limits().subTexelPrecisionBits, gpu.limits().mipmapPrecisionBits);
 
     em::ue4_metal_Params metal{};
     metal.roughness = 0.3f;
