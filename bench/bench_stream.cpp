@@ -23,6 +23,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "child_run.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -70,31 +72,8 @@ size_t requiredCount(const fs::path& manifest) {
   return at == std::string::npos ? 0 : std::stoul(head.substr(at + 12));
 }
 
-struct Run {
-  int status = -1;
-  double wallS = 0;
-  long peakRssKb = 0;
-};
-
-Run runChild(const std::vector<std::string>& args, const fs::path& log) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if (pid == 0) {
-    FILE* out = std::freopen(log.c_str(), "w", stdout);
-    (void)out;
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  Run r;
-  rusage usage{};
-  wait4(pid, &r.status, 0, &usage);
-  r.wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.peakRssKb = usage.ru_maxrss;
-  return r;
-}
+using Run = mb::bench::ChildRun;
+using mb::bench::runChild;
 
 }  // namespace
 

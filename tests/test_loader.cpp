@@ -633,7 +633,7 @@ TEST_CASE("loadMaterialFile picks the form by extension", "[loader]") {
   only(ds, "E-FILE-NOT-FOUND");
   std::filesystem::create_directories(dir.path("folder.json"));
   ds = mb::test::diagnosticsOf([&] { mb::loadMaterialFile(dir.path("folder.json"), mb::test::featureLibrary()); });
-  CHECK_THAT(only(ds, "E-FILE-NOT-FOUND").message, Contains("is not a regular file"));
+  CHECK_THAT(only(ds, "E-FILE-NOT-REGULAR").message, Contains("is a directory"));
 }
 
 TEST_CASE("hostile JSON never crashes or hangs the loader: one clean diagnostic", "[loader]") {

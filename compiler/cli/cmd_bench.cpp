@@ -4,13 +4,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "bench/report.hpp"
 #include "bench/yardstick.hpp"
 #include "core/data_dir.hpp"
+#include "core/input_file.hpp"
 #include "bench/svg_chart.hpp"
 #include "cli/cli_common.hpp"
 #include "cli/progress.hpp"
@@ -55,11 +54,12 @@ bench::BenchOptions resolveScope(const BenchArgs& a, const ShaderLibrary& lib, s
   return o;
 }
 
+// The --markdown file's text, "" when there is none yet (core/input_file.hpp: a FIFO or a
+// device there is a coded error, not a hang).
 std::string readFileIfAny(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(path, ec))) return "";
+  return readInputFileOrThrow(path, input_kind::kMarkdown);
 }
 
 // Before measuring: every output checked (docs/cli.md "Outputs"); --markdown is read and its

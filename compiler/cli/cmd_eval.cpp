@@ -39,6 +39,95 @@ MaterialDesc pickMaterial(const std::vector<MaterialDesc>& materials, const Eval
                           didYouMean(a.name, names)}});
 }
 
+// Rows evaluated per GPU dispatch: memory stays constant however long the CSV is (its
+// inputs, outputs, references and conditioning: ~100 bytes per value).
+constexpr size_t kRowsPerChunk = size_t{1} << 16;
+
+// Prints each row as it is evaluated, as text or as the elements of a JSON "rows" array.
+class EvalPrinter {
+ public:
+  EvalPrinter(const ProbeProgram& program, bool json) : program_(program), json_(json) {}
+
+  void begin(const std::string& deviceName) {
+    if (json_)
+      std::printf("{\n  \"key\": %s,\n  \"rows\": [", nlohmann::json(program_.shader.key).dump().c_str());
+    else
+      std::printf("%s on %s\n", program_.shader.key.c_str(), deviceName.c_str());
+  }
+
+  void rows(const ProbeRun& run, const std::vector<int>& lines) {
+    for (uint64_t i = 0; i < run.count; ++i) json_ ? jsonRow(run, i, lines[i]) : textRow(run, i, lines[i]);
+  }
+
+  void end(const ErrorStats& stats) {
+    if (json_) {
+      std::printf("%s],\n  \"passed\": %s\n}\n", printed_ ? "\n  " : "", stats.passed() ? "true" : "false");
+      return;
+    }
+    std::printf("%s: max_abs=%.4g max_rel=%.4g nan=%llu inf=%llu (tolerance abs %.3g + rel %.3g)\n",
+                stats.passed() ? "within tolerance" : "OUT OF TOLERANCE", stats.maxAbs, stats.maxRel,
+                static_cast<unsigned long long>(stats.nanCount), static_cast<unsigned long long>(stats.infCount),
+                program_.tolerance.abs, program_.tolerance.rel);
+  }
+
+ private:
+  void jsonRow(const ProbeRun& run, uint64_t i, int line) {
+    const ProbeLayout& layout = program_.shader.layout;
+    const uint32_t os = layout.outStride, is = layout.inStride;
+    nlohmann::json row{{"line", line}};
+    for (uint32_t k = 0; k < is; ++k) row["inputs"][inCols_[k]] = run.inputs[i * is + k];
+    for (uint32_t k = 0; k < os; ++k) {
+      double gv = run.gpu[i * os + k], rv = run.reference[i * os + k];
+      row["gpu"][outCols_[k]] = std::isfinite(gv) ? nlohmann::json(gv) : nlohmann::json(std::to_string(gv));
+      row["reference"][outCols_[k]] = std::isfinite(rv) ? nlohmann::json(rv) : nlohmann::json(std::to_string(rv));
+      row["abs_error"][outCols_[k]] =
+          std::isfinite(gv - rv) ? nlohmann::json(std::abs(gv - rv)) : nlohmann::json("nan");
+    }
+    std::printf("%s\n    %s", printed_++ ? "," : "", row.dump().c_str());
+  }
+
+  void textRow(const ProbeRun& run, uint64_t i, int line) {
+    const ProbeLayout& layout = program_.shader.layout;
+    const uint32_t os = layout.outStride, is = layout.inStride;
+    std::printf("row %llu (line %d):", static_cast<unsigned long long>(++printed_), line);
+    for (uint32_t k = 0; k < is; ++k) std::printf(" %s=%.9g", inCols_[k].c_str(), run.inputs[i * is + k]);
+    std::printf("\n");
+    for (uint32_t k = 0; k < os; ++k) {
+      double gv = run.gpu[i * os + k], rv = run.reference[i * os + k];
+      std::printf("  %-6s gpu=%-16.9g reference=%-22.17g abs_err=%-12.4g rel_err=%.4g\n", outCols_[k].c_str(), gv, rv,
+                  std::abs(gv - rv), std::abs(gv - rv) / std::max(std::abs(rv), kRelativeErrorFloor));
+    }
+  }
+
+  const ProbeProgram& program_;
+  bool json_;
+  std::vector<std::string> inCols_ = program_.shader.layout.columns();
+  std::vector<std::string> outCols_ = program_.shader.layout.outputColumns();
+  uint64_t printed_ = 0;
+};
+
+// The rows of the CSV in chunks, their columns in the probe's order, as fp32 inputs.
+class EvalRows {
+ public:
+  EvalRows(CsvReader& reader, const std::vector<size_t>& order) : reader_(reader), order_(order) {}
+  // The next chunk into `inputs` and `lines`; false when there are no rows left.
+  bool next(std::vector<float>& inputs, std::vector<int>& lines) {
+    inputs.clear();
+    lines.clear();
+    int line = 0;
+    while (lines.size() < kRowsPerChunk && reader_.next(row_, line)) {
+      for (size_t column : order_) inputs.push_back(static_cast<float>(row_[column]));
+      lines.push_back(line);
+    }
+    return !lines.empty();
+  }
+
+ private:
+  CsvReader& reader_;
+  const std::vector<size_t>& order_;
+  std::vector<double> row_;
+};
+
 int runEval(const EvalArgs& a, const GlobalOptions& g) {
   setFp16Mode(*parseFp16Mode(a.fp16));
   if (a.brick.empty() == a.material.empty())
@@ -46,7 +135,10 @@ int runEval(const EvalArgs& a, const GlobalOptions& g) {
   ShaderLibrary lib = loadLibrary(g);
   std::vector<MaterialDesc> materials;
   ProbeProgram program;
-  CsvTable table = loadCsv(a.input);
+  // The CSV is read twice, row by row: once to check every row before anything is printed
+  // (a bad row is a coded error and no output), once to evaluate it in chunks.
+  CsvReader check = CsvReader::open(a.input);
+  const std::vector<std::string>& header = check.header().names;
   if (!a.brick.empty()) {
     const Brick* b = lib.findBrick(a.brick);
     if (!b) {
@@ -64,55 +156,35 @@ int runEval(const EvalArgs& a, const GlobalOptions& g) {
     perm.precision = a.precision;
     // An illuminance column (illuminance.x, .y, .z) is optional; without it the light has
     // unit illuminance. `stress` prints such columns in its replay rows.
-    program = buildPermutationProbe(
-        lib, perm, std::find(table.header.begin(), table.header.end(), "illuminance.x") != table.header.end());
+    program =
+        buildPermutationProbe(lib, perm, std::find(header.begin(), header.end(), "illuminance.x") != header.end());
   }
-  const ProbeLayout& layout = program.shader.layout;
-  std::vector<std::vector<double>> rows = selectColumns(table, layout.columns());
-  std::vector<float> inputs;
-  for (const auto& r : rows)
-    for (double v : r) inputs.push_back(static_cast<float>(v));
+  const std::vector<size_t> order = columnOrder(check.header(), program.shader.layout.columns());
+  {
+    std::vector<double> row;
+    int line = 0;
+    while (check.next(row, line)) {
+    }
+    check.throwIfErrors();
+  }
 
   auto gpu = openDevice(g);
-  ProbeRun run = runProbe(*gpu, program, std::move(inputs));
-  ErrorStats stats = compare(run, program);
-
-  auto inCols = layout.columns();
-  auto outCols = layout.outputColumns();
-  uint32_t os = layout.outStride, is = layout.inStride;
-  if (a.json) {
-    nlohmann::json out{{"key", program.shader.key}, {"rows", nlohmann::json::array()}};
-    for (uint64_t i = 0; i < run.count; ++i) {
-      nlohmann::json row{{"line", table.rowLines[i]}};
-      for (uint32_t k = 0; k < is; ++k) row["inputs"][inCols[k]] = run.inputs[i * is + k];
-      for (uint32_t k = 0; k < os; ++k) {
-        double gv = run.gpu[i * os + k], rv = run.reference[i * os + k];
-        row["gpu"][outCols[k]] = std::isfinite(gv) ? nlohmann::json(gv) : nlohmann::json(std::to_string(gv));
-        row["reference"][outCols[k]] = std::isfinite(rv) ? nlohmann::json(rv) : nlohmann::json(std::to_string(rv));
-        row["abs_error"][outCols[k]] =
-            std::isfinite(gv - rv) ? nlohmann::json(std::abs(gv - rv)) : nlohmann::json("nan");
-      }
-      out["rows"].push_back(row);
-    }
-    out["passed"] = stats.passed();
-    std::cout << out.dump(2) << "\n";
-  } else {
-    std::printf("%s on %s\n", program.shader.key.c_str(), gpu->deviceName().c_str());
-    for (uint64_t i = 0; i < run.count; ++i) {
-      std::printf("row %llu (line %d):", static_cast<unsigned long long>(i + 1), table.rowLines[i]);
-      for (uint32_t k = 0; k < is; ++k) std::printf(" %s=%.9g", inCols[k].c_str(), run.inputs[i * is + k]);
-      std::printf("\n");
-      for (uint32_t k = 0; k < os; ++k) {
-        double gv = run.gpu[i * os + k], rv = run.reference[i * os + k];
-        std::printf("  %-6s gpu=%-16.9g reference=%-22.17g abs_err=%-12.4g rel_err=%.4g\n", outCols[k].c_str(), gv, rv,
-                    std::abs(gv - rv), std::abs(gv - rv) / std::max(std::abs(rv), kRelativeErrorFloor));
-      }
-    }
-    std::printf("%s: max_abs=%.4g max_rel=%.4g nan=%llu inf=%llu (tolerance abs %.3g + rel %.3g)\n",
-                stats.passed() ? "within tolerance" : "OUT OF TOLERANCE", stats.maxAbs, stats.maxRel,
-                static_cast<unsigned long long>(stats.nanCount), static_cast<unsigned long long>(stats.infCount),
-                program.tolerance.abs, program.tolerance.rel);
+  EvalPrinter printer(program, a.json);
+  printer.begin(gpu->deviceName());
+  CsvReader reader = CsvReader::open(a.input);
+  EvalRows rows(reader, order);
+  ErrorStats stats;
+  std::vector<float> inputs;
+  std::vector<int> lines;
+  for (uint64_t first = 0; rows.next(inputs, lines); first += lines.size()) {
+    const ProbeRun run = runProbe(*gpu, program, std::move(inputs));
+    addErrors(stats, run, program, first);
+    printer.rows(run, lines);
+    inputs = {};
   }
+  // Only a file changed between the two readings can fail here.
+  reader.throwIfErrors();
+  printer.end(stats);
   bool layerMessages = reportLayerMessages(*gpu);
   return stats.passed() && !layerMessages ? kExitOk : kExitCheckFailed;
 }

@@ -21,7 +21,7 @@ struct VerifyArgs {
 // "permutations"[i]["key"] of PACKAGE_DIR/manifest.json (docs/package.md).
 std::vector<std::string> packageKeys(const std::string& dir) {
   const std::string path = (std::filesystem::path(dir) / "manifest.json").string();
-  JsonDocument doc = JsonDocument::load(path);
+  JsonDocument doc = JsonDocument::load(path, input_kind::kManifest);
   DiagnosticSink sink;
   JsonFields f(doc, sink);
   std::vector<std::string> keys;

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <utility>
@@ -105,6 +106,24 @@ long InputFile::read(char* buffer, std::size_t n, InputFileError& error) {
     return -1;
   }
   return static_cast<long>(got);
+}
+
+long InputFile::readAt(std::uintmax_t offset, char* buffer, std::size_t n, InputFileError& error) {
+  if (offset > kind_.maxBytes) n = 0;
+  n = static_cast<std::size_t>(std::min<std::uintmax_t>(n, kind_.maxBytes - std::min(offset, kind_.maxBytes)));
+  std::size_t done = 0;
+  while (done < n) {
+    const ssize_t got = ::pread(fd_, buffer + done, n - done, static_cast<off_t>(offset + done));
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) {
+      const int err = errno;
+      error = {"E-IO", "cannot read " + quoted(path_) + ": " + std::strerror(err)};
+      return -1;
+    }
+    if (got == 0) break;
+    done += static_cast<std::size_t>(got);
+  }
+  return static_cast<long>(done);
 }
 
 std::optional<std::string> InputFile::readAll(InputFileError& error) {

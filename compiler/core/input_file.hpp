@@ -21,16 +21,23 @@ struct InputKind {
 
 // The limit of every kind of input in one place (docs/bad-inputs.md "Input files").
 namespace input_kind {
-inline constexpr InputKind kMaterial{"material file", std::uintmax_t{16} << 20};
+inline constexpr InputKind kMaterial{"material JSON file", std::uintmax_t{16} << 20};
+inline constexpr InputKind kMacroMaterial{"macro-form material file", std::uintmax_t{16} << 20};
+inline constexpr InputKind kMacroInclude{"macro-form include file", std::uintmax_t{16} << 20};
 inline constexpr InputKind kSurface{"GLSL surface file", std::uintmax_t{16} << 20};
 inline constexpr InputKind kScene{"scene file", std::uintmax_t{16} << 20};
 inline constexpr InputKind kGltf{"glTF file", std::uintmax_t{256} << 20};
+// A .glb is never read whole: its header, its chunk headers and its JSON chunk (at most
+// kGltf's limit) are read; a BIN chunk of images may be as large as it likes.
+inline constexpr InputKind kGlb{"glTF binary (.glb) file", std::uintmax_t{1} << 40};
 inline constexpr InputKind kGltfBuffer{"glTF buffer", std::uintmax_t{256} << 20};
 inline constexpr InputKind kCsv{"CSV file", std::uintmax_t{1} << 40};  // streamed, never held whole
+inline constexpr InputKind kJson{"JSON file", std::uintmax_t{256} << 20};
 inline constexpr InputKind kManifest{"package manifest", std::uintmax_t{256} << 20};
 inline constexpr InputKind kMarker{"output marker", std::uintmax_t{64} << 10};
 inline constexpr InputKind kCacheEntry{"cache entry", std::uintmax_t{64} << 20};
 inline constexpr InputKind kShardFile{"shard file", std::uintmax_t{64} << 20};
+inline constexpr InputKind kMarkdown{"Markdown file", std::uintmax_t{16} << 20};
 inline constexpr InputKind kLibraryFile{"shader library file", std::uintmax_t{16} << 20};
 }  // namespace input_kind
 
@@ -58,6 +65,9 @@ class InputFile {
   // Up to `n` bytes into `buffer`; 0 at the end. Never reads past the kind's limit: reading
   // more than that fills `error` (E-FILE-TOO-LARGE) and returns -1, as does a read error (E-IO).
   long read(char* buffer, std::size_t n, InputFileError& error);
+  // Up to `n` bytes at `offset` (which must lie within the kind's limit), without moving the
+  // position `read` uses; fewer at the end of the file. -1 with `error` filled on a read error.
+  long readAt(std::uintmax_t offset, char* buffer, std::size_t n, InputFileError& error);
   // The rest of the file (at most the kind's limit), or nothing with `error` filled.
   std::optional<std::string> readAll(InputFileError& error);
 

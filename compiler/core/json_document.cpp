@@ -2,8 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
-#include <sstream>
+#include <functional>
 
 namespace mb {
 
@@ -35,84 +34,165 @@ std::string JsonDocument::escape(const std::string& token) {
 
 namespace {
 
-// Walks valid JSON text and records positions. It never needs to report errors itself:
-// nlohmann has already accepted the text.
+using nlohmann::json;
+
+// Walks valid JSON text together with the tree nlohmann built from it and records where each
+// object member's key and value start. It never needs to report errors itself: nlohmann has already
+// accepted the text. A key that occurs twice names one node (the later value wins, as in the
+// tree); the later position is kept.
 class PositionScanner {
  public:
-  PositionScanner(const std::string& text, std::map<std::string, size_t>& values, std::map<std::string, size_t>& keys)
-      : t_(text), values_(values), keys_(keys) {}
+  PositionScanner(const std::string& text, std::vector<JsonDocument::Position>& out) : t_(text), out_(out) {}
 
-  void run() {
+  uint32_t run(const json& root) {
     skipSpace();
-    value("");
+    const auto at = static_cast<uint32_t>(i_);
+    value(&root);
+    return at;
   }
 
  private:
   void skipSpace() {
     while (i_ < t_.size() && (t_[i_] == ' ' || t_[i_] == '\t' || t_[i_] == '\n' || t_[i_] == '\r')) ++i_;
   }
-  std::string stringToken() {  // at the opening quote; returns the decoded-enough key
-    std::string s;
-    ++i_;
+  // At the opening quote: the key as the tree holds it (escapes decoded by nlohmann; they are
+  // rare in our formats).
+  std::string key() {
+    const size_t start = ++i_;
+    bool escaped = false;
     while (i_ < t_.size() && t_[i_] != '"') {
       if (t_[i_] == '\\') {
-        s += t_[i_++];
+        escaped = true;
+        ++i_;
       }
-      if (i_ < t_.size()) s += t_[i_++];
+      ++i_;
     }
+    std::string raw = t_.substr(start, i_ - start);
     ++i_;
-    return s;
+    return escaped ? json::parse("\"" + raw + "\"").get<std::string>() : raw;
   }
-  void value(const std::string& ptr) {
-    values_[ptr] = i_;
+  void skipString() {
+    ++i_;
+    while (i_ < t_.size() && t_[i_] != '"') i_ += t_[i_] == '\\' ? 2 : 1;
+    ++i_;
+  }
+  void separator() {
+    skipSpace();
+    if (i_ < t_.size() && t_[i_] == ',') {
+      ++i_;
+      skipSpace();
+    }
+  }
+  // `node`: the tree's node for this text, or null inside a value a repeated key replaced.
+  void value(const json* node) {
     if (i_ >= t_.size()) return;
-    char c = t_[i_];
+    const char c = t_[i_];
     if (c == '{') {
       ++i_;
       skipSpace();
       while (i_ < t_.size() && t_[i_] != '}') {
-        size_t keyPos = i_;
-        std::string raw = stringToken();
-        // Keys with escapes are rare in our formats; decode them through nlohmann.
-        std::string key = nlohmann::json::parse("\"" + raw + "\"").get<std::string>();
-        std::string child = ptr + "/" + JsonDocument::escape(key);
-        keys_[child] = keyPos;
+        const auto keyPos = static_cast<uint32_t>(i_);
+        const std::string name = key();
+        const json* child = nullptr;
+        if (node && node->is_object())
+          if (auto it = node->find(name); it != node->end()) child = &*it;
         skipSpace();
         ++i_;  // ':'
         skipSpace();
+        record(child, keyPos);
         value(child);
-        skipSpace();
-        if (i_ < t_.size() && t_[i_] == ',') {
-          ++i_;
-          skipSpace();
-        }
+        separator();
       }
       ++i_;
     } else if (c == '[') {
       ++i_;
       skipSpace();
-      size_t index = 0;
-      while (i_ < t_.size() && t_[i_] != ']') {
-        value(ptr + "/" + std::to_string(index++));
-        skipSpace();
-        if (i_ < t_.size() && t_[i_] == ',') {
-          ++i_;
-          skipSpace();
-        }
+      for (size_t index = 0; i_ < t_.size() && t_[i_] != ']'; ++index) {
+        // Elements get no entry: their positions are found from the array's when asked for
+        // (JsonDocument::elementOffset), so a long array of numbers costs nothing here.
+        value(node && node->is_array() && index < node->size() ? &(*node)[index] : nullptr);
+        separator();
       }
       ++i_;
     } else if (c == '"') {
-      stringToken();
+      skipString();
     } else {
       while (i_ < t_.size() && std::string_view(",]} \t\r\n").find(t_[i_]) == std::string_view::npos) ++i_;
     }
   }
+  void record(const json* node, uint32_t keyPos) {
+    if (node) out_.push_back({node, static_cast<uint32_t>(i_), keyPos});
+  }
 
+ public:
+  // From the start of a valid value to just past it.
+  static size_t skipValue(const std::string& t, size_t i) {
+    int depth = 0;
+    do {
+      const char c = t[i];
+      if (c == '"') {
+        ++i;
+        while (i < t.size() && t[i] != '"') i += t[i] == '\\' ? 2 : 1;
+        ++i;
+      } else if (c == '{' || c == '[') {
+        ++depth;
+        ++i;
+      } else if (c == '}' || c == ']') {
+        --depth;
+        ++i;
+      } else if (depth == 0) {
+        while (i < t.size() && std::string_view(",]} \t\r\n").find(t[i]) == std::string_view::npos) ++i;
+      } else {
+        ++i;
+      }
+    } while (depth > 0 && i < t.size());
+    return i;
+  }
+  static size_t skipSpace(const std::string& t, size_t i) {
+    while (i < t.size() && (t[i] == ' ' || t[i] == '\t' || t[i] == '\n' || t[i] == '\r')) ++i;
+    return i;
+  }
+
+ private:
   const std::string& t_;
-  std::map<std::string, size_t>& values_;
-  std::map<std::string, size_t>& keys_;
+  std::vector<JsonDocument::Position>& out_;
   size_t i_ = 0;
 };
+
+// Object members: the nodes that get a Position.
+size_t memberCount(const json& node) {
+  size_t n = node.is_object() ? node.size() : 0;
+  if (node.is_structured())
+    for (const auto& child : node) n += memberCount(child);
+  return n;
+}
+
+// Sorted by node, one entry per node: of a repeated key's, the later in the text (in place:
+// no second buffer the size of the table).
+void sortPositions(std::vector<JsonDocument::Position>& ps) {
+  std::sort(ps.begin(), ps.end(), [](const auto& a, const auto& b) {
+    return a.node != b.node ? std::less<>()(a.node, b.node) : a.value < b.value;
+  });
+  size_t kept = 0;
+  for (size_t i = 0; i < ps.size(); ++i) {
+    if (i + 1 < ps.size() && ps[i + 1].node == ps[i].node) continue;
+    ps[kept++] = ps[i];
+  }
+  ps.resize(kept);
+}
+
+// Visits `from` and `to`, two equal trees, node by node.
+void copyPositions(const json& from, const json& to,
+                   const std::function<const JsonDocument::Position*(const json*)>& find,
+                   std::vector<JsonDocument::Position>& out) {
+  if (!from.is_structured()) return;
+  auto a = from.begin();
+  auto b = to.begin();
+  for (; a != from.end(); ++a, ++b) {
+    if (const auto* p = find(&*a)) out.push_back({&*b, p->value, p->key});
+    copyPositions(*a, *b, find, out);
+  }
+}
 
 // nlohmann reports the last byte of the offending token; people expect its first.
 size_t tokenStart(const std::string& text, size_t last) {
@@ -159,7 +239,7 @@ static void checkNestingDepth(const std::string& text, const std::string& file, 
   }
 }
 
-JsonDocument JsonDocument::parse(const std::string& text, const std::string& file, int maxDepth) {
+JsonDocument JsonDocument::parse(std::string text, const std::string& file, int maxDepth) {
   checkNestingDepth(text, file, maxDepth);
   JsonDocument doc;
   doc.file_ = file;
@@ -189,45 +269,110 @@ JsonDocument JsonDocument::parse(const std::string& text, const std::string& fil
               " is out of the range of a double",
           ""}});
   }
-  std::map<std::string, size_t> values, keys;
-  PositionScanner(text, values, keys).run();
-  std::vector<size_t> lineStarts{0};
-  for (size_t i = 0; i < text.size(); ++i)
-    if (text[i] == '\n') lineStarts.push_back(i + 1);
-  auto at = [&](size_t off) {
-    auto it = std::upper_bound(lineStarts.begin(), lineStarts.end(), off);
-    size_t line = static_cast<size_t>(it - lineStarts.begin());
-    return SourceLocation{file, static_cast<int>(line), static_cast<int>(off - lineStarts[line - 1] + 1)};
-  };
-  for (auto& [p, off] : values) doc.values_[p] = at(off);
-  for (auto& [p, off] : keys) doc.keys_[p] = at(off);
+  doc.positions_.reserve(memberCount(doc.root_));
+  doc.rootOffset_ = PositionScanner(text, doc.positions_).run(doc.root_);
+  sortPositions(doc.positions_);
+  constexpr size_t kBlock = 4096;
+  uint32_t lines = 0, lineStart = 0;
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (i % kBlock == 0) {
+      doc.blockLines_.push_back(lines);
+      doc.blockLineStart_.push_back(lineStart);
+    }
+    if (text[i] == '\n') {
+      ++lines;
+      lineStart = static_cast<uint32_t>(i + 1);
+    }
+  }
+  doc.text_ = std::move(text);
   return doc;
 }
 
-JsonDocument JsonDocument::load(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw DiagnosticError(
-        {{Severity::Error, "E-FILE-NOT-FOUND", {path, 0, 0}, "cannot open file: expected a readable JSON file", ""}});
-  }
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse(ss.str(), path);
+JsonDocument JsonDocument::load(const std::string& path, const InputKind& kind) {
+  return parse(readInputFileOrThrow(path, kind), path);
 }
 
-SourceLocation JsonDocument::valueAt(const std::string& pointer) const {
-  std::string p = pointer;
-  while (true) {
-    auto it = values_.find(p);
-    if (it != values_.end()) return it->second;
-    if (p.empty()) return {file_, 1, 1};
-    p = p.substr(0, p.rfind('/'));
-  }
+JsonDocument::JsonDocument(const JsonDocument& other)
+    : root_(other.root_),
+      file_(other.file_),
+      text_(other.text_),
+      rootOffset_(other.rootOffset_),
+      blockLines_(other.blockLines_),
+      blockLineStart_(other.blockLineStart_) {
+  positions_.reserve(other.positions_.size());
+  copyPositions(
+      other.root_, root_, [&](const json* n) { return other.positionOf(n); }, positions_);
+  sortPositions(positions_);
 }
+
+JsonDocument& JsonDocument::operator=(const JsonDocument& other) {
+  if (this != &other) *this = JsonDocument(other);
+  return *this;
+}
+
+const JsonDocument::Position* JsonDocument::positionOf(const json* node) const {
+  auto it = std::lower_bound(positions_.begin(), positions_.end(), node,
+                             [](const Position& p, const json* n) { return std::less<>()(p.node, n); });
+  return it != positions_.end() && it->node == node ? &*it : nullptr;
+}
+
+uint32_t JsonDocument::elementOffset(uint32_t array, size_t index) const {
+  size_t i = PositionScanner::skipSpace(text_, array + 1);
+  for (size_t k = 0; k < index && i < text_.size(); ++k) {
+    i = PositionScanner::skipSpace(text_, PositionScanner::skipValue(text_, i));
+    i = PositionScanner::skipSpace(text_, i + 1);  // past ','
+  }
+  return static_cast<uint32_t>(i);
+}
+
+JsonDocument::Found JsonDocument::find(const std::string& pointer) const {
+  const json* node = &root_;
+  Found found{rootOffset_, kNoOffset, true};
+  size_t at = 0;
+  while (at < pointer.size()) {  // pointer[at] == '/'
+    const size_t end = std::min(pointer.find('/', at + 1), pointer.size());
+    std::string token = pointer.substr(at + 1, end - at - 1);
+    for (size_t k = token.find('~'); k != std::string::npos; k = token.find('~', k + 1))
+      token.replace(k, 2, token.compare(k, 2, "~1") == 0 ? "/" : "~");
+    const Position* member = nullptr;
+    if (node->is_object()) {
+      auto it = node->find(token);
+      member = it != node->end() ? positionOf(&*it) : nullptr;
+      if (!member) break;
+      found = {member->value, member->key, true};
+      node = &*it;
+    } else if (node->is_array() && !token.empty() && token.find_first_not_of("0123456789") == std::string::npos &&
+               token.size() < 10 && std::stoul(token) < node->size()) {
+      const size_t index = std::stoul(token);
+      found = {elementOffset(found.value, index), kNoOffset, true};
+      node = &(*node)[index];
+    } else {
+      break;
+    }
+    at = end;
+  }
+  found.whole = at >= pointer.size();
+  return found;
+}
+
+SourceLocation JsonDocument::locationOf(uint32_t offset) const {
+  if (text_.empty()) return {file_, 1, 1};
+  offset = std::min<uint32_t>(offset, static_cast<uint32_t>(text_.size() - 1));
+  const size_t block = offset / 4096;
+  uint32_t line = blockLines_[block], lineStart = blockLineStart_[block];
+  for (size_t i = block * 4096; i < offset; ++i)
+    if (text_[i] == '\n') {
+      ++line;
+      lineStart = static_cast<uint32_t>(i + 1);
+    }
+  return {file_, static_cast<int>(line + 1), static_cast<int>(offset - lineStart + 1)};
+}
+
+SourceLocation JsonDocument::valueAt(const std::string& pointer) const { return locationOf(find(pointer).value); }
 
 SourceLocation JsonDocument::keyAt(const std::string& pointer) const {
-  auto it = keys_.find(pointer);
-  return it != keys_.end() ? it->second : valueAt(pointer);
+  const Found found = find(pointer);
+  return locationOf(found.whole && found.key != kNoOffset ? found.key : found.value);
 }
 
 }  // namespace mb

@@ -8,9 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "library/value_json.hpp"
 
@@ -19,12 +17,11 @@ namespace mb {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::optional<std::string> readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+std::optional<std::string> readFile(const fs::path& path, InputFileError* error) {
+  InputFileError why;
+  auto text = readInputFile(path, input_kind::kLibraryFile, why);
+  if (!text && error) *error = why;
+  return text;
 }
 
 namespace {
@@ -66,14 +63,15 @@ std::string LibraryLoader::diskPath(const std::string& relative) const {
 // entry that names it) when there is one.
 std::optional<JsonDocument> LibraryLoader::loadJson(const std::string& relative, const SourceLocation& referencedFrom) {
   std::string path = diskPath(relative);
-  auto text = readFile(path);
+  InputFileError error;
+  auto text = readFile(path, &error);
   if (!text) {
     SourceLocation at = referencedFrom.file.empty() ? SourceLocation{path, 0, 0} : referencedFrom;
-    sink_.error("E-FILE-NOT-FOUND", at, "cannot read library file '" + path + "'");
+    sink_.error(error.code, at, "cannot read library file '" + path + "': " + error.message);
     return std::nullopt;
   }
   try {
-    return JsonDocument::parse(*text, path);
+    return JsonDocument::parse(std::move(*text), path);
   } catch (const DiagnosticError& e) {
     for (const auto& d : e.diagnostics()) sink_.error(d.code, d.where, d.message, d.suggestion);
     return std::nullopt;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/diagnostics.hpp"
+#include "core/input_file.hpp"
 #include "core/json_fields.hpp"
 #include "library/shader_library.hpp"
 
@@ -24,8 +25,9 @@ struct LibraryData {
   std::map<std::string, std::string> sources;  // relative file -> text
 };
 
-// The whole file, or nullopt when it cannot be read (library_loader.cpp).
-std::optional<std::string> readFile(const std::filesystem::path& path);
+// The whole file (core/input_file.hpp, at most a library file's limit), or nullopt when it
+// cannot be read, with the reason in `error` when given.
+std::optional<std::string> readFile(const std::filesystem::path& path, InputFileError* error = nullptr);
 
 // Loads the library's JSON files and checks them. Every problem goes to the sink; the
 // caller throws once at the end, so one run reports all mistakes of a new brick.

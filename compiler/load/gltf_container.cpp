@@ -5,13 +5,12 @@
 // before checking it against the bytes actually present.
 #include "load/gltf_container.hpp"
 
+#include "core/input_file.hpp"
 #include "load/project_files.hpp"
 
 #include <algorithm>
 #include <climits>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 
 namespace mb {
 
@@ -22,9 +21,9 @@ constexpr uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
 constexpr uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
 constexpr size_t kHeaderSize = 12;
 constexpr size_t kChunkHeaderSize = 8;
-// JSON text is held in memory with a position per value; a .gltf with buffers embedded as
-// data URIs is large but not this large.
-constexpr uint64_t kMaxGltfJsonBytes = 1ull << 30;
+// JSON text is held in memory with its tree and a position per value (docs/formats.md "Input
+// memory"); a .gltf with buffers embedded as data URIs is large but not this large.
+constexpr uint64_t kMaxGltfJsonBytes = input_kind::kGltf.maxBytes;
 
 // The bytes of a .glb, in memory or read on demand from the file: the BIN chunk can be
 // hundreds of megabytes of images that material import never needs.
@@ -54,23 +53,26 @@ class MemorySource : public ByteSource {
   const std::string& bytes_;
 };
 
+// Reads through the one input reader (core/input_file.hpp), at offsets: the BIN chunk is
+// never read.
 class FileSource : public ByteSource {
  public:
-  FileSource(std::ifstream& in, uint64_t size) : in_(in), size_(size) {}
-  uint64_t size() const override { return size_; }
+  FileSource(InputFile& in, const std::string& path) : in_(in), path_(path) {}
+  uint64_t size() const override { return in_.size(); }
   std::string read(uint64_t offset, uint64_t count) override {
     std::string out(static_cast<size_t>(count), '\0');
-    in_.clear();
-    in_.seekg(static_cast<std::streamoff>(offset));
-    in_.read(out.data(), static_cast<std::streamsize>(count));
-    out.resize(static_cast<size_t>(in_.gcount()));  // a file that shrank underneath us
-    out.resize(static_cast<size_t>(count), '\0');
+    InputFileError error;
+    const long got = in_.readAt(offset, out.data(), out.size(), error);
+    if (got < 0) throw DiagnosticError({{Severity::Error, error.code, {path_, 0, 0}, error.message}});
+    // A file that shrank underneath us reads as zeros past its end: the structure checks
+    // then fail on them.
+    std::fill(out.begin() + got, out.end(), '\0');
     return out;
   }
 
  private:
-  std::ifstream& in_;
-  uint64_t size_;
+  InputFile& in_;
+  const std::string& path_;
 };
 
 void appendU32(std::string& out, uint32_t v) {
@@ -174,20 +176,14 @@ JsonDocument parseGltfJson(const std::string& bytes, const std::string& file) {
 }
 
 JsonDocument loadGltfJson(const std::string& path, GltfContainerInfo& info) {
-  std::error_code ec;
-  // Not a regular file (a directory, /dev/zero) must not hang or crash the import.
-  bool regular = std::filesystem::is_regular_file(path, ec);
-  uint64_t size = regular ? std::filesystem::file_size(path, ec) : 0;
-  std::ifstream in(path, std::ios::binary);
-  if (!regular || ec || !in) {
-    throw DiagnosticError({{Severity::Error,
-                            "E-FILE-NOT-FOUND",
-                            {path, 0, 0},
-                            "cannot open file: expected a readable .gltf or .glb file",
-                            ""}});
-  }
-  FileSource source(in, size);
+  // Opened with the .glb container's limit (only its JSON chunk is ever read); JSON text is
+  // held to kGltf's.
+  InputFileError error;
+  std::optional<InputFile> in = InputFile::open(path, input_kind::kGlb, error);
+  if (!in) throw DiagnosticError({{Severity::Error, error.code, {path, 0, 0}, error.message}});
+  FileSource source(*in, path);
   if (readsAsGlb(source, path)) return JsonDocument::parse(jsonChunkOf(source, path, info), path);
+  const uint64_t size = in->size();
   if (size > kMaxGltfJsonBytes) {
     throw DiagnosticError({{Severity::Error,
                             "E-FILE-TOO-LARGE",

@@ -119,7 +119,7 @@ MaterialDesc resolveMaterial(const MaterialSource& source, const ShaderLibrary& 
 
 // JSON form: reads and resolves. Throws DiagnosticError (file:line:column for every error).
 MaterialDesc loadMaterialJson(const std::string& path, const ShaderLibrary& lib);
-MaterialDesc parseMaterialJson(const std::string& text, const std::string& file, const ShaderLibrary& lib);
+MaterialDesc parseMaterialJson(std::string text, const std::string& file, const ShaderLibrary& lib);
 // Macro form (docs/macro-form.md).
 MaterialDesc loadMaterialMacro(const std::string& path, const ShaderLibrary& lib);
 MaterialDesc parseMaterialMacro(const std::string& text, const std::string& file, const ShaderLibrary& lib);

@@ -112,7 +112,7 @@ class JsonMaterialReader {
     ProjectFiles project(doc_.file());
     auto path = project.resolve(*written, doc_.file(), f_.valueAt("/surface/file"), f_.sink());
     if (!path) return;
-    auto text = readTextFile(*path, f_.valueAt("/surface/file"), "GLSL surface file", f_.sink());
+    auto text = readTextFile(*path, f_.valueAt("/surface/file"), input_kind::kSurface, f_.sink());
     if (text) src_.surface = {*text, SourceLocation(*path, 1, 1)};
   }
 
@@ -188,14 +188,14 @@ class JsonMaterialReader {
 
 }  // namespace
 
-MaterialDesc parseMaterialJson(const std::string& text, const std::string& file, const ShaderLibrary& lib) {
-  JsonDocument doc = JsonDocument::parse(text, file, kMaxMaterialJsonDepth);
+MaterialDesc parseMaterialJson(std::string text, const std::string& file, const ShaderLibrary& lib) {
+  JsonDocument doc = JsonDocument::parse(std::move(text), file, kMaxMaterialJsonDepth);
   DiagnosticSink sink;
   return finishMaterial(JsonMaterialReader(doc, lib, sink).run(), lib, sink);
 }
 
 MaterialDesc loadMaterialJson(const std::string& path, const ShaderLibrary& lib) {
-  return parseMaterialJson(readMaterialFile(path, "material JSON file"), path, lib);
+  return parseMaterialJson(readMaterialFile(path, input_kind::kMaterial), path, lib);
 }
 
 }  // namespace mb

@@ -374,7 +374,7 @@ class MacroReader {
       src_.bricksIncomplete = true;
       return;
     }
-    auto text = readTextFile(*resolved, where, "macro-form include file", sink_);
+    auto text = readTextFile(*resolved, where, input_kind::kMacroInclude, sink_);
     if (!text) {
       src_.bricksIncomplete = true;
       return;
@@ -402,7 +402,7 @@ MaterialDesc parseMaterialMacro(const std::string& text, const std::string& file
 }
 
 MaterialDesc loadMaterialMacro(const std::string& path, const ShaderLibrary& lib) {
-  return parseMaterialMacro(readMaterialFile(path, "macro-form material file"), path, lib);
+  return parseMaterialMacro(readMaterialFile(path, input_kind::kMacroMaterial), path, lib);
 }
 
 }  // namespace mb

@@ -2,40 +2,17 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
-#include <sstream>
 
 namespace mb {
 
 namespace fs = std::filesystem;
 
-std::optional<std::string> readTextFile(const std::string& path, const SourceLocation& at, const std::string& what,
+std::optional<std::string> readTextFile(const std::string& path, const SourceLocation& at, const InputKind& kind,
                                         DiagnosticSink& sink) {
-  std::error_code ec;
-  auto status = fs::status(path, ec);
-  if (ec || !fs::exists(status)) {
-    sink.error("E-FILE-NOT-FOUND", at, "cannot open file '" + path + "': expected a readable " + what);
-    return std::nullopt;
-  }
-  if (!fs::is_regular_file(status)) {
-    sink.error("E-FILE-NOT-FOUND", at, "'" + path + "' is not a regular file: expected a readable " + what);
-    return std::nullopt;
-  }
-  auto size = fs::file_size(path, ec);
-  if (!ec && size > kMaxMaterialFileBytes) {
-    sink.error("E-FILE-TOO-LARGE", at,
-               "'" + path + "' has " + std::to_string(size) + " bytes: a " + what + " is at most " +
-                   std::to_string(kMaxMaterialFileBytes) + " bytes");
-    return std::nullopt;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    sink.error("E-FILE-NOT-FOUND", at, "cannot open file '" + path + "': expected a readable " + what);
-    return std::nullopt;
-  }
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  InputFileError error;
+  auto text = readInputFile(path, kind, error);
+  if (!text) sink.error(error.code, at, error.message);
+  return text;
 }
 
 std::string lowerExtension(const std::string& path) {
@@ -44,11 +21,8 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
-std::string readMaterialFile(const std::string& path, const std::string& what) {
-  DiagnosticSink sink;
-  auto text = readTextFile(path, SourceLocation(path, 0, 0), what, sink);
-  sink.throwIfErrors();
-  return *text;
+std::string readMaterialFile(const std::string& path, const InputKind& kind) {
+  return readInputFileOrThrow(path, kind);
 }
 
 namespace {

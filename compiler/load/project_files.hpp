@@ -2,22 +2,23 @@
 // `file`), and the rule that keeps them inside the project: the directory that holds the
 // top-level material file (docs/macro-form.md "Includes and the project directory").
 #pragma once
-#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
 
 #include "core/diagnostics.hpp"
+#include "core/input_file.hpp"
 
 namespace mb {
 
-// Reads a whole text file. Reports E-FILE-NOT-FOUND (missing, unreadable, or not a regular
-// file: a directory or /dev/zero must not hang the loader) or E-FILE-TOO-LARGE at `at`.
-std::optional<std::string> readTextFile(const std::string& path, const SourceLocation& at, const std::string& what,
+// Reads a whole text file (core/input_file.hpp). Reports E-FILE-NOT-FOUND (missing or
+// unreadable), E-FILE-NOT-REGULAR (a directory, FIFO or device must not hang the loader) or
+// E-FILE-TOO-LARGE (over the kind's limit) at `at`.
+std::optional<std::string> readTextFile(const std::string& path, const SourceLocation& at, const InputKind& kind,
                                         DiagnosticSink& sink);
 
-// A top-level description file's text; throws DiagnosticError when readTextFile reports.
-std::string readMaterialFile(const std::string& path, const std::string& what);
+// A top-level description file's text; throws DiagnosticError at the file when it cannot be read.
+std::string readMaterialFile(const std::string& path, const InputKind& kind);
 
 // The extension of `path` in lower case (".json", ".glb"): description forms are picked by it.
 std::string lowerExtension(const std::string& path);
@@ -38,8 +39,5 @@ class ProjectFiles {
  private:
   std::filesystem::path dir_;  // absolute, normalized
 };
-
-// Largest description or surface file read (bigger is certainly not a material).
-constexpr std::uintmax_t kMaxMaterialFileBytes = 16u << 20;
 
 }  // namespace mb

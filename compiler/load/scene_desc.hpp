@@ -53,6 +53,6 @@ struct SceneDesc {
 // .gltf/.glb (a glTF scene with default axes). Material paths are relative to the scene file.
 // Throws DiagnosticError with file:line:column for every problem found.
 SceneDesc loadScene(const std::string& path, const ShaderLibrary& lib);
-SceneDesc parseSceneJson(const std::string& text, const std::string& file, const ShaderLibrary& lib);
+SceneDesc parseSceneJson(std::string text, const std::string& file, const ShaderLibrary& lib);
 
 }  // namespace mb

@@ -256,8 +256,8 @@ std::vector<std::string> SceneDesc::lightTypes() const {
   return canonicalLights(types);
 }
 
-SceneDesc parseSceneJson(const std::string& text, const std::string& file, const ShaderLibrary& lib) {
-  JsonDocument doc = JsonDocument::parse(text, file, kMaxSceneJsonDepth);
+SceneDesc parseSceneJson(std::string text, const std::string& file, const ShaderLibrary& lib) {
+  JsonDocument doc = JsonDocument::parse(std::move(text), file, kMaxSceneJsonDepth);
   DiagnosticSink sink;
   SceneJsonReader reader(doc, lib, sink);
   SceneDesc scene = reader.run();
@@ -271,7 +271,7 @@ SceneDesc loadScene(const std::string& path, const ShaderLibrary& lib) {
     throw DiagnosticError({{Severity::Error, "E-UNSUPPORTED-FORMAT", SourceLocation(path, 0, 0),
                             "unsupported scene file extension '" + lowerExtension(path) +
                                 "': expected .json (scene JSON), .gltf or .glb (glTF 2.0)"}});
-  return parseSceneJson(readMaterialFile(path, "scene file"), path, lib);
+  return parseSceneJson(readMaterialFile(path, input_kind::kScene), path, lib);
 }
 
 }  // namespace mb

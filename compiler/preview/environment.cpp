@@ -10,13 +10,13 @@
 #include <xxhash.h>
 
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <mutex>
 
 #include "compile/glsl_compiler.hpp"
 #include "compile/shader_cache.hpp"
 #include "core/diagnostics.hpp"
+#include "core/input_file.hpp"
 #include "harness/vulkan_harness.hpp"
 #include "library/shader_library.hpp"
 #include "preview/environment_cache.hpp"
@@ -52,6 +52,14 @@ std::string encodeLevels(const std::vector<CubeLevel>& levels) {
   put(entry, &size, sizeof size);
   put(entry, &hash, sizeof hash);
   return entry + payload;
+}
+
+// The size of a whole entry for a chain of levels from `baseSize` down to 1.
+std::uintmax_t entryBytes(uint32_t baseSize) {
+  std::uintmax_t bytes = std::strlen(kEntryMagic) + 16 + sizeof(uint32_t);
+  for (uint32_t size = baseSize; size > 0; size /= 2)
+    bytes += sizeof(uint32_t) + std::uintmax_t{6} * size * size * 4 * sizeof(float);
+  return bytes;
 }
 
 // False for anything but a whole entry whose levels are the expected chain.
@@ -100,9 +108,12 @@ std::vector<CubeLevel> prefilteredLevels(const std::string& name, harness::Vulka
   std::vector<CubeLevel> levels;
   if (fromCache) *fromCache = false;
   if (!path.empty()) {
-    std::ifstream in(path, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in && decodeLevels(bytes, baseSize, levels)) {
+    // Read through the one input reader, bounded by the entry's exact size: a damaged or
+    // planted entry (a FIFO, a link to /dev/zero) is a miss, never a hang.
+    InputFileError error;
+    const InputKind kind{"environment cache entry", entryBytes(baseSize)};
+    const std::optional<std::string> bytes = readInputFile(path, kind, error);
+    if (bytes && decodeLevels(*bytes, baseSize, levels)) {
       if (fromCache) *fromCache = true;
       return levels;
     }

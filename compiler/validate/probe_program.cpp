@@ -460,13 +460,17 @@ std::vector<uint32_t> directionInputColumns(const ProbeLayout& layout) {
   return cols;
 }
 
-ErrorStats compare(const ProbeRun& run, const ProbeProgram& program) {
-  ErrorStats s;
+void addErrors(ErrorStats& s, const ProbeRun& run, const ProbeProgram& program, uint64_t firstRecord) {
   uint32_t stride = program.shader.layout.outStride;
   for (uint64_t i = 0; i < run.count; ++i)
     for (uint32_t k = 0; k < stride; ++k)
-      s.add(static_cast<int64_t>(i), run.gpu[i * stride + k], run.reference[i * stride + k], program.tolerance,
-            run.conditioning.empty() ? 0.0 : run.conditioning[i * stride + k]);
+      s.add(static_cast<int64_t>(firstRecord + i), run.gpu[i * stride + k], run.reference[i * stride + k],
+            program.tolerance, run.conditioning.empty() ? 0.0 : run.conditioning[i * stride + k]);
+}
+
+ErrorStats compare(const ProbeRun& run, const ProbeProgram& program) {
+  ErrorStats s;
+  addErrors(s, run, program, 0);
   return s;
 }
 

@@ -127,6 +127,9 @@ ProbeRun runProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, std:
 ProbeRun runProbeOnGpu(harness::VulkanHarness& gpu, const ProbeProgram& program, std::vector<float> inputs);
 void computeReference(ProbeRun& run, const ProbeProgram& program, const ReferenceOptions& options);
 ErrorStats compare(const ProbeRun& run, const ProbeProgram& program);
+// Adds a run's errors to `s`, its records numbered from `firstRecord`: one run of many records
+// judged in parts (eval streams its rows in chunks) gives the same statistics as one compare.
+void addErrors(ErrorStats& s, const ProbeRun& run, const ProbeProgram& program, uint64_t firstRecord);
 // The double reference of a permutation's probe: the model's reference composition with the
 // given role -> brick binding, reading the scene (frame, lights, environment; see
 // probe_scene_reference.hpp) and the non-constant parameters from a record laid out as

@@ -3,6 +3,7 @@
 // Used by tests/test_bad_inputs.cpp; the table of docs/bad-inputs.md is built from these runs
 // (bad_input_table.hpp).
 #pragma once
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,6 +14,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,9 @@ struct BadInputCase {
   std::string workdir;
   std::string output;
   bool libraryCopy = false;  // WORK/lib: a copy of the shipped shader library
+  // WORK-relative paths where a FIFO with no writer is made before the run (git holds no
+  // FIFOs): an input that is one must be refused at once, never opened for a blocking read.
+  std::vector<std::string> fifos;
 };
 
 // One printed diagnostic line, "file:line:column: error[CODE]: message" (line and column 0
@@ -79,6 +84,7 @@ inline std::vector<BadInputCase> loadBadInputCases() {
     c.workdir = e.value("workdir", "");
     c.output = e.value("output", "");
     c.libraryCopy = e.value("library_copy", false);
+    c.fifos = e.value("fifos", std::vector<std::string>{});
     cases.push_back(c);
   }
   return cases;
@@ -126,6 +132,8 @@ inline std::map<std::string, std::string> treeBytes(const std::filesystem::path&
       files[rel] = "-> " + std::filesystem::read_symlink(e.path()).string();
     else if (e.is_directory())
       files[rel + "/"] = "";
+    else if (!e.is_regular_file())  // a FIFO: reading it would wait for a writer
+      files[rel] = "<not a regular file>";
     else
       files[rel] = readFile(e.path());
   }
@@ -159,6 +167,10 @@ inline CaseRun runCase(const BadInputCase& c, bool json = false) {
   if (!c.workdir.empty()) {
     fs::copy(corpusDir() / c.workdir, work, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
     if (c.libraryCopy) fs::copy(sourceDir() / "shaderlib", work / "lib", fs::copy_options::recursive);
+    for (const auto& fifo : c.fifos) {
+      fs::create_directories((work / fifo).parent_path());
+      if (::mkfifo((work / fifo).c_str(), 0600) != 0) throw std::runtime_error("mkfifo " + fifo + " failed");
+    }
     workBefore = treeBytes(work);
   }
   const char* cli = std::getenv("MATBRICKS_CLI");
