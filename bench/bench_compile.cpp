@@ -383,8 +383,9 @@ json benchBreakdown(const ShaderLibrary& lib, const std::vector<Permutation>& pe
     const ShaderCache cache(cacheDir);
     for (const auto& p : perms) {
       EmittedShader s = clock.time("emit GLSL", [&] { return emitPermutation(lib, p, false, EmitMode::Engine); });
-      std::string key = clock.time("cache key (XXH3 over GLSL, brick hashes, versions)",
-                                   [&] { return buildCacheKey(lib, s, true, {"spirv"}); });
+      const CacheIdentity key = clock.time("cache key (XXH3 over GLSL, brick hashes, versions)", [&] {
+        return ShaderCache::identity(buildCacheKey(lib, s, true, {"spirv"}), {s.glsl, "", "", ""});
+      });
       CompileOptions lean;
       lean.optimize = p.precision == "fp32";
       CompileResult c = compileComputeGlsl(s.glsl, s.fileName, lean);

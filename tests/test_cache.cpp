@@ -2,6 +2,8 @@
 // concurrent builds sharing one directory. Every test uses its own scratch directory.
 #include <catch2/catch.hpp>
 
+#include <sys/stat.h>
+
 #include <fstream>
 #include <thread>
 
@@ -34,18 +36,32 @@ std::vector<Permutation> cachePermutations() {
   return test::permutationsOf(mats, {"dir", "point"}, "sh");
 }
 
-// Every entry under `dir` loads as a hit, and no temporary file is left behind.
+// The identity an entry file carries.
+CacheIdentity identityIn(const fs::path& entry) {
+  CacheIdentity found;
+  CompiledArtifacts a;
+  decodeCacheEntry(test::readFile(entry), CacheIdentity{}, a, &found);
+  return found;
+}
+
+// Every entry under `dir` is its own key's and loads as a hit, and no temporary file is left behind.
 size_t requireAllEntriesValid(const ShaderCache& cache) {
   size_t entries = 0;
   for (const auto& e : fs::recursive_directory_iterator(cache.dir())) {
     if (!e.is_regular_file()) continue;
     INFO(e.path());
     REQUIRE(e.path().extension() == ".mbc");
+    const CacheIdentity id = identityIn(e.path());
+    CHECK(id.key == e.path().stem().string());
     CompiledArtifacts a;
-    CHECK(cache.load(e.path().stem().string(), a) == ShaderCache::Lookup::Hit);
+    CHECK(cache.load(id, a) == ShaderCache::Lookup::Hit);
     ++entries;
   }
   return entries;
+}
+
+CacheIdentity sampleIdentity(const std::string& name) {
+  return ShaderCache::identity(ShaderCache::key({name}), {"void main() {} // " + name});
 }
 
 }  // namespace
@@ -63,32 +79,35 @@ TEST_CASE("cache keys are 128-bit hex, length-prefixed and order-sensitive", "[c
 TEST_CASE("a stored entry loads back whole; a missing one misses; a disabled cache does nothing", "[cache]") {
   test::ScratchDir dir("cache_roundtrip");
   ShaderCache cache(test::rootOf(dir));
-  const std::string key = ShaderCache::key({"roundtrip"});
+  const CacheIdentity id = sampleIdentity("roundtrip");
+  const std::string& key = id.key;
   CompiledArtifacts out;
-  CHECK(cache.load(key, out) == ShaderCache::Lookup::Miss);
-  REQUIRE(cache.store(key, sampleArtifacts()));
+  CHECK(cache.load(id, out) == ShaderCache::Lookup::Miss);
+  REQUIRE(cache.store(id, sampleArtifacts()));
   CHECK(cache.entryPath(key) == test::rootOf(dir) / key.substr(0, 2) / (key + ".mbc"));
-  REQUIRE(cache.load(key, out) == ShaderCache::Lookup::Hit);
+  REQUIRE(cache.load(id, out) == ShaderCache::Lookup::Hit);
   requireSame(out, sampleArtifacts());
+  CHECK(identityIn(cache.entryPath(key)) == id);
 
   ShaderCache off{fs::path()};
   CHECK(!off.enabled());
-  CHECK(!off.store(key, sampleArtifacts()));
-  CHECK(off.load(key, out) == ShaderCache::Lookup::Miss);
+  CHECK(!off.store(id, sampleArtifacts()));
+  CHECK(off.load(id, out) == ShaderCache::Lookup::Miss);
 }
 
 TEST_CASE("a corrupt entry is detected, deleted and reported", "[cache]") {
   test::ScratchDir dir("cache_corrupt");
   ShaderCache cache(test::rootOf(dir));
-  const std::string key = ShaderCache::key({"corrupt"});
-  REQUIRE(cache.store(key, sampleArtifacts()));
+  const CacheIdentity id = sampleIdentity("corrupt");
+  const std::string& key = id.key;
+  REQUIRE(cache.store(id, sampleArtifacts()));
   const std::string good = test::readFile(cache.entryPath(key));
   REQUIRE(good.size() > 40);
 
   auto corruptWith = [&](const std::string& bytes) {
     { std::ofstream(cache.entryPath(key), std::ios::binary | std::ios::trunc) << bytes; }
     CompiledArtifacts out;
-    CHECK(cache.load(key, out) == ShaderCache::Lookup::Corrupt);
+    CHECK(cache.load(id, out) == ShaderCache::Lookup::Corrupt);
     CHECK(!fs::exists(cache.entryPath(key)));
   };
   SECTION("truncated") { corruptWith(good.substr(0, good.size() - 3)); }
@@ -110,6 +129,55 @@ TEST_CASE("a corrupt entry is detected, deleted and reported", "[cache]") {
     corruptWith(bad);
   }
   SECTION("trailing bytes") { corruptWith(good + "x"); }
+}
+
+TEST_CASE("an intact entry of another unit, or no regular file, at a key's path is evicted, never believed",
+          "[cache]") {
+  test::ScratchDir dir("cache_other_unit");
+  ShaderCache cache(test::rootOf(dir));
+  const CacheIdentity a = sampleIdentity("a"), b = sampleIdentity("b");
+  CompiledArtifacts other = sampleArtifacts();
+  other.spirv.back() = 99;
+  REQUIRE(cache.store(a, sampleArtifacts()));
+  REQUIRE(cache.store(b, other));
+  CompiledArtifacts out;
+  std::string why;
+
+  SECTION("two entry files swapped") {
+    const std::string bytesA = test::readFile(cache.entryPath(a.key)), bytesB = test::readFile(cache.entryPath(b.key));
+    { std::ofstream(cache.entryPath(a.key), std::ios::binary | std::ios::trunc) << bytesB; }
+    { std::ofstream(cache.entryPath(b.key), std::ios::binary | std::ios::trunc) << bytesA; }
+    CHECK(cache.load(a, out, &why) == ShaderCache::Lookup::OtherUnit);
+    CHECK(why.find(b.key) != std::string::npos);
+    CHECK(why.find(cache.entryPath(a.key).string()) != std::string::npos);
+    CHECK(!fs::exists(cache.entryPath(a.key)));
+    CHECK(cache.load(b, out) == ShaderCache::Lookup::OtherUnit);
+    CHECK(out.spirv.empty());  // untouched
+  }
+  SECTION("the right key, another unit's source") {
+    const CacheIdentity sameKeyOtherSource{a.key, b.source};
+    CHECK(cache.load(sameKeyOtherSource, out) == ShaderCache::Lookup::OtherUnit);
+  }
+  SECTION("a symlink to another entry") {
+    fs::remove(cache.entryPath(a.key));
+    fs::create_symlink(cache.entryPath(b.key), cache.entryPath(a.key));
+    CHECK(cache.load(a, out) == ShaderCache::Lookup::OtherUnit);
+    CHECK(!fs::exists(fs::symlink_status(cache.entryPath(a.key))));
+    CHECK(cache.load(b, out) == ShaderCache::Lookup::Hit);  // what it pointed to is untouched
+  }
+  SECTION("a symlink to /dev/zero, a FIFO, a directory: unreadable at once, evicted") {
+    fs::remove(cache.entryPath(a.key));
+    fs::create_symlink("/dev/zero", cache.entryPath(a.key));
+    CHECK(cache.load(a, out, &why) == ShaderCache::Lookup::Unreadable);
+    CHECK(!why.empty());
+    CHECK(!fs::exists(fs::symlink_status(cache.entryPath(a.key))));
+    REQUIRE(::mkfifo(cache.entryPath(a.key).c_str(), 0600) == 0);
+    CHECK(cache.load(a, out) == ShaderCache::Lookup::Unreadable);
+    CHECK(!fs::exists(fs::symlink_status(cache.entryPath(a.key))));
+    fs::create_directories(cache.entryPath(a.key));
+    CHECK(cache.load(a, out) == ShaderCache::Lookup::Unreadable);
+    REQUIRE(cache.store(b, other));  // the cache goes on
+  }
 }
 
 TEST_CASE("builds through the cache: a warm build hits, a corrupt entry is rebuilt to identical output",
@@ -146,6 +214,23 @@ TEST_CASE("builds through the cache: a warm build hits, a corrupt entry is rebui
   CHECK(repaired.compiled == 1);
   CHECK(repaired.cacheHits == perms.size() - 1);
   test::requireIdentical(first, third);
+  CHECK(requireAllEntriesValid(cache) == perms.size());
+  CHECK(repaired.cacheWarnings.empty());  // a damaged entry is counted, not warned about
+
+  // Two entry files swapped: both are another unit's, evicted and rebuilt, with one warning.
+  std::vector<fs::path> entries;
+  for (const auto& e : fs::recursive_directory_iterator(test::rootOf(dir)))
+    if (e.is_regular_file()) entries.push_back(e.path());
+  REQUIRE(entries.size() >= 2);
+  const std::string a = test::readFile(entries[0]), b = test::readFile(entries[1]);
+  { std::ofstream(entries[0], std::ios::binary | std::ios::trunc) << b; }
+  { std::ofstream(entries[1], std::ios::binary | std::ios::trunc) << a; }
+  BuildStats swapped;
+  test::requireIdentical(first, buildPermutations(lib, perms, o, &swapped));
+  CHECK(swapped.cacheMismatch == 2);
+  CHECK(swapped.compiled == 2);
+  REQUIRE(swapped.cacheWarnings.size() == 1);
+  CHECK(swapped.cacheWarnings[0].code == "W-CACHE-MISMATCH");
   CHECK(requireAllEntriesValid(cache) == perms.size());
 }
 

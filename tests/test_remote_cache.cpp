@@ -26,17 +26,32 @@ struct RemoteBuild {
 };
 
 // One build with a local cache in `localDir` (empty: none) behind the remote cache at `url`.
-RemoteBuild buildWithRemote(const std::string& url, const fs::path& localDir, double timeout = 10) {
-  RemoteCache remote({url, "subdirs", timeout});
+RemoteBuild buildWithRemote(const std::string& url, const fs::path& localDir, double timeout = 10, double verify = 0,
+                            const std::vector<Permutation>& perms = remotePermutations(), unsigned jobs = 2) {
+  RemoteCache remote({url, "subdirs", timeout, verify});
   BuildOptions o;
   o.targets = {"spirv", "glsl450"};
   o.cacheDir = localDir;
-  o.jobs = 2;
+  o.jobs = jobs;
   o.remote = &remote;
   RemoteBuild r;
-  r.built = buildPermutations(test::shippedLibrary(), remotePermutations(), o, &r.stats);
+  r.built = buildPermutations(test::shippedLibrary(), perms, o, &r.stats);
   r.requests = remote.requests();
   return r;
+}
+
+// A blob's identity and code (the blob is "MBREMOT1", the key, a cache entry).
+CacheIdentity blobIdentity(const std::string& blob, CompiledArtifacts* artifacts = nullptr) {
+  CacheIdentity found;
+  CompiledArtifacts a;
+  REQUIRE(decodeCacheEntry(blob.substr(8 + 32), CacheIdentity{}, a, &found) == EntryCheck::OtherUnit);
+  if (artifacts) REQUIRE(decodeCacheEntry(blob.substr(8 + 32), found, *artifacts) == EntryCheck::Ok);
+  return found;
+}
+
+size_t countOf(const std::vector<Diagnostic>& warnings, const std::string& code) {
+  return static_cast<size_t>(
+      std::count_if(warnings.begin(), warnings.end(), [&](const Diagnostic& d) { return d.code == code; }));
 }
 
 std::vector<fs::path> blobsUnder(const fs::path& root) {
@@ -46,6 +61,19 @@ std::vector<fs::path> blobsUnder(const fs::path& root) {
   std::sort(out.begin(), out.end());
   return out;
 }
+
+// A server filled by a build of the default permutations: its 3 blobs, and that build.
+struct FilledServer {
+  explicit FilledServer(const std::string& name) : dir(name), server(test::rootOf(dir) / "server") {
+    clean = buildWithRemote(server.url("cache"), {});
+    blobs = blobsUnder(server.root() / "cache");
+    REQUIRE(blobs.size() == 3);
+  }
+  test::ScratchDir dir;
+  test::DavServer server;
+  RemoteBuild clean;
+  std::vector<fs::path> blobs;
+};
 
 }  // namespace
 
@@ -248,4 +276,169 @@ TEST_CASE("shards of a build farm share one remote cache: a fresh machine then c
   for (const auto& e : fs::recursive_directory_iterator(root + "/p"))
     if (e.is_regular_file())
       CHECK(test::readFile(e.path()) == test::readFile(root + "/m/" + fs::relative(e.path(), root + "/p").string()));
+}
+
+TEST_CASE("another unit's blob with its key field rewritten is a miss: rebuilt, never stored locally, one warning",
+          "[remote-cache][cache]") {
+  FilledServer filled("remote_other_unit");
+  const auto& [dir, server, clean, blobs] = filled;
+  // What a confused or hostile server answers: blob 1's real bytes, its key field made blob 0's.
+  const std::string victimKey = blobs[0].filename().string();
+  std::string doctored = test::readFile(blobs[1]);
+  doctored.replace(8, 32, victimKey);
+  std::ofstream(blobs[0], std::ios::binary | std::ios::trunc) << doctored;
+
+  const fs::path local = test::rootOf(dir) / "local";
+  RemoteBuild fooled = buildWithRemote(server.url("cache"), local);
+  CHECK(fooled.stats.remoteMismatch == 1);
+  CHECK(fooled.stats.remoteCorrupt == 0);
+  CHECK(fooled.stats.remoteHits == 2);
+  CHECK(fooled.stats.compiled == 1);
+  CHECK(fooled.stats.remoteUploads == 1);  // the rebuilt blob replaces the doctored one
+  test::requireIdentical(clean.built, fooled.built);
+  REQUIRE(countOf(fooled.stats.cacheWarnings, "W-CACHE-REMOTE-MISMATCH") == 1);
+  for (const auto& w : fooled.stats.cacheWarnings)
+    if (w.code == "W-CACHE-REMOTE-MISMATCH") CHECK(w.message.find(victimKey) != std::string::npos);
+
+  // The local cache holds the rebuilt entry, not the doctored one: a build with no remote is right.
+  BuildOptions o;
+  o.targets = {"spirv", "glsl450"};
+  o.cacheDir = local;
+  BuildStats alone;
+  test::requireIdentical(clean.built, buildPermutations(test::shippedLibrary(), remotePermutations(), o, &alone));
+  CHECK(alone.cacheHits == 3);
+  CHECK(alone.cacheMismatch == 0);
+}
+
+TEST_CASE("--cache-verify: a valid-looking wrong entry under the right key is caught and evicted",
+          "[remote-cache][cache]") {
+  FilledServer filled("remote_verify");
+  const auto& [dir, server, clean, blobs] = filled;
+  // A forger who rewrites every identity field and the hashes: blob 1's code under blob 0's identity.
+  CompiledArtifacts otherCode;
+  blobIdentity(test::readFile(blobs[1]), &otherCode);
+  const CacheIdentity victim = blobIdentity(test::readFile(blobs[0]));
+  std::ofstream(blobs[0], std::ios::binary | std::ios::trunc) << RemoteCache::encodeBlob(victim, otherCode);
+
+  // Without verification the key is taken as proof (docs/targets.md): the forgery is believed.
+  RemoteBuild believed = buildWithRemote(server.url("cache"), {});
+  CHECK(believed.stats.remoteHits == 3);
+  size_t differing = 0;
+  for (size_t i = 0; i < clean.built.size(); ++i) differing += clean.built[i].spirvHash != believed.built[i].spirvHash;
+  CHECK(differing == 1);
+
+  // Verifying every hit: the build fails with E-CACHE-VERIFY, and no remote entry is left locally.
+  const fs::path local = test::rootOf(dir) / "local";
+  try {
+    buildWithRemote(server.url("cache"), local, 10, 1.0);
+    FAIL("the forged entry was believed");
+  } catch (const DiagnosticError& e) {
+    REQUIRE(e.diagnostics().size() == 1);
+    CHECK(e.diagnostics()[0].code == "E-CACHE-VERIFY");
+  }
+  size_t left = 0;
+  if (fs::exists(local))
+    for (const auto& e : fs::recursive_directory_iterator(local)) left += e.is_regular_file();
+  CHECK(left == 0);
+
+  // Verified and equal: counted, and the build is the clean one.
+  fs::remove(blobs[0]);
+  RemoteBuild verified = buildWithRemote(server.url("cache"), {}, 10, 1.0);
+  CHECK(verified.stats.remoteVerified == 2);
+  CHECK(verified.stats.compiled == 1);
+  test::requireIdentical(clean.built, verified.built);
+}
+
+TEST_CASE("--cache-verify samples by key: the same keys every run, about the given fraction", "[remote-cache]") {
+  RemoteCache half({"http://h", "subdirs", 1, 0.5}), none({"http://h", "subdirs", 1, 0}),
+      all({"http://h", "subdirs", 1, 1});
+  size_t sampled = 0;
+  const size_t n = 2000;
+  for (size_t i = 0; i < n; ++i) {
+    const std::string key = ShaderCache::key({std::to_string(i)});
+    sampled += half.verifies(key);
+    CHECK(half.verifies(key) == half.verifies(key));
+    CHECK(!none.verifies(key));
+    CHECK(all.verifies(key));
+  }
+  // Binomial(2000, 0.5): standard deviation 22.4; 5 of them either side.
+  CHECK(sampled > n / 2 - 112);
+  CHECK(sampled < n / 2 + 112);
+  CHECK_THROWS_AS(RemoteCache({"http://h", "subdirs", 1, 1.5}), DiagnosticError);
+}
+
+TEST_CASE("credentials in the cache URL never appear in a message", "[remote-cache][cli]") {
+  CHECK(RemoteCache::redactUrl("http://user:secret@host:8080/c/d?token=abc") == "http://***@host:8080/c/d?***");
+  CHECK(RemoteCache::redactUrl("https://tok@host") == "https://***@host");
+  CHECK(RemoteCache::redactUrl("http://host/c#frag") == "http://host/c#***");
+  CHECK(RemoteCache::redactUrl("http://host/a@b") == "http://host/a@b");  // an @ in the path is no userinfo
+  RemoteCache remote({"http://user:secret@127.0.0.1:1/c", "subdirs", 1});
+  CHECK(remote.displayUrl() == "http://***@127.0.0.1:1/c");
+
+  test::ScratchDir dir("remote_secret");
+  test::bypassProxyForLocalhost();
+  const std::string root = test::rootOf(dir).string();
+  const std::string mat = (test::sourceDir() / "materials/ue4_metal.json").string();
+  const std::string url =
+      "http://alice9:s3cr3t@127.0.0.1:" + std::to_string(test::unusedLocalPort()) + "/c?token=t0k3n";
+  auto r = test::runCli("compile " + mat + " --cache-dir " + root + "/l -o " + root + "/p --cache-url '" + url + "'");
+  INFO(r.output);
+  CHECK(r.exitCode == 0);
+  CHECK(r.output.find("W-CACHE-REMOTE") != std::string::npos);
+  CHECK(r.output.find("***@127.0.0.1") != std::string::npos);
+  auto bad = test::runCli("compile " + mat + " -o " + root + "/q --cache-url 'ftp://alice9:s3cr3t@h/c?token=t0k3n'");
+  INFO(bad.output);
+  CHECK(bad.exitCode == 2);
+  for (const auto* out : {&r.output, &bad.output}) {
+    CHECK(out->find("s3cr3t") == std::string::npos);
+    CHECK(out->find("t0k3n") == std::string::npos);
+    CHECK(out->find("alice9") == std::string::npos);
+  }
+}
+
+TEST_CASE("a remote cache slower than compiling locally is noticed and dropped", "[remote-cache][cache]") {
+  // Six materials, one unit each, built one at a time so that the requests come in a known order.
+  const auto& mats = test::loadedMaterials(
+      test::shippedLibrary(),
+      {"filament_plastic", "satin_sheen", "ue4_metal", "brushed_metal", "worn_car_paint", "clearcoat_metal"});
+  const auto perms = test::permutationsOf(mats, {"dir"}, "none");
+  // The delay is derived from this machine's compile time of these units, so that every
+  // answer is slower than compiling whatever the machine's speed (and slower than the probe
+  // threshold); the timeout leaves it room.
+  BuildOptions plain;
+  plain.targets = {"spirv", "glsl450"};
+  plain.jobs = 1;
+  BuildStats measured;
+  double compileMs = 0;
+  for (const auto& b : buildPermutations(test::shippedLibrary(), perms, plain, &measured)) compileMs += b.compileMs;
+  REQUIRE(measured.units == 6);
+  compileMs /= 6;
+  const auto delay = std::chrono::milliseconds(static_cast<long>(std::max(4 * compileMs, 2 * RemoteCache::kProbeMs)));
+  const double timeout = 2.0 * static_cast<double>(delay.count()) / 1000 + 1;
+  test::SlowServer server(delay);
+
+  // Every answer a slow miss: GET, compile, PUT for two units; the third GET makes the last
+  // three all slower than the mean compile, and the cache goes off: 3 GETs and 2 PUTs of 12.
+  RemoteBuild misses = buildWithRemote(server.url(), {}, timeout, 0, perms, 1);
+  INFO(misses.stats.remoteWarning);
+  CHECK(server.requests() == std::map<std::string, int>{{"GET 404", 3}, {"PUT 201", 2}});
+  CHECK(misses.stats.compiled == 6);
+  CHECK(misses.stats.remoteWarning.find("slower than compiling locally") != std::string::npos);
+  CHECK(countOf(misses.stats.cacheWarnings, "W-CACHE-REMOTE") == 1);
+
+  // Every answer a slow hit: no local compile to compare with, so after three slow hits one
+  // unit is compiled as a probe; the cache then goes off and the rest compile here.
+  server.setDelay(std::chrono::milliseconds(0));
+  RemoteBuild fill = buildWithRemote(server.url(), {}, timeout, 0, perms, 1);
+  CHECK(fill.stats.remoteWarning.empty());
+  CHECK(server.requests()["PUT 201"] == 2 + 4);
+  server.setDelay(delay);
+  const int before = server.total();
+  RemoteBuild hits = buildWithRemote(server.url(), {}, timeout, 0, perms, 1);
+  INFO(hits.stats.remoteWarning);
+  CHECK(server.total() - before == 3);
+  CHECK(hits.stats.remoteHits == 3);
+  CHECK(hits.stats.compiled == 3);
+  CHECK(hits.stats.remoteWarning.find("slower than compiling locally") != std::string::npos);
+  test::requireIdentical(misses.built, hits.built);
 }

@@ -3,6 +3,8 @@
 // refused with a clear error and writes nothing.
 #include <catch2/catch.hpp>
 
+#include <sys/stat.h>
+
 #include <fstream>
 #include <set>
 
@@ -142,6 +144,38 @@ TEST_CASE("merge refuses an incomplete, mixed, stale or damaged set of shards an
   REQUIRE(test::runCli("merge -q " + s1 + " " + s2 + " " + s3 + " -o " + out).exitCode == 0);
   fs::remove_all(out);
 
+  // Entries swapped, or one replaced by a link (to another entry, to /dev/zero) or a FIFO:
+  // each is E-SHARD-CORRUPT naming the entry (never an internal error), and nothing is written.
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(entries)) files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  REQUIRE(files.size() >= 2);
+  const std::string first = test::readFile(files[0]), second = test::readFile(files[1]);
+  auto expectCorruptEntry = [&](const fs::path& entry) {
+    auto r = test::runCli("merge " + s1 + " " + s2 + " " + s3 + " -o " + out);
+    INFO(r.output);
+    CHECK(r.exitCode == 3);
+    CHECK(r.output.find(entry.string() + ": error[E-SHARD-CORRUPT]") != std::string::npos);
+    CHECK(!fs::exists(out));
+  };
+  std::ofstream(files[0], std::ios::binary | std::ios::trunc) << second;
+  std::ofstream(files[1], std::ios::binary | std::ios::trunc) << first;
+  expectCorruptEntry(files[0]);
+  std::ofstream(files[1], std::ios::binary | std::ios::trunc) << second;  // files[1] right again
+  fs::remove(files[0]);
+  fs::create_symlink(files[1], files[0]);
+  expectCorruptEntry(files[0]);
+  fs::remove(files[0]);
+  fs::create_symlink("/dev/zero", files[0]);
+  expectCorruptEntry(files[0]);
+  fs::remove(files[0]);
+  REQUIRE(::mkfifo(files[0].c_str(), 0600) == 0);
+  expectCorruptEntry(files[0]);
+  fs::remove(files[0]);
+  std::ofstream(files[0], std::ios::binary) << first;
+  REQUIRE(test::runCli("merge -q " + s1 + " " + s2 + " " + s3 + " -o " + out).exitCode == 0);
+  fs::remove_all(out);
+
   // Inputs that changed since the shards were compiled: another plan.
   const fs::path work = root / "work";
   fs::create_directories(work / "materials");
@@ -191,5 +225,38 @@ TEST_CASE("merge refuses an incomplete, mixed, stale or damaged set of shards an
   CHECK(test::runCli("compile --scene " + kScene + " --shard 4/3 -o " + out).exitCode == 2);
   CHECK(test::runCli("compile --scene " + kScene + " --shard 1/2 --depfile d -o " + out).exitCode == 2);
   CHECK(test::runCli("merge -o " + out).exitCode == 2);
+  fs::remove_all(root);
+}
+
+TEST_CASE("two swapped entries of a one-shard split are refused, not merged into a wrong package", "[shards][cli]") {
+  // Two permutations that differ only in the environment: each entry is a valid entry, of
+  // the other permutation's unit.
+  const fs::path root = test::freshTempDir("shards", "swap");
+  fs::copy(test::sourceDir() / "materials/ue4_metal.json", root / "m.json");
+  std::ofstream(root / "scene.json") << R"({"name": "two", "lights": [{"type": "dir", "name": "sun"}],
+    "environment": ["none", "sh"], "precision": "fp32", "quality": "high", "targets": ["spirv"],
+    "materials": [{"file": "m.json"}]})";
+  auto local = [&](const std::string& args) { return test::runCli(args, "", root.string()); };
+  auto shard = local("compile -q --scene scene.json --no-cache --shard 1/1 -o s");
+  INFO(shard.output);
+  REQUIRE(shard.exitCode == 0);
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(root / "s/entries")) files.push_back(e.path());
+  REQUIRE(files.size() == 2);
+  const std::string a = test::readFile(files[0]), b = test::readFile(files[1]);
+  std::ofstream(files[0], std::ios::binary | std::ios::trunc) << b;
+  std::ofstream(files[1], std::ios::binary | std::ios::trunc) << a;
+  auto merged = local("merge s -o p");
+  INFO(merged.output);
+  CHECK(merged.exitCode == 3);
+  CHECK(merged.output.find("error[E-SHARD-CORRUPT]") != std::string::npos);
+  CHECK(merged.output.find("holds the entry of another unit") != std::string::npos);
+  CHECK(!fs::exists(root / "p"));
+  // Put back, it merges into the package a plain compile writes.
+  std::ofstream(files[0], std::ios::binary | std::ios::trunc) << a;
+  std::ofstream(files[1], std::ios::binary | std::ios::trunc) << b;
+  REQUIRE(local("merge -q s -o p").exitCode == 0);
+  REQUIRE(local("compile -q --scene scene.json --no-cache -o whole").exitCode == 0);
+  requireSameTree(root / "whole", root / "p");
   fs::remove_all(root);
 }

@@ -66,10 +66,10 @@ std::unique_ptr<RemoteCache> openRemoteCache(const CompileArgs& a) {
     if (const char* env = std::getenv("MATBRICKS_CACHE_URL"); env && *env) url = env;
   if (url.empty()) return nullptr;
   try {
-    return std::make_unique<RemoteCache>(RemoteCacheOptions{url, a.cacheUrlLayout, a.cacheTimeout});
+    return std::make_unique<RemoteCache>(RemoteCacheOptions{url, a.cacheUrlLayout, a.cacheTimeout, a.cacheVerify});
   } catch (const DiagnosticError& e) {  // a bad option value: a usage error (exit 2)
-    throw CLI::ValidationError((a.cacheUrl.empty() ? "MATBRICKS_CACHE_URL " : "--cache-url ") + url + ": " +
-                               e.diagnostics().front().message);
+    throw CLI::ValidationError((a.cacheUrl.empty() ? "MATBRICKS_CACHE_URL " : "--cache-url ") +
+                               RemoteCache::redactUrl(url) + ": " + e.diagnostics().front().message);
   }
 }
 
@@ -78,6 +78,8 @@ std::string remoteSummary(const BuildStats& s, const RemoteCache* remote) {
   std::string text = ", " + std::to_string(s.remoteHits) + " of them from the remote cache, " +
                      std::to_string(s.remoteUploads) + " uploaded";
   if (s.remoteCorrupt) text += ", " + std::to_string(s.remoteCorrupt) + " corrupt remote blob(s) ignored";
+  if (s.remoteMismatch) text += ", " + std::to_string(s.remoteMismatch) + " remote blob(s) of another unit ignored";
+  if (s.remoteVerified) text += ", " + std::to_string(s.remoteVerified) + " verified by compiling again";
   return text;
 }
 
@@ -129,6 +131,8 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
   if (std::string why = cppNamespaceRefusal(a.cppNamespace); !why.empty())
     throw DiagnosticError(
         {{Severity::Error, "E-INVALID-NAME", {"--namespace", 0, 0}, "'" + a.cppNamespace + "' " + why}});
+  if (a.noCache && a.cacheVerify > 0)
+    throw CLI::ValidationError("--cache-verify conflicts with --no-cache (there is no remote cache to verify)");
   ShardSpec shard;
   if (!a.shard.empty()) {
     std::string why;
@@ -202,16 +206,11 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
                       b.spirvInstructions, b.spirvHash.c_str(),
                       b.fromCache ? (mergeFrom ? "  (from its shard)" : "  (cached)") : "");
         if (package) package->add(plan.required[i], b);
-        if (shardWriter) shardWriter->add(b.cacheKey, b.artifacts, b.shader.key);
+        if (shardWriter) shardWriter->add(b.unit, b.artifacts, b.shader.key);
         if (!a.depfile.empty()) addGlslInputs(lib, b.shader.glsl, glslInputs);
       },
       &stats);
-  if (!stats.remoteWarning.empty())
-    printDiagnostics({{Severity::Warning,
-                       "W-CACHE-REMOTE",
-                       {a.cacheUrl.empty() ? "MATBRICKS_CACHE_URL" : a.cacheUrl, 0, 0},
-                       stats.remoteWarning}},
-                     g);
+  if (!stats.cacheWarnings.empty()) printDiagnostics(stats.cacheWarnings, g);
   if (a.explain) {
     // Every required permutation was built; say how many glslang built now and how many the
     // cache or an identical emitted GLSL supplied.
@@ -295,6 +294,10 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--cache-timeout", args->cacheTimeout,
                   "Seconds a remote cache request may take before the remote cache is skipped (default 10)")
       ->check(CLI::Range(0.05, 3600.0));
+  cmd->add_option("--cache-verify", args->cacheVerify,
+                  "Fraction of remote cache hits (0..1, sampled by key) compiled again and compared byte for byte; "
+                  "a difference is E-CACHE-VERIFY and drops the remote (default 0)")
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--stream-window", args->streamWindow,
                   "Permutations built per streamed window (default 256; 0: all at once). Memory grows with the "
                   "window, not the scene; output is identical at every window")

@@ -30,7 +30,8 @@ struct CompileArgs {
   std::string cacheUrl;  // empty: $MATBRICKS_CACHE_URL, else none
   std::string cacheUrlLayout = "subdirs";
   double cacheTimeout = 10;
-  std::string shard;  // "i/N"; empty: the whole build
+  double cacheVerify = 0;  // fraction of remote hits compiled again and compared
+  std::string shard;       // "i/N"; empty: the whole build
   // Permutations emitted and compiled per streamed window (docs/targets.md "Memory"): enough
   // units to keep every job busy between windows, few enough that a window's GLSL and
   // artifacts stay a few tens of MB. 0: the whole build at once.

@@ -6,7 +6,8 @@
 // 3. A pool of `jobs` threads takes units in order (under --shard i/N only the units whose
 //    index is i-1 mod N): local cache lookup, else the remote cache, else glslang ->
 //    spirv-val -> spirv-opt -> SPIRV-Cross targets -> checks -> reflection, then store in
-//    both. `merge` instead takes every unit from the shards and compiles nothing.
+//    both. `merge` instead takes every unit from the shards and compiles nothing. Every
+//    entry, wherever it comes from, must carry the unit's own CacheIdentity.
 // Every output is a function of its unit alone, never of the schedule, so the results are
 // bit-identical at every job count; they come back in input order.
 #include "compile/build.hpp"
@@ -44,11 +45,15 @@ struct CompileUnit {
   std::string fragmentGlsl, fragmentDisplayName, fragmentMediumpGlsl, fragmentMediumpDisplayName;
   CompileOptions compile;
   std::string cacheKey;
+  CacheIdentity identity;  // cacheKey and the digest of the GLSL texts above
   // Results, written by one worker only.
   CompiledArtifacts artifacts;
-  ShaderCache::Lookup lookup = ShaderCache::Lookup::Miss;
-  bool owned = true;  // built by this shard
-  bool fromRemote = false, remoteCorrupt = false, uploaded = false;
+  ShaderCache::Lookup lookup = ShaderCache::Lookup::Miss;  // Hit: from a cache or a shard
+  ShaderCache::Lookup local = ShaderCache::Lookup::Miss;   // what the local cache had
+  bool owned = true;                                       // built by this shard
+  bool fromRemote = false, remoteCorrupt = false, remoteMismatch = false, uploaded = false;
+  bool verified = false, verifyFailed = false;  // --cache-verify compiled this remote hit again
+  std::string localWhy, remoteWhy;              // what was wrong with a bad entry or blob
   double compileMs = 0;
   std::vector<Diagnostic> errors;
   std::exception_ptr failure;  // anything that is not a DiagnosticError
@@ -100,8 +105,8 @@ struct UnitSources {
 
 // merge: a unit's artifacts from the shards, or the error saying which shard lacks them.
 void loadFromShards(CompileUnit& u, size_t index, const ShardSet& shards) {
-  std::string where;
-  switch (shards.load(u.cacheKey, index, u.artifacts, where)) {
+  std::string where, why;
+  switch (shards.load(u.identity, index, u.artifacts, where, why)) {
     case ShardSet::Lookup::Hit:
       u.lookup = ShaderCache::Lookup::Hit;
       return;
@@ -114,11 +119,12 @@ void loadFromShards(CompileUnit& u, size_t index, const ShardSet& shards) {
                           "compile that shard again"});
       return;
     case ShardSet::Lookup::Corrupt:
-      u.errors.push_back({Severity::Error,
-                          "E-SHARD-CORRUPT",
-                          {where, 0, 0},
-                          "the shard entry for '" + u.displayName + "' is missing, truncated or damaged",
-                          "compile that shard again"});
+      u.errors.push_back(
+          {Severity::Error,
+           "E-SHARD-CORRUPT",
+           {where, 0, 0},
+           "the shard entry for '" + u.displayName + "' " + why + "; merge takes nothing from these shards",
+           "compile that shard again"});
       return;
   }
 }
@@ -146,36 +152,66 @@ StageArtifacts compileStage(const std::string& glsl, const std::string& displayN
   return a;
 }
 
+// glslang and every target for the unit, timed.
+CompiledArtifacts compileUnit(CompileUnit& u, const std::vector<std::string>& targets) {
+  auto t0 = Clock::now();
+  CompiledArtifacts a;
+  static_cast<StageArtifacts&>(a) =
+      compileStage(u.glsl, u.displayName, u.mediumpGlsl, u.mediumpDisplayName, u.compile, targets);
+  if (!u.fragmentGlsl.empty()) {
+    CompileOptions fragment = u.compile;
+    fragment.stage = ShaderStage::Fragment;
+    a.fragment = compileStage(u.fragmentGlsl, u.fragmentDisplayName, u.fragmentMediumpGlsl,
+                              u.fragmentMediumpDisplayName, fragment, targets);
+  }
+  a.includes = crossCompileIncludes(u.glsl, targets, u.displayName);
+  u.compileMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  return a;
+}
+
+// The unit from the remote cache; false if it has to be compiled.
+bool takeFromRemote(CompileUnit& u, const std::vector<std::string>& targets, const UnitSources& src) {
+  RemoteCache& remote = *src.remote;
+  // A remote that always hits gives no local compile to compare its speed with: one unit is
+  // compiled as a probe when its answers are slow (RemoteCache::wantsTimingProbe).
+  if (remote.wantsTimingProbe()) return false;
+  const RemoteCache::Get got = remote.get(u.identity, u.artifacts, &u.remoteWhy);
+  u.remoteCorrupt = got == RemoteCache::Get::Corrupt;
+  u.remoteMismatch = got == RemoteCache::Get::OtherUnit;
+  if (got != RemoteCache::Get::Hit) return false;
+  if (remote.verifies(u.cacheKey)) {
+    // --cache-verify: a key is not a proof of content (docs/targets.md); compiling is
+    // deterministic, so the remote's entry must equal a local compile byte for byte.
+    const CompiledArtifacts local = compileUnit(u, targets);
+    remote.noteCompile(u.compileMs);
+    if (encodeCacheEntry(u.identity, local) != encodeCacheEntry(u.identity, u.artifacts)) {
+      u.verifyFailed = true;
+      remote.distrust("the remote cache's entry for '" + u.displayName + "' differs from its local compile");
+      u.artifacts = local;
+      return true;
+    }
+    u.verified = true;
+  }
+  u.lookup = ShaderCache::Lookup::Hit;
+  u.fromRemote = true;
+  src.cache.store(u.identity, u.artifacts);
+  return true;
+}
+
 void buildUnit(CompileUnit& u, size_t index, const std::vector<std::string>& targets, const UnitSources& src) {
   try {
     if (src.shards) return loadFromShards(u, index, *src.shards);
     const ShaderCache& cache = src.cache;
-    u.lookup = cache.load(u.cacheKey, u.artifacts);
+    u.local = cache.load(u.identity, u.artifacts, &u.localWhy);
+    u.lookup = u.local;
     if (u.lookup == ShaderCache::Lookup::Hit) return;
+    if (src.remote && takeFromRemote(u, targets, src)) return;
+    CompiledArtifacts a = compileUnit(u, targets);
+    cache.store(u.identity, a);
     if (src.remote) {
-      const RemoteCache::Get got = src.remote->get(u.cacheKey, u.artifacts);
-      u.remoteCorrupt = got == RemoteCache::Get::Corrupt;
-      if (got == RemoteCache::Get::Hit) {
-        u.lookup = ShaderCache::Lookup::Hit;
-        u.fromRemote = true;
-        cache.store(u.cacheKey, u.artifacts);
-        return;
-      }
+      src.remote->noteCompile(u.compileMs);
+      u.uploaded = src.remote->put(u.identity, a);
     }
-    auto t0 = Clock::now();
-    CompiledArtifacts a;
-    static_cast<StageArtifacts&>(a) =
-        compileStage(u.glsl, u.displayName, u.mediumpGlsl, u.mediumpDisplayName, u.compile, targets);
-    if (!u.fragmentGlsl.empty()) {
-      CompileOptions fragment = u.compile;
-      fragment.stage = ShaderStage::Fragment;
-      a.fragment = compileStage(u.fragmentGlsl, u.fragmentDisplayName, u.fragmentMediumpGlsl,
-                                u.fragmentMediumpDisplayName, fragment, targets);
-    }
-    a.includes = crossCompileIncludes(u.glsl, targets, u.displayName);
-    u.compileMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-    cache.store(u.cacheKey, a);
-    if (src.remote) u.uploaded = src.remote->put(u.cacheKey, a);
     u.artifacts = std::move(a);
   } catch (const DiagnosticError& e) {
     u.errors = e.diagnostics();
@@ -219,7 +255,8 @@ struct StageSummary {
 };
 
 struct UnitSummary {
-  size_t index = 0;  // in first-occurrence order: shards deal these out
+  size_t index = 0;    // in first-occurrence order: shards deal these out
+  std::string source;  // CacheIdentity::source
   bool owned = true;
   bool reported = false;  // its compile time was reported on its first permutation
   ShaderCache::Lookup lookup = ShaderCache::Lookup::Miss;
@@ -253,6 +290,7 @@ class StreamingBuild {
       if (isNew) {
         it->second.index = unitKeys_.size();
         it->second.owned = options_.shard.owns(it->second.index);
+        it->second.source = u.identity.source;
         u.owned = it->second.owned;
         unitKeys_.push_back(u.cacheKey);
         freshSlot[&it->second] = fresh.size();
@@ -271,7 +309,7 @@ class StreamingBuild {
       UnitSummary& unit = *unitOf[i - first];
       BuiltPermutation b;
       b.shader = std::move(shaders[i - first]);
-      b.cacheKey = unitKeys_[unit.index];
+      b.unit = {unitKeys_[unit.index], unit.source};
       b.inShard = unit.owned;
       if (unit.owned) {
         const auto slot = freshSlot.find(&unit);
@@ -304,10 +342,14 @@ class StreamingBuild {
     s.planDigest = planDigest(splitInto, unitKeys_);
     // Shards of another build lack units: say that, not which entries are missing.
     if (options_.mergeFrom && !emitFailed_) options_.mergeFrom->requirePlan(s.planDigest);
+    // The remote served wrong code: nothing it supplied in this run stays in the local cache.
+    if (verifyFailed_)
+      for (const auto& key : unverifiedRemoteKeys_) cache_.evict(key);
     if (failure_) std::rethrow_exception(failure_);
     if (!errors_.empty()) throw DiagnosticError(errors_);
     s.uniqueSpirv = hashes_.size();
     if (options_.remote) s.remoteWarning = options_.remote->warning();
+    s.cacheWarnings = cacheWarnings(s);
     if (stats) *stats = s;
   }
 
@@ -334,6 +376,7 @@ class StreamingBuild {
       errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
     }
     u.cacheKey = unitKey(lib_, shader, u.compile, targets_, u.mediumpGlsl, fragment ? &u : nullptr);
+    u.identity = ShaderCache::identity(u.cacheKey, {u.glsl, u.mediumpGlsl, u.fragmentGlsl, u.fragmentMediumpGlsl});
     return u;
   }
 
@@ -359,6 +402,21 @@ class StreamingBuild {
   void summarize(UnitSummary& summary, const CompileUnit& u) {
     if (u.failure && !failure_) failure_ = u.failure;
     errors_.insert(errors_.end(), u.errors.begin(), u.errors.end());
+    if (u.verifyFailed) {
+      verifyFailed_ = true;
+      errors_.push_back({Severity::Error,
+                         "E-CACHE-VERIFY",
+                         {options_.remote->displayUrl(), 0, 0},
+                         "the remote cache's entry for '" + u.displayName + "' (key " + u.cacheKey +
+                             ") differs from a local compile of the same unit: the remote cache serves wrong code. "
+                             "Nothing was written; the remote cache is off and the entries it supplied in this run "
+                             "were removed from the local cache",
+                         "empty or repair the remote cache, or compile without --cache-url"});
+    }
+    if (u.fromRemote && !u.verified) unverifiedRemoteKeys_.push_back(u.cacheKey);
+    noteFirst(firstLocalMismatch_, u.local == ShaderCache::Lookup::OtherUnit, u.localWhy);
+    noteFirst(firstUnreadable_, u.local == ShaderCache::Lookup::Unreadable, u.localWhy);
+    noteFirst(firstRemoteMismatch_, u.remoteMismatch, u.remoteWhy);
     if (!u.owned || u.failure || !u.errors.empty()) return;
     summary.lookup = u.lookup;
     summary.kernel = summarizeStage(u.artifacts);
@@ -366,10 +424,44 @@ class StreamingBuild {
     ++stats_.shardUnits;
     stats_.compiled += u.lookup != ShaderCache::Lookup::Hit;
     stats_.cacheHits += u.lookup == ShaderCache::Lookup::Hit;
-    stats_.cacheCorrupt += u.lookup == ShaderCache::Lookup::Corrupt;
+    stats_.cacheCorrupt += u.local == ShaderCache::Lookup::Corrupt;
+    stats_.cacheMismatch += u.local == ShaderCache::Lookup::OtherUnit;
+    stats_.cacheUnreadable += u.local == ShaderCache::Lookup::Unreadable;
     stats_.remoteHits += u.fromRemote;
     stats_.remoteCorrupt += u.remoteCorrupt;
+    stats_.remoteMismatch += u.remoteMismatch;
+    stats_.remoteVerified += u.verified;
     stats_.remoteUploads += u.uploaded;
+  }
+
+  static void noteFirst(std::string& first, bool happened, const std::string& why) {
+    if (happened && first.empty()) first = why.empty() ? "?" : why;
+  }
+
+  // One warning per kind of bad entry, naming the first; the counts are in the stats.
+  std::vector<Diagnostic> cacheWarnings(const BuildStats& s) const {
+    std::vector<Diagnostic> out;
+    auto warn = [&](size_t n, const char* code, const std::string& where, const char* what, const std::string& first,
+                    const char* outcome) {
+      if (n == 0) return;
+      out.push_back({Severity::Warning,
+                     code,
+                     {where, 0, 0},
+                     std::to_string(n) + " " + what + " (first: " + first + "): " + outcome,
+                     ""});
+    };
+    const std::string local = cache_.dir().string();
+    warn(s.cacheMismatch, "W-CACHE-MISMATCH", local, "local cache entries held another unit's entry",
+         firstLocalMismatch_, "evicted and rebuilt");
+    warn(s.cacheUnreadable, "W-CACHE-UNREADABLE", local, "local cache entries were not readable", firstUnreadable_,
+         "evicted and rebuilt");
+    if (!options_.remote) return out;
+    const std::string remote = options_.remote->displayUrl();
+    warn(s.remoteMismatch, "W-CACHE-REMOTE-MISMATCH", remote, "remote blobs held another unit's entry",
+         firstRemoteMismatch_, "ignored, compiled here, never stored in the local cache");
+    if (!s.remoteWarning.empty())
+      out.push_back({Severity::Warning, "W-CACHE-REMOTE", {remote, 0, 0}, s.remoteWarning, ""});
+    return out;
   }
 
   const ShaderLibrary& lib_;
@@ -385,6 +477,9 @@ class StreamingBuild {
   std::vector<Diagnostic> errors_;
   std::exception_ptr failure_;
   bool emitFailed_ = false;
+  bool verifyFailed_ = false;
+  std::vector<std::string> unverifiedRemoteKeys_;  // units taken from the remote unchecked
+  std::string firstLocalMismatch_, firstUnreadable_, firstRemoteMismatch_;
   BuildStats stats_;
 };
 

@@ -11,6 +11,7 @@
 #include "compile/remote_cache.hpp"
 #include "compile/shader_cache.hpp"
 #include "compile/shard.hpp"
+#include "core/diagnostics.hpp"
 #include "emit/emitter.hpp"
 #include "library/shader_library.hpp"
 #include "permute/permutation.hpp"
@@ -46,8 +47,8 @@ struct BuiltPermutation {
   // The fragment shader's, "" and 0 when none was built (its code: artifacts.fragment).
   std::string fragmentHash;
   size_t fragmentInstructions = 0;
-  std::string cacheKey;  // of its compile unit
-  bool inShard = true;   // false: another shard builds it (artifacts empty, nothing to write)
+  CacheIdentity unit;   // of its compile unit (unit.key: its cache key)
+  bool inShard = true;  // false: another shard builds it (artifacts empty, nothing to write)
   bool fromCache = false;
   double compileMs = 0;  // 0 for a cache hit, and for a permutation whose GLSL an
                          // earlier one already emitted (compiled once, reported once)
@@ -57,15 +58,22 @@ struct BuildStats {
   size_t permutations = 0;
   size_t compiled = 0;  // glslang actually ran (misses, after GLSL dedup)
   size_t cacheHits = 0;
-  size_t cacheCorrupt = 0;   // entries found corrupt and rebuilt
-  size_t uniqueSpirv = 0;    // distinct SPIR-V hashes
-  size_t units = 0;          // compile units (distinct emitted GLSL) of the whole build
-  size_t shardUnits = 0;     // of them, built here (all but under --shard)
-  size_t remoteHits = 0;     // units the remote cache supplied
-  size_t remoteCorrupt = 0;  // remote blobs that failed their checks (ignored, rebuilt)
+  size_t cacheCorrupt = 0;     // entries found corrupt and rebuilt
+  size_t cacheMismatch = 0;    // intact entries of another unit at a unit's path (evicted, rebuilt)
+  size_t cacheUnreadable = 0;  // entries that are no regular file or cannot be read (evicted, rebuilt)
+  size_t uniqueSpirv = 0;      // distinct SPIR-V hashes
+  size_t units = 0;            // compile units (distinct emitted GLSL) of the whole build
+  size_t shardUnits = 0;       // of them, built here (all but under --shard)
+  size_t remoteHits = 0;       // units the remote cache supplied
+  size_t remoteCorrupt = 0;    // remote blobs that failed their checks (ignored, rebuilt)
+  size_t remoteMismatch = 0;   // remote blobs holding another unit's entry (ignored, rebuilt)
+  size_t remoteVerified = 0;   // remote hits compiled again and found identical (--cache-verify)
   size_t remoteUploads = 0;
   std::string remoteWarning;  // why the remote cache went off or read-only ("" if it did not)
-  std::string planDigest;     // shard.hpp planDigest over the units, for --shard N (else N = 1)
+  // W-CACHE-REMOTE (remoteWarning), W-CACHE-REMOTE-MISMATCH, W-CACHE-MISMATCH and
+  // W-CACHE-UNREADABLE: at most one of each per build, the first case named, credentials never.
+  std::vector<Diagnostic> cacheWarnings;
+  std::string planDigest;  // shard.hpp planDigest over the units, for --shard N (else N = 1)
   double wallMs = 0;
 };
 

@@ -3,6 +3,9 @@
 
 #include <curl/curl.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <mutex>
 
@@ -30,7 +33,7 @@ constexpr size_t kMaxBlobBytes = size_t(256) << 20;
 [[noreturn]] void badUrl(const std::string& url, const std::string& what) {
   throw DiagnosticError({{Severity::Error,
                           "E-CACHE-URL",
-                          {url, 0, 0},
+                          {RemoteCache::redactUrl(url), 0, 0},
                           what,
                           "give a base URL such as http://cache.example:8080/matbricks"}});
 }
@@ -55,9 +58,10 @@ size_t readUpload(char* dst, size_t size, size_t count, void* user) {
   return n;
 }
 
-std::string describe(const std::string& method, const std::string& url, const Response& r) {
-  if (r.code != CURLE_OK) return method + " " + url + ": " + r.error;
-  return method + " " + url + ": HTTP " + std::to_string(r.status);
+std::string formatMs(double ms) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.0f ms", ms);
+  return buf;
 }
 
 }  // namespace
@@ -100,6 +104,8 @@ RemoteCache::RemoteCache(RemoteCacheOptions options) : options_(std::move(option
   bool knownLayout = false;
   for (const auto& l : remoteCacheLayouts()) knownLayout |= l == options_.layout;
   if (!knownLayout) badUrl(url, "unknown remote cache layout '" + options_.layout + "' (subdirs, flat or bazel)");
+  if (!(options_.verifyFraction >= 0 && options_.verifyFraction <= 1))
+    badUrl(url, "the fraction of remote hits to verify must lie in [0, 1]");
   while (options_.url.size() > scheme + 3 && options_.url.back() == '/') options_.url.pop_back();
   static std::once_flag curlReady;
   std::call_once(curlReady, [] { curl_global_init(CURL_GLOBAL_DEFAULT); });
@@ -114,8 +120,35 @@ std::string RemoteCache::blobUrl(const std::string& key) const {
   return options_.url + "/" + key.substr(0, 2) + "/" + key;
 }
 
-std::string RemoteCache::encodeBlob(const std::string& key, const CompiledArtifacts& artifacts) {
-  return std::string(kBlobMagic, sizeof kBlobMagic) + key + encodeCacheEntry(artifacts);
+std::string RemoteCache::redactUrl(const std::string& url) {
+  const size_t scheme = url.find("://");
+  if (scheme == std::string::npos) return url.substr(0, url.find_first_of("?#"));
+  const size_t hostStart = scheme + 3;
+  const size_t pathStart = std::min(url.find_first_of("/?#", hostStart), url.size());
+  std::string out = url.substr(0, hostStart);
+  const size_t at = url.rfind('@', pathStart == url.size() ? std::string::npos : pathStart);
+  const bool userinfo = at != std::string::npos && at >= hostStart && at < pathStart;
+  out += userinfo ? "***" + url.substr(at, pathStart - at) : url.substr(hostStart, pathStart - hostStart);
+  const size_t tail = std::min(url.find_first_of("?#", pathStart), url.size());
+  out += url.substr(pathStart, tail - pathStart);
+  if (tail < url.size()) out += url[tail] == '?' ? "?***" : "#***";
+  return out;
+}
+
+std::string RemoteCache::encodeBlob(const CacheIdentity& identity, const CompiledArtifacts& artifacts) {
+  return std::string(kBlobMagic, sizeof kBlobMagic) + identity.key + encodeCacheEntry(identity, artifacts);
+}
+
+bool RemoteCache::verifies(const std::string& key) const {
+  if (options_.verifyFraction <= 0) return false;
+  if (options_.verifyFraction >= 1) return true;
+  // The key is a uniform hash: its first 64 bits, as a fraction of 2^64, sample it.
+  uint64_t v = 0;
+  for (size_t i = 0; i < 16 && i < key.size(); ++i) {
+    const char c = key[i];
+    v = v * 16 + static_cast<uint64_t>(c >= 'a' ? c - 'a' + 10 : c - '0');
+  }
+  return static_cast<double>(v) < options_.verifyFraction * 18446744073709551616.0;
 }
 
 namespace {
@@ -155,6 +188,56 @@ Response perform(CURL* h, const std::string& url, const std::string* upload, dou
 
 }  // namespace
 
+std::string RemoteCache::describe(const std::string& method, const std::string& key, const Response& r) const {
+  const std::string where = method + " " + redactUrl(blobUrl(key));
+  if (r.code == CURLE_OK) return where + ": HTTP " + std::to_string(r.status);
+  // curl's message may quote the URL or the host it was given: never the credentials.
+  std::string error = r.error;
+  for (size_t at; (at = error.find(options_.url)) != std::string::npos;)
+    error.replace(at, options_.url.size(), displayUrl());
+  const size_t scheme = options_.url.find("://") + 3;
+  const size_t at = options_.url.find('@', scheme);
+  if (at != std::string::npos && at < options_.url.find('/', scheme)) {
+    const std::string userinfo = options_.url.substr(scheme, at - scheme);
+    for (size_t pos; (pos = error.find(userinfo)) != std::string::npos;) error.replace(pos, userinfo.size(), "***");
+  }
+  return where + ": " + error;
+}
+
+void RemoteCache::distrust(const std::string& why) { goOff(why); }
+
+void RemoteCache::noteGet(double ms) {
+  std::lock_guard lock(timingMutex_);
+  recentGetMs_.push_back(ms);
+  if (recentGetMs_.size() > kSlowSamples) recentGetMs_.pop_front();
+  offIfSlower();
+}
+
+void RemoteCache::noteCompile(double ms) {
+  std::lock_guard lock(timingMutex_);
+  compileMsSum_ += ms;
+  ++compiles_;
+  offIfSlower();
+}
+
+bool RemoteCache::wantsTimingProbe() {
+  std::lock_guard lock(timingMutex_);
+  if (probed_ || compiles_ > 0 || off_ || recentGetMs_.size() < kSlowSamples) return false;
+  if (*std::min_element(recentGetMs_.begin(), recentGetMs_.end()) <= kProbeMs) return false;
+  probed_ = true;
+  return true;
+}
+
+void RemoteCache::offIfSlower() {
+  if (off_ || compiles_ == 0 || recentGetMs_.size() < kSlowSamples) return;
+  const double compileMs = compileMsSum_ / static_cast<double>(compiles_);
+  if (*std::min_element(recentGetMs_.begin(), recentGetMs_.end()) <= compileMs) return;
+  std::string times;
+  for (double ms : recentGetMs_) times += (times.empty() ? "" : ", ") + formatMs(ms);
+  goOff(displayUrl() + " answers slower than compiling locally (the last " + std::to_string(kSlowSamples) +
+        " requests took " + times + "; a local compile takes " + formatMs(compileMs) + " on average)");
+}
+
 void RemoteCache::goOff(const std::string& why) {
   std::lock_guard lock(warningMutex_);
   if (warning_.empty()) warning_ = why + "; compiling locally without the remote cache for the rest of this run";
@@ -189,31 +272,38 @@ RemoteCache::Response RemoteCache::send(const std::string& url, const std::strin
   return r;
 }
 
-RemoteCache::Get RemoteCache::get(const std::string& key, CompiledArtifacts& out) {
+RemoteCache::Get RemoteCache::get(const CacheIdentity& identity, CompiledArtifacts& out, std::string* why) {
   auto gate = firstContactGate();
   if (off_) return Get::Unavailable;
-  const std::string url = blobUrl(key);
-  const Response r = send(url, nullptr);
+  const std::string& key = identity.key;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Response r = send(blobUrl(key), nullptr);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (r.code != CURLE_OK || (r.status != 200 && r.status != 404)) {
-    goOff(describe("GET", url, r));
+    goOff(describe("GET", key, r));
     return Get::Unavailable;
   }
   reached_ = true;
+  noteGet(ms);
   if (r.status == 404) return Get::Miss;
   const std::string& b = r.body;
   if (b.size() < sizeof kBlobMagic + kKeyDigits || std::memcmp(b.data(), kBlobMagic, sizeof kBlobMagic) != 0 ||
-      b.compare(sizeof kBlobMagic, kKeyDigits, key) != 0 ||
-      !decodeCacheEntry(b.substr(sizeof kBlobMagic + kKeyDigits), out)) {
+      b.compare(sizeof kBlobMagic, kKeyDigits, key) != 0) {
+    if (why) *why = redactUrl(blobUrl(key)) + " is not a blob of this key";
     return Get::Corrupt;
   }
-  return Get::Hit;
+  CacheIdentity found;
+  const EntryCheck check = decodeCacheEntry(b.substr(sizeof kBlobMagic + kKeyDigits), identity, out, &found);
+  if (check == EntryCheck::Ok) return Get::Hit;
+  if (why) *why = redactUrl(blobUrl(key)) + " " + describeEntryCheck(check, found);
+  return check == EntryCheck::OtherUnit ? Get::OtherUnit : Get::Corrupt;
 }
 
-bool RemoteCache::put(const std::string& key, const CompiledArtifacts& artifacts) {
+bool RemoteCache::put(const CacheIdentity& identity, const CompiledArtifacts& artifacts) {
   auto gate = firstContactGate();
   if (off_ || readOnly_) return false;
-  const std::string url = blobUrl(key);
-  const std::string blob = encodeBlob(key, artifacts);
+  const std::string url = blobUrl(identity.key);
+  const std::string blob = encodeBlob(identity, artifacts);
   const Response r = send(url, &blob);
   if (r.code == CURLE_OK && r.status >= 200 && r.status < 300) {
     reached_ = true;
@@ -221,9 +311,9 @@ bool RemoteCache::put(const std::string& key, const CompiledArtifacts& artifacts
   }
   if (r.code == CURLE_OK && r.status >= 400 && r.status < 500) {
     reached_ = true;  // the server answers; it only refuses to store
-    refuseUploads(describe("PUT", url, r));
+    refuseUploads(describe("PUT", identity.key, r));
   } else {
-    goOff(describe("PUT", url, r));
+    goOff(describe("PUT", identity.key, r));
   }
   return false;
 }

@@ -3,7 +3,8 @@
 // Entry file: a 32-byte header, then the payload.
 //   header   "MBCACHE1" (8 bytes), XXH3-64 of kFormatVersion (u64), payload size (u64),
 //            XXH3-64 of the payload (u64)
-//   payload  the kernel, then the fragment shader (docs/fragment-stage.md; no words and a
+//   payload  the identity (u64 key length, key, u64 source digest length, source digest),
+//            then the kernel, then the fragment shader (docs/fragment-stage.md; no words and a
 //            null reflection when it was not built), each as: u64 SPIR-V word count, the
 //            words; u64 target count, then per target u64 name length, name, u64 text length,
 //            text; u64 reflection length, reflection JSON text;
@@ -15,10 +16,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 
 #include <xxhash.h>
 
+#include "core/input_file.hpp"
 #include "write/package_writer.hpp"
 
 namespace mb {
@@ -102,8 +103,10 @@ bool readModule(Reader& r, uint64_t size, std::vector<uint32_t>& spirv, std::map
 
 }  // namespace
 
-std::string encodeCacheEntry(const CompiledArtifacts& a) {
+std::string encodeCacheEntry(const CacheIdentity& identity, const CompiledArtifacts& a) {
   std::string payload;
+  putBytes(payload, identity.key);
+  putBytes(payload, identity.source);
   putModule(payload, a.spirv, a.targets, a.reflection);
   putModule(payload, a.fragment.spirv, a.fragment.targets, a.fragment.reflection);
   putU64(payload, a.includes.size());
@@ -118,29 +121,46 @@ std::string encodeCacheEntry(const CompiledArtifacts& a) {
   return file + payload;
 }
 
-bool decodeCacheEntry(const std::string& file, CompiledArtifacts& out) {
-  if (file.size() < kHeaderSize || std::memcmp(file.data(), kMagic, sizeof kMagic) != 0) return false;
+EntryCheck decodeCacheEntry(const std::string& file, const CacheIdentity& expected, CompiledArtifacts& out,
+                            CacheIdentity* found) {
+  if (file.size() < kHeaderSize || std::memcmp(file.data(), kMagic, sizeof kMagic) != 0) return EntryCheck::Damaged;
   Reader header(file, sizeof kMagic);
   uint64_t tag = 0, size = 0, hash = 0;
   header.u64(tag);
   header.u64(size);
   header.u64(hash);
-  if (tag != formatTag() || size != file.size() - kHeaderSize) return false;
-  if (XXH3_64bits(file.data() + kHeaderSize, size) != hash) return false;
+  if (tag != formatTag() || size != file.size() - kHeaderSize) return EntryCheck::Damaged;
+  if (XXH3_64bits(file.data() + kHeaderSize, size) != hash) return EntryCheck::Damaged;
   Reader r(file, kHeaderSize);
+  CacheIdentity identity;
   CompiledArtifacts a;
   uint64_t includes = 0;
-  if (!readModule(r, size, a.spirv, a.targets, a.reflection) ||
+  if (!r.str(identity.key) || !r.str(identity.source) || !readModule(r, size, a.spirv, a.targets, a.reflection) ||
       !readModule(r, size, a.fragment.spirv, a.fragment.targets, a.fragment.reflection) || !r.u64(includes))
-    return false;
+    return EntryCheck::Damaged;
   for (uint64_t i = 0; i < includes; ++i) {
     std::string language, text;
-    if (!r.str(language) || !r.str(text)) return false;
+    if (!r.str(language) || !r.str(text)) return EntryCheck::Damaged;
     a.includes[language] = std::move(text);
   }
-  if (!r.atEnd()) return false;
+  if (!r.atEnd()) return EntryCheck::Damaged;
+  if (found) *found = identity;
+  if (!(identity == expected)) return EntryCheck::OtherUnit;
   out = std::move(a);
-  return true;
+  return EntryCheck::Ok;
+}
+
+std::string describeEntryCheck(EntryCheck check, const CacheIdentity& found) {
+  switch (check) {
+    case EntryCheck::Ok:
+      return "is this unit's entry";
+    case EntryCheck::Damaged:
+      return "is truncated, damaged or of another format";
+    case EntryCheck::OtherUnit:
+      return found.key.size() == 32 ? "holds the entry of another unit (key " + found.key + ")"
+                                    : "holds the entry of another unit";
+  }
+  return "";
 }
 
 ShaderCache::ShaderCache(fs::path dir) : dir_(std::move(dir)) {}
@@ -169,31 +189,52 @@ std::string ShaderCache::key(const std::vector<std::string>& parts) {
   return buf;
 }
 
-fs::path ShaderCache::entryPath(const std::string& key) const { return dir_ / key.substr(0, 2) / (key + ".mbc"); }
-
-ShaderCache::Lookup ShaderCache::load(const std::string& key, CompiledArtifacts& out) const {
-  if (!enabled()) return Lookup::Miss;
-  const fs::path path = entryPath(key);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Lookup::Miss;
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return Lookup::Miss;
-  if (decodeCacheEntry(bytes, out)) return Lookup::Hit;
-  // Corrupt: delete it so the rebuilt entry replaces it. A concurrent writer renames a whole
-  // entry over the path; at worst this removes that fresh entry and a later run rebuilds it.
-  std::error_code ec;
-  fs::remove(path, ec);
-  return Lookup::Corrupt;
+CacheIdentity ShaderCache::identity(const std::string& key, const std::vector<std::string>& sources) {
+  return {key, ShaderCache::key(sources)};
 }
 
-bool ShaderCache::store(const std::string& key, const CompiledArtifacts& artifacts) const {
+fs::path ShaderCache::entryPath(const std::string& key) const { return dir_ / key.substr(0, 2) / (key + ".mbc"); }
+
+ShaderCache::Lookup ShaderCache::load(const CacheIdentity& identity, CompiledArtifacts& out, std::string* why) const {
+  if (!enabled()) return Lookup::Miss;
+  const fs::path path = entryPath(identity.key);
+  std::error_code ec;
+  // No entry at all (not even a dangling link): a plain miss.
+  if (fs::symlink_status(path, ec).type() == fs::file_type::not_found) return Lookup::Miss;
+  InputFileError error;
+  const std::optional<std::string> bytes = readInputFile(path, input_kind::kCacheEntry, error);
+  Lookup result = Lookup::Hit;
+  if (!bytes) {
+    if (why) *why = error.message;
+    result = Lookup::Unreadable;
+  } else {
+    CacheIdentity found;
+    const EntryCheck check = decodeCacheEntry(*bytes, identity, out, &found);
+    if (check == EntryCheck::Ok) return Lookup::Hit;
+    if (why) *why = path.string() + " " + describeEntryCheck(check, found);
+    result = check == EntryCheck::OtherUnit ? Lookup::OtherUnit : Lookup::Corrupt;
+  }
+  // Evict it so the rebuilt entry replaces it (a symlink goes, never what it points to). A
+  // concurrent writer renames a whole entry over the path; at worst this removes that fresh
+  // entry and a later run rebuilds it.
+  fs::remove(path, ec);
+  return result;
+}
+
+void ShaderCache::evict(const std::string& key) const {
+  if (!enabled()) return;
+  std::error_code ec;
+  fs::remove(entryPath(key), ec);
+}
+
+bool ShaderCache::store(const CacheIdentity& identity, const CompiledArtifacts& artifacts) const {
   if (!enabled()) return false;
-  const fs::path path = entryPath(key);
+  const fs::path path = entryPath(identity.key);
   std::error_code ec;
   fs::create_directories(path.parent_path(), ec);
   if (ec) return false;
   // Two writers of one key write identical bytes; a reader never sees a partial entry.
-  return replaceFileAtomically(path, encodeCacheEntry(artifacts));
+  return replaceFileAtomically(path, encodeCacheEntry(identity, artifacts));
 }
 
 }  // namespace mb

@@ -2,9 +2,9 @@
 #include "compile/shard.hpp"
 
 #include <charconv>
-#include <fstream>
 
 #include "core/diagnostics.hpp"
+#include "core/input_file.hpp"
 #include "core/json_document.hpp"
 #include "write/package_writer.hpp"
 
@@ -59,13 +59,13 @@ std::string planDigest(unsigned count, const std::vector<std::string>& unitKeys)
 ShardWriter::ShardWriter(PackageWriter& writer, const ShardSpec& spec, nlohmann::json command)
     : writer_(writer), spec_(spec), command_(std::move(command)) {}
 
-void ShardWriter::add(const std::string& cacheKey, const CompiledArtifacts& artifacts,
+void ShardWriter::add(const CacheIdentity& unit, const CompiledArtifacts& artifacts,
                       const std::string& permutationKey) {
-  auto [it, fresh] = byKey_.emplace(cacheKey, entries_.size());
+  auto [it, fresh] = byKey_.emplace(unit.key, entries_.size());
   if (fresh) {
     // The first permutation of a unit always carries its code (build.hpp BuiltSink).
-    entries_.push_back({{"key", cacheKey}, {"permutations", nlohmann::json::array()}});
-    writer_.addFile("entries/" + cacheKey + ".mbc", encodeCacheEntry(artifacts));
+    entries_.push_back({{"key", unit.key}, {"permutations", nlohmann::json::array()}});
+    writer_.addFile("entries/" + unit.key + ".mbc", encodeCacheEntry(unit, artifacts));
   }
   entries_[it->second]["permutations"].push_back(permutationKey);
 }
@@ -167,18 +167,32 @@ void ShardSet::requirePlan(const std::string& digest) const {
              "compile the shards again from the same inputs");
 }
 
-ShardSet::Lookup ShardSet::load(const std::string& key, size_t unitIndex, CompiledArtifacts& out,
-                                std::string& where) const {
-  const auto it = entries_.find(key);
+ShardSet::Lookup ShardSet::load(const CacheIdentity& unit, size_t unitIndex, CompiledArtifacts& out, std::string& where,
+                                std::string& why) const {
+  const auto it = entries_.find(unit.key);
   if (it == entries_.end()) {
     where = dirs_[unitIndex % count_].string();
     return Lookup::Missing;
   }
   where = it->second.string();
-  std::ifstream in(it->second, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof()) return Lookup::Corrupt;
-  return decodeCacheEntry(bytes, out) ? Lookup::Hit : Lookup::Corrupt;
+  // compile --shard writes every entry as a file: a link in its place, to another entry or
+  // anywhere else, was put there by someone else.
+  std::error_code ec;
+  if (fs::symlink_status(it->second, ec).type() == fs::file_type::symlink) {
+    why = "is a symbolic link, not the entry compile --shard wrote";
+    return Lookup::Corrupt;
+  }
+  InputFileError error;
+  const std::optional<std::string> bytes = readInputFile(it->second, input_kind::kShardFile, error);
+  if (!bytes) {
+    why = error.message;
+    return Lookup::Corrupt;
+  }
+  CacheIdentity found;
+  const EntryCheck check = decodeCacheEntry(*bytes, unit, out, &found);
+  if (check == EntryCheck::Ok) return Lookup::Hit;
+  why = describeEntryCheck(check, found);
+  return Lookup::Corrupt;
 }
 
 }  // namespace mb

@@ -7,7 +7,9 @@
 //   .matbricks-package   the output marker, kind "shard"
 //   shard.json           format, shard i of N, the plan digest, the command's inputs, and per
 //                        entry its cache key and the permutation keys that use it
-//   entries/<key>.mbc    one compile cache entry (encodeCacheEntry) per owned unit
+//   entries/<key>.mbc    one compile cache entry (encodeCacheEntry) per owned unit; it
+//                        carries its unit's CacheIdentity, which merge checks against
+//                        the unit the rebuilt plan asks for
 // The plan digest hashes N and every unit's cache key in order. Cache keys cover the emitted
 // GLSL, brick sources, options, targets and tool versions, so shards agree on it exactly when
 // they split the same build; `merge` refuses any other set.
@@ -48,8 +50,8 @@ std::string planDigest(unsigned count, const std::vector<std::string>& unitKeys)
 class ShardWriter {
  public:
   ShardWriter(PackageWriter& writer, const ShardSpec& spec, nlohmann::json command);
-  // A permutation of this shard (BuiltPermutation::inShard) with its unit's cache key.
-  void add(const std::string& cacheKey, const CompiledArtifacts& artifacts, const std::string& permutationKey);
+  // A permutation of this shard (BuiltPermutation::inShard) with its unit's identity.
+  void add(const CacheIdentity& unit, const CompiledArtifacts& artifacts, const std::string& permutationKey);
   void finish(const std::string& digest, size_t units);
 
  private:
@@ -76,8 +78,11 @@ class ShardSet {
 
   enum class Lookup { Hit, Missing, Corrupt };
   // Thread-safe. `where` is set to the entry's file (Corrupt) or the shard that should have
-  // held it (Missing, given the unit's index).
-  Lookup load(const std::string& key, size_t unitIndex, CompiledArtifacts& out, std::string& where) const;
+  // held it (Missing, given the unit's index); on Corrupt `why` says what is wrong with it:
+  // not a regular file (a symlink, even to another entry, a FIFO, a device), too large,
+  // unreadable, damaged, or an intact entry of another unit (entries swapped or copied).
+  Lookup load(const CacheIdentity& unit, size_t unitIndex, CompiledArtifacts& out, std::string& where,
+              std::string& why) const;
 
  private:
   unsigned count_ = 0;

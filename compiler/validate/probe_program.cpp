@@ -49,11 +49,12 @@ void compileInto(ProbeProgram& p) {
   CompileOptions options;
   options.optimize = p.precision == ShaderPrecision::Fp32;
   ShaderCache cache(probeCacheDir());
-  std::string key;
+  CacheIdentity key;
   if (cache.enabled()) {
-    key = ShaderCache::key({ShaderCache::kFormatVersion, MB_VERSION, toolchainVersion(), "validate-probe",
-                            options.optimize ? "optimize" : "no-optimize",
-                            options.validate ? "validate" : "no-validate", p.shader.glsl});
+    key = ShaderCache::identity(ShaderCache::key({ShaderCache::kFormatVersion, MB_VERSION, toolchainVersion(),
+                                                  "validate-probe", options.optimize ? "optimize" : "no-optimize",
+                                                  options.validate ? "validate" : "no-validate", p.shader.glsl}),
+                                {p.shader.glsl});
     CompiledArtifacts hit;
     if (cache.load(key, hit) == ShaderCache::Lookup::Hit) {
       p.compiled.spirv = std::move(hit.spirv);

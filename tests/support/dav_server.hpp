@@ -13,11 +13,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -87,6 +89,104 @@ class SilentServer {
  private:
   int fd_ = -1;
   int port_ = 0;
+};
+
+// A cache server that answers every request correctly, but only after `delay` (changeable
+// between builds): GET of a stored path is 200 with its body, else 404; PUT stores the body
+// (201). One connection at a time, each closed after its answer. It counts what it answered.
+class SlowServer {
+ public:
+  explicit SlowServer(std::chrono::milliseconds delay) : delayMs_(delay.count()) {
+    bypassProxyForLocalhost();
+    fd_ = loopbackSocket(true, port_);
+    thread_ = std::thread([this] { serve(); });
+  }
+  ~SlowServer() {
+    stop_ = true;
+    ::shutdown(fd_, SHUT_RDWR);  // wakes the accept()
+    thread_.join();
+    ::close(fd_);
+  }
+  SlowServer(const SlowServer&) = delete;
+  SlowServer& operator=(const SlowServer&) = delete;
+
+  std::string url() const { return "http://127.0.0.1:" + std::to_string(port_) + "/cache"; }
+  void setDelay(std::chrono::milliseconds delay) { delayMs_ = delay.count(); }
+  // Requests answered so far by "<METHOD> <status>", as DavServer::requests.
+  std::map<std::string, int> requests() const {
+    std::lock_guard lock(mutex_);
+    return counts_;
+  }
+  int total() const {
+    int n = 0;
+    for (const auto& [what, count] : requests()) n += count;
+    return n;
+  }
+
+ private:
+  void serve() {
+    while (!stop_) {
+      const int c = ::accept(fd_, nullptr, nullptr);
+      if (c < 0) continue;
+      answer(c);
+      ::close(c);
+    }
+  }
+  static bool readSome(int c, std::string& in) {
+    char buf[65536];
+    const ssize_t n = ::recv(c, buf, sizeof buf, 0);
+    if (n <= 0) return false;
+    in.append(buf, static_cast<size_t>(n));
+    return true;
+  }
+  void answer(int c) {
+    std::string in;
+    size_t end;
+    while ((end = in.find("\r\n\r\n")) == std::string::npos)
+      if (!readSome(c, in)) return;
+    std::istringstream head(in.substr(0, end));
+    std::string method, path, line;
+    head >> method >> path;
+    size_t length = 0;
+    while (std::getline(head, line))
+      if (line.rfind("Content-Length:", 0) == 0 || line.rfind("content-length:", 0) == 0)
+        length = std::stoul(line.substr(15));
+    std::string body = in.substr(end + 4);
+    while (body.size() < length) {
+      std::string more;
+      if (!readSome(c, more)) return;
+      body += more;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(delayMs_.load()));
+    std::string status = "404 Not Found", reply;
+    {
+      std::lock_guard lock(mutex_);
+      if (method == "PUT") {
+        blobs_[path] = body;
+        status = "201 Created";
+      } else if (auto it = blobs_.find(path); it != blobs_.end()) {
+        status = "200 OK";
+        reply = it->second;
+      }
+      ++counts_[method + " " + status.substr(0, 3)];
+    }
+    const std::string out = "HTTP/1.1 " + status + "\r\nContent-Length: " + std::to_string(reply.size()) +
+                            "\r\nConnection: close\r\n\r\n" + reply;
+    for (size_t sent = 0; sent < out.size();) {
+      const ssize_t n = ::send(c, out.data() + sent, out.size() - sent, MSG_NOSIGNAL);
+      if (n <= 0) return;
+      sent += static_cast<size_t>(n);
+    }
+  }
+
+  std::atomic<long> delayMs_;
+  std::atomic<bool> stop_{false};
+  int fd_ = -1;
+  int port_ = 0;
+  std::thread thread_;
+  mutable std::mutex mutex_;
+  std::map<std::string, std::string> blobs_;
+  std::map<std::string, int> counts_;
 };
 
 class DavServer {
