@@ -153,32 +153,31 @@ TEST_CASE("C++ keywords are refused as parameter names: the header declares them
   }
 }
 
-TEST_CASE("every name outside the derived set compiles in every permutation", "[names]") {
+namespace {
+
+// `base` with a user parameter for every identifier of its emitted code (the library's locals
+// and parameters, struct members, ...) and a few ordinary names that the derived set leaves
+// free, and an empty surface(); each of its permutations must compile, at fp32 and fp16.
+void compilesWithEveryFreeName(MaterialDesc base) {
   const ShaderLibrary& lib = test::shippedLibrary();
-  const auto reserved = paintNames();
-  // Candidates: every identifier of the emitted code (the library's locals and parameters,
-  // struct members, ...), and a few ordinary names.
-  MaterialDesc plain = parseMaterialJson(paintJson(floatParam("wear")), "paint.json", lib);
+  const auto reserved = generatedIdentifiers(lib, base);
   std::set<std::string> candidates = {"tint", "gain", "scale", "wear", "dirt", "roughnessScale", "x", "a", "t"};
-  for (Permutation perm : validationPermutationsFor(plain, lib)) {
+  for (Permutation perm : validationPermutationsFor(base, lib)) {
     auto tokens = identifierTokens(emitPermutation(lib, perm).glsl);
     candidates.insert(tokens.begin(), tokens.end());
   }
-  std::string params;
+  for (const auto& p : base.params) candidates.erase(p.name);  // the model's inputs
+  for (const auto& in : lib.findModel(base.model)->inputs) candidates.erase(in.name);
   size_t accepted = 0;
   for (const auto& name : candidates) {
-    if (reserved.count(name) || !reservedNameReason(name).empty() || name == "wear") continue;
-    if (lib.findModel("standard")->inputs.end() != std::find_if(lib.findModel("standard")->inputs.begin(),
-                                                                lib.findModel("standard")->inputs.end(),
-                                                                [&](const ModelInput& in) { return in.name == name; }))
-      continue;
-    params += (params.empty() ? "" : ",\n") + floatParam(name);
+    if (reserved.count(name) || !reservedNameReason(name).empty()) continue;
+    base.params.push_back({.name = name, .value = {0.5}, .range = {0.0, 1.0}, .user = true, .where = {}});
     ++accepted;
   }
-  INFO(params);
+  base.surface = {"void surface(inout MaterialInputs m, MaterialParams p) {}\n", {"s.glsl", 1, 1}};
+  INFO(base.model << ": " << accepted << " user parameters");
   REQUIRE(accepted > 40);  // the library's locals and parameters are not reserved
-  MaterialDesc m = parseMaterialJson(paintJson(params), "paint.json", lib);
-  for (Permutation perm : validationPermutationsFor(m, lib)) {
+  for (Permutation perm : validationPermutationsFor(base, lib)) {
     for (const std::string precision : {"fp32", "fp16"}) {
       perm.precision = precision;
       EmittedShader s = emitPermutation(lib, perm);
@@ -186,6 +185,15 @@ TEST_CASE("every name outside the derived set compiles in every permutation", "[
       CHECK_NOTHROW(compileComputeGlsl(s.glsl, s.fileName, {ShaderStage::Compute, false, false}));
     }
   }
+}
+
+}  // namespace
+
+TEST_CASE("every name outside the derived set compiles in every permutation", "[names]") {
+  SECTION("standard, with clearcoat") {
+    compilesWithEveryFreeName(parseMaterialJson(paintJson(floatParam("wear")), "paint.json", test::shippedLibrary()));
+  }
+  SECTION("cloth") { compilesWithEveryFreeName(test::shippedMaterial("velvet_green")); }
 }
 
 TEST_CASE("surface code may not declare a name the generated code uses", "[names]") {

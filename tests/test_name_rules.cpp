@@ -89,7 +89,8 @@ TEST_CASE("the depfile escapes what Make and Ninja would split or expand, and re
 }
 
 TEST_CASE("the depfile refuses a path no escape can carry", "[depfile]") {
-  for (const std::string bad : {"/p/new\nline.json", "/p/tab\tbed.json", "/p/cr\r.json", "/p/trailing\\"}) {
+  for (const std::string bad :
+       {"/p/new\nline.json", "/p/tab\tbed.json", "/p/cr\r.json", "/p/trailing\\", "/p/colon:"}) {
     INFO(bad);
     CHECK_FALSE(depfileRefusal(bad).empty());
     try {

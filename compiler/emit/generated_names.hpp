@@ -27,7 +27,8 @@ struct GeneratedName {
 // lights, fp32 and fp16; the probe, the engine kernel, its fragment shader and the bench
 // probe). Found there:
 //  - globals of the emitted code (functions, variables, constants, structs, interface
-//    blocks) from glslang's AST (compile/glsl_declarations.hpp), cached per emitted text;
+//    blocks) from glslang's AST (compile/glsl_declarations.hpp) of the fp32 probes and one
+//    fragment shader, cached per emitted text;
 //  - every macro any of its lines defines;
 //  - every identifier in the lines the emitter writes itself (not after a '.': a member),
 //    which are the wrapper functions the user's names share a scope with, their locals and

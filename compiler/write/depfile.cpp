@@ -38,14 +38,15 @@ namespace {
 // What Ninja's depfile parser (src/depfile_parser.in.cc, which follows GCC's -MD output) reads
 // back as the same path, or nullopt for a path it cannot carry: a newline or carriage return
 // ends a rule, a tab or another control character is whitespace or is kept with its escape,
-// and a path ending in a backslash would escape the separator that follows it.
+// a path ending in a backslash would escape the separator that follows it, and one ending in
+// ':' would end a target (Ninja keeps the backslash of "\\:" before whitespace).
 //   space: 2N+1 backslashes and a space are N backslashes and a space (GCC doubles the
 //          backslashes before a space and adds one);
 //   '#', ':': a backslash before it is dropped, earlier ones kept (one backslash added; ':'
 //          followed by whitespace would end a target);
 //   '$': "$$" (Make's and Ninja's variable character).
 std::optional<std::string> escapedForDepfile(const std::string& path) {
-  if (path.empty() || path.back() == '\\') return std::nullopt;
+  if (path.empty() || path.back() == '\\' || path.back() == ':') return std::nullopt;
   std::string e;
   size_t backslashes = 0;
   for (char c : path) {
@@ -106,7 +107,7 @@ std::string depfileTarget(const std::string& out) { return absolutePath(fs::path
 std::string depfileRefusal(const std::string& path) {
   if (escapedForDepfile(path)) return {};
   return "the depfile cannot name this path: Make and Ninja read no escape for a newline, tab or other control "
-         "character, nor for a path ending in a backslash (rename the file or compile without --depfile)";
+         "character, nor for a path ending in a backslash or ':' (rename the file or compile without --depfile)";
 }
 
 void checkDepfilePaths(const std::string& target, const std::vector<std::string>& deps) {

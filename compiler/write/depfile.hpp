@@ -29,7 +29,7 @@ std::string makeDepfile(const std::string& target, const std::vector<std::string
 // The depfile's target for package directory `out`: its manifest.json, absolute.
 std::string depfileTarget(const std::string& out);
 // Why the depfile cannot name `path` (a newline, tab or other control character, a trailing
-// backslash), or empty when it can.
+// backslash or ':'), or empty when it can.
 std::string depfileRefusal(const std::string& path);
 // Throws DiagnosticError E-DEPFILE-PATH for the first of `target` and `deps` that the depfile
 // cannot name: run before compiling, so that nothing is written for a depfile that would fail.
