@@ -447,17 +447,18 @@ class StreamingBuild {
       out.push_back({Severity::Warning,
                      code,
                      {where, 0, 0},
-                     std::to_string(n) + " " + what + " (first: " + first + "): " + outcome,
+                     std::string(what) + " (" + std::to_string(n) + "): " + first +
+                         (n > 1 ? " and " + std::to_string(n - 1) + " more" : "") + "; " + outcome,
                      ""});
     };
     const std::string local = cache_.dir().string();
-    warn(s.cacheMismatch, "W-CACHE-MISMATCH", local, "local cache entries held another unit's entry",
+    warn(s.cacheMismatch, "W-CACHE-MISMATCH", local, "local cache entries holding another unit's entry",
          firstLocalMismatch_, "evicted and rebuilt");
-    warn(s.cacheUnreadable, "W-CACHE-UNREADABLE", local, "local cache entries were not readable", firstUnreadable_,
+    warn(s.cacheUnreadable, "W-CACHE-UNREADABLE", local, "local cache entries not readable", firstUnreadable_,
          "evicted and rebuilt");
     if (!options_.remote) return out;
     const std::string remote = options_.remote->displayUrl();
-    warn(s.remoteMismatch, "W-CACHE-REMOTE-MISMATCH", remote, "remote blobs held another unit's entry",
+    warn(s.remoteMismatch, "W-CACHE-REMOTE-MISMATCH", remote, "remote blobs holding another unit's entry",
          firstRemoteMismatch_, "ignored, compiled here, never stored in the local cache");
     if (!s.remoteWarning.empty())
       out.push_back({Severity::Warning, "W-CACHE-REMOTE", {remote, 0, 0}, s.remoteWarning, ""});
