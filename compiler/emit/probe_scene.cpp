@@ -79,6 +79,23 @@ double probeSceneRadianceBound(const ProbeScene& scene) {
 
 std::vector<std::string> probeSceneGlobals(const ProbeScene& scene) {
   std::vector<std::string> g;
+  if (scene.fullFrame || scene.has("spot") || scene.has("tube")) {
+    // The frame's tangent and the spot and tube axes turn by an input angle, and the reference
+    // reads that angle exactly (probe_scene_reference.cpp). GLSL sin and cos are bounded by the
+    // Vulkan spec only to 2^-11 absolute ("Precision of GLSL.std.450 Instructions"); SwiftShader
+    // errs by 1.9e-4 (docs/devices.md), which moved a narrow spot cone's edge by far more than
+    // any brick's tolerance. So the probe evaluates them with + and * alone, which the spec
+    // rounds correctly: Taylor series about pi/2 (pi/2 split in two floats, Cody and Waite),
+    // truncated below 7e-10 on [0, pi]; ~2e-7 absolute after rounding.
+    g.push_back("void mb_probe_sincos(float a, out float s, out float c) {");
+    g.push_back("    float x = (a - 1.57079637) + 4.37113900e-8;  // a - pi/2");
+    g.push_back("    float x2 = x * x;");
+    g.push_back("    s = 1.0 + x2 * (-0.5 + x2 * (4.16666667e-2 + x2 * (-1.38888889e-3 + x2 * (2.48015873e-5 +");
+    g.push_back("        x2 * (-2.75573192e-7 + x2 * (2.08767570e-9 + x2 * -1.14707456e-11))))));  // cos(x)");
+    g.push_back("    c = -x * (1.0 + x2 * (-1.66666667e-1 + x2 * (8.33333333e-3 + x2 * (-1.98412698e-4 +");
+    g.push_back("        x2 * (2.75573192e-6 + x2 * (-2.50521084e-8 + x2 * 1.60590438e-10))))));  // -sin(x)");
+    g.push_back("}");
+  }
   if (scene.environment == "none") return g;
   g.push_back("// The probe's environment fetches: record values shaped by a smooth known function of");
   g.push_back("// the lookup direction and level (mirrored by ref::probeEnvironmentShape).");
@@ -105,7 +122,9 @@ std::vector<std::string> probeSceneFrame(const ProbeScene& scene) {
   s.push_back("mb_orthonormal_basis(f.n, mbT0, mbB0);");
   if (scene.fullFrame) {
     s.push_back("f.ng = normalize(f.n + p_ngTilt * mbB0);");
-    s.push_back("f.t = cos(p_tangentAngle) * mbT0 + sin(p_tangentAngle) * mbB0;");
+    s.push_back("float mbSinT, mbCosT;");
+    s.push_back("mb_probe_sincos(p_tangentAngle, mbSinT, mbCosT);");
+    s.push_back("f.t = mbCosT * mbT0 + mbSinT * mbB0;");
   } else {
     s.push_back("f.ng = f.n;");
     s.push_back("f.t = mbT0;");
@@ -135,7 +154,9 @@ std::vector<std::string> probeSceneShading(const ProbeScene& scene) {
           "p_pointFalloffRadius));");
     } else if (type == "spot") {
       s.push_back("{");
-      s.push_back("    vec3 axis = -cos(p_spotAxisAngle) * lu + sin(p_spotAxisAngle) * lt;");
+      s.push_back("    float sinA, cosA;");
+      s.push_back("    mb_probe_sincos(p_spotAxisAngle, sinA, cosA);");
+      s.push_back("    vec3 axis = -cosA * lu + sinA * lt;");
       s.push_back("    float cosInner = p_spotCosOuter + p_spotInnerFraction * (1.0 - p_spotCosOuter);");
       s.push_back(
           "    r += shadeSpotLight(px, f, SpotLight(lu * p_spotDistance, axis, p_spotIntensity, "
@@ -147,9 +168,9 @@ std::vector<std::string> probeSceneShading(const ProbeScene& scene) {
           "p_sphereDistance, p_sphereIntensity, p_sphereFalloffRadius));");
     } else if (type == "tube") {
       s.push_back("{");
-      s.push_back(
-          "    vec3 axis = normalize(cos(p_tubeAxisAngle) * lt + sin(p_tubeAxisAngle) * lb + "
-          "p_tubeAxisTilt * lu);");
+      s.push_back("    float sinA, cosA;");
+      s.push_back("    mb_probe_sincos(p_tubeAxisAngle, sinA, cosA);");
+      s.push_back("    vec3 axis = normalize(cosA * lt + sinA * lb + p_tubeAxisTilt * lu);");
       s.push_back("    vec3 center = lu * p_tubeDistance;");
       s.push_back("    vec3 halfSegment = axis * (p_tubeHalfLengthFraction * p_tubeDistance);");
       s.push_back(
