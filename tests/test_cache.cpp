@@ -277,6 +277,31 @@ TEST_CASE("two concurrent matbricks processes share a cache directory", "[cache]
   CHECK(requireAllEntriesValid(ShaderCache(test::rootOf(dir) / "cache")) == 2);
 }
 
+TEST_CASE("compile with two entries of its cache directory swapped warns once and writes the right package",
+          "[cache][cli]") {
+  test::ScratchDir dir("cache_cli_swap");
+  const std::string root = test::rootOf(dir).string();
+  const std::string compile = "compile " + (test::sourceDir() / "materials/filament_plastic.json").string() + " " +
+                              (test::sourceDir() / "materials/ue4_metal.json").string() + " -q --cache-dir " + root +
+                              "/cache -o ";
+  REQUIRE(test::runCli(compile + root + "/p1").exitCode == 0);
+  std::vector<fs::path> entries;
+  for (const auto& e : fs::recursive_directory_iterator(root + "/cache"))
+    if (e.is_regular_file()) entries.push_back(e.path());
+  REQUIRE(entries.size() == 2);
+  const std::string a = test::readFile(entries[0]), b = test::readFile(entries[1]);
+  { std::ofstream(entries[0], std::ios::binary | std::ios::trunc) << b; }
+  { std::ofstream(entries[1], std::ios::binary | std::ios::trunc) << a; }
+  auto r = test::runCli(compile + root + "/p2");
+  INFO(r.output);
+  CHECK(r.exitCode == 0);
+  size_t warnings = 0;
+  for (size_t at = 0; (at = r.output.find("warning[W-CACHE-MISMATCH]", at)) != std::string::npos; ++at) ++warnings;
+  CHECK(warnings == 1);
+  CHECK(test::readFile(root + "/p1/manifest.json") == test::readFile(root + "/p2/manifest.json"));
+  CHECK(requireAllEntriesValid(ShaderCache(root + "/cache")) == 2);
+}
+
 TEST_CASE("the cache key changes with a brick source, an option or the target list", "[cache]") {
   test::ScratchDir root("cache_key_lib");
   fs::copy(test::sourceDir() / "shaderlib", test::rootOf(root), fs::copy_options::recursive);

@@ -236,6 +236,8 @@ TEST_CASE("compile --cache-url: usage errors exit 2; a dead server warns once an
   CHECK(test::runCli("compile " + mat + " --cache-url http://x --no-cache -o " + root + "/p").exitCode == 2);
   CHECK(test::runCli("compile " + mat + " --cache-url http://x --cache-url-layout nested -o " + root + "/p").exitCode ==
         2);
+  CHECK(test::runCli("compile " + mat + " --cache-url http://x --cache-verify 1.5 -o " + root + "/p").exitCode == 2);
+  CHECK(test::runCli("compile " + mat + " --no-cache --cache-verify 0.5 -o " + root + "/p").exitCode == 2);
   CHECK(!fs::exists(root + "/p"));
 
   auto down = test::runCli("compile " + mat + " --no-cache -o " + root + "/p");  // reference

@@ -10,6 +10,7 @@
 #include <mutex>
 
 #include "core/diagnostics.hpp"
+#include "core/input_file.hpp"
 
 namespace mb {
 
@@ -26,9 +27,10 @@ using Response = RemoteCache::Response;
 
 constexpr char kBlobMagic[8] = {'M', 'B', 'R', 'E', 'M', 'O', 'T', '1'};
 constexpr size_t kKeyDigits = 32;
-// Far above any entry (the largest shipped permutation with every target is ~1 MB): a server
-// that streams more is not serving one of our blobs.
-constexpr size_t kMaxBlobBytes = size_t(256) << 20;
+// A blob is the magic, the key and one cache entry, which is never larger than a local one
+// may be (core/input_file.hpp; the largest shipped permutation with every target is ~1 MB):
+// a server that streams more is not serving one of our blobs.
+constexpr size_t kMaxBlobBytes = sizeof kBlobMagic + kKeyDigits + input_kind::kCacheEntry.maxBytes;
 
 [[noreturn]] void badUrl(const std::string& url, const std::string& what) {
   throw DiagnosticError({{Severity::Error,
