@@ -22,8 +22,7 @@ class JsonDocument {
   // is built: a kind whose real files are small (a material) bounds its tree, which costs up
   // to ~100 bytes per value. The document keeps the text (for positions); pass it by move to
   // keep a single copy.
-  static JsonDocument parse(std::string text, const std::string& file, int maxDepth = 256,
-                            size_t maxValues = SIZE_MAX);
+  static JsonDocument parse(std::string text, const std::string& file, int maxDepth = 256, size_t maxValues = SIZE_MAX);
   // Reads (core/input_file.hpp: regular files only, at most the kind's limit) and parses a
   // file. A file that cannot be read throws DiagnosticError (E-FILE-NOT-FOUND,
   // E-FILE-NOT-REGULAR, E-FILE-TOO-LARGE).
