@@ -4,12 +4,13 @@
 // WORKDIR (nothing large is kept in git), runs the real CLI on each as a child process and
 // reads the child's peak RSS from wait4(2).
 //
-//   mb_bench_input_memory MATBRICKS WORKDIR [EVAL_ROWS=1000000,10000000]
+//   mb_bench_input_memory MATBRICKS WORKDIR [EVAL_ROWS=1000000,10000000]   ("" runs no large eval)
 //
 // Inputs: a material JSON just under its 16 MiB limit in three shapes (one long description;
-// an array of small numbers; small objects), a ~40 MB glTF in three shapes (a buffer as a
-// data: URI; a scene graph of nodes with matrices; a .glb with a BIN chunk), and eval CSVs of
-// the given row counts. Each is compared with the same command on a small input (the
+// an array of small numbers; small objects: the last two over a material's value limit), a
+// ~40 MB glTF in four shapes (a buffer as a data: URI; a scene graph of nodes with matrices;
+// nodes that are tiny objects, the worst case of a JSON tree; a .glb with a BIN chunk), and
+// eval CSVs of the given row counts. Each is compared with the same command on a small input (the
 // baseline: the process, the library, the compiler or the Vulkan device). Prints one JSON
 // object per run. This process writes the inputs in small blocks and holds nothing large: a
 // forked child's ru_maxrss includes its parent's at the fork.
@@ -106,6 +107,10 @@ uint64_t writeGltf(const fs::path& file, const std::string& shape, uint64_t byte
                  "1.0]}";
         },
         ",\n    ", "]\n}\n", bytes);
+  if (shape == "tiny_nodes")  // the worst shape for a JSON tree: one small object per ~20 bytes
+    return writeBulk(
+        file, head + ",\n  \"nodes\": [", [](uint64_t i) { return "{\"name\": \"n" + std::to_string(i) + "\"}"; }, ", ",
+        "]\n}\n", bytes);
   // .glb: the JSON chunk declares the BIN chunk as buffer 0 (glTF 2.0, "GLB-stored Buffer").
   const uint32_t binLength = static_cast<uint32_t>((bytes - 1024) / 4 * 4);
   std::string json =
@@ -184,17 +189,16 @@ int main(int argc, char** argv) {
   const std::vector<std::string> evalRows = splitList(argc > 3 ? argv[3] : "1000000,10000000");
   fs::remove_all(work);
   fs::create_directories(work);
-  const std::string cache = (work / "cache").string();
+  // --no-cache: every run compiles its one permutation, the baseline as well (a cache hit for
+  // one and a miss for the other would differ by the compiler's ~30 MB, not by the input).
   auto compile = [&](const fs::path& input) {
     fs::remove_all(work / "pkg");
-    return std::vector<std::string>{cli,           "compile", "-q", input.string(),
-                                    "--cache-dir", cache,     "-o", (work / "pkg").string()};
+    return std::vector<std::string>{cli, "compile", "-q", input.string(), "--no-cache", "-o", (work / "pkg").string()};
   };
 
   // Materials: the baseline is the smallest valid material of the same shape.
   const fs::path small = work / "small.json";
   std::ofstream(small, std::ios::binary) << kMaterialHead << "  \"description\": \"small\"\n}\n";
-  runChild(compile(small), work / "log.txt");  // fills the compile cache: every run below hits it
   const Run materialBase = runChild(compile(small), work / "log.txt");
   report("material small", compile(small), fs::file_size(small), materialBase, materialBase);
   for (const char* shape : {"description", "numbers", "objects"}) {
@@ -207,10 +211,9 @@ int main(int argc, char** argv) {
 
   const fs::path smallGltf = work / "small.gltf";
   writeGltf(smallGltf, "small", 0);
-  runChild(compile(smallGltf), work / "log.txt");
   const Run gltfBase = runChild(compile(smallGltf), work / "log.txt");
   report("gltf small", compile(smallGltf), fs::file_size(smallGltf), gltfBase, gltfBase);
-  for (const char* shape : {"data_uri", "nodes", "glb"}) {
+  for (const char* shape : {"data_uri", "nodes", "tiny_nodes", "glb"}) {
     const fs::path file = work / (std::string("big_") + shape + (std::string(shape) == "glb" ? ".glb" : ".gltf"));
     const uint64_t bytes = writeGltf(file, shape, kGltfBytes);
     report(std::string("gltf ") + shape, compile(file), bytes, runChild(compile(file), work / "log.txt"), gltfBase);

@@ -216,9 +216,11 @@ size_t tokenStart(const std::string& text, size_t last) {
 
 // PositionScanner recurses once per nesting level, so a hostile file of a million '[' would
 // overflow the stack: every JSON input (library, material, glTF) is refused beyond
-// `maxDepth` before anything recursive runs.
-static void checkNestingDepth(const std::string& text, const std::string& file, int maxDepth) {
+// `maxDepth` before anything recursive runs. Values are counted as their separators and
+// openers (',' and '[' '{' outside strings: at least one per value but the first).
+static void checkStructure(const std::string& text, const std::string& file, int maxDepth, size_t maxValues) {
   int depth = 0;
+  size_t values = 1;
   bool inString = false;
   for (size_t i = 0; i < text.size(); ++i) {
     char c = text[i];
@@ -236,11 +238,17 @@ static void checkNestingDepth(const std::string& text, const std::string& file, 
     } else if (c == ']' || c == '}') {
       --depth;
     }
+    if (!inString && (c == ',' || c == '[' || c == '{') && ++values > maxValues)
+      throw DiagnosticError({{Severity::Error, "E-FILE-TOO-LARGE", locationOfOffset(text, i, file),
+                              "more than " + std::to_string(maxValues) +
+                                  " JSON values: no file of this kind holds that many (its tree would take "
+                                  "~100 bytes of memory per value)",
+                              ""}});
   }
 }
 
-JsonDocument JsonDocument::parse(std::string text, const std::string& file, int maxDepth) {
-  checkNestingDepth(text, file, maxDepth);
+JsonDocument JsonDocument::parse(std::string text, const std::string& file, int maxDepth, size_t maxValues) {
+  checkStructure(text, file, maxDepth, maxValues);
   JsonDocument doc;
   doc.file_ = file;
   try {

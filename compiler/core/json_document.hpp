@@ -18,9 +18,11 @@ class JsonDocument {
  public:
   // Parses `text` (read from `file`). Syntax errors, and nesting deeper than `maxDepth`, throw
   // DiagnosticError (code E-JSON-SYNTAX). Real files stay far below the default (a glTF
-  // scene ~10 levels). The document keeps the text (for positions); pass it by move to keep
-  // a single copy.
-  static JsonDocument parse(std::string text, const std::string& file, int maxDepth = 256);
+  // scene ~10 levels). More than `maxValues` values is E-FILE-TOO-LARGE, found before the tree
+  // is built: a kind whose real files are small (a material) bounds its tree, which costs up
+  // to ~100 bytes per value. The document keeps the text (for positions); pass it by move to
+  // keep a single copy.
+  static JsonDocument parse(std::string text, const std::string& file, int maxDepth = 256, size_t maxValues = SIZE_MAX);
   // Reads (core/input_file.hpp: regular files only, at most the kind's limit) and parses a
   // file. A file that cannot be read throws DiagnosticError (E-FILE-NOT-FOUND,
   // E-FILE-NOT-REGULAR, E-FILE-TOO-LARGE).

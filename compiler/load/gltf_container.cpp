@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <climits>
+#include <set>
+#include <string_view>
 #include <cstdio>
 
 namespace mb {
@@ -107,6 +109,58 @@ std::string magicText(ByteSource& bytes) {
   return out;
 }
 
+size_t skipSpace(const std::string& t, size_t i) {
+  while (i < t.size() && (t[i] == ' ' || t[i] == '\t' || t[i] == '\n' || t[i] == '\r')) ++i;
+  return i;
+}
+
+// From the start of a value of valid JSON to just past it.
+size_t skipValue(const std::string& t, size_t i) {
+  int depth = 0;
+  do {
+    const char c = t[i];
+    if (c == '"') {
+      for (++i; i < t.size() && t[i] != '"';) i += t[i] == '\\' ? 2 : 1;
+      ++i;
+    } else if (c == '{' || c == '[') {
+      ++depth, ++i;
+    } else if (c == '}' || c == ']') {
+      --depth, ++i;
+    } else if (depth == 0) {
+      while (i < t.size() && std::string_view(",]} \t\r\n").find(t[i]) == std::string_view::npos) ++i;
+    } else {
+      ++i;
+    }
+  } while (depth > 0 && i < t.size());
+  return i;
+}
+
+// Overwrites the value of every top-level member that material import does not read with a
+// `0` and spaces, keeping its newlines: that value never enters the tree, and every other
+// value keeps its line and column. Only valid JSON is touched (nlohmann's accept builds no
+// tree); invalid JSON is left for the parse to report where it is wrong.
+void blankUnreadMembers(std::string& text) {
+  static const std::set<std::string> kRead = {"asset",          "buffers", "extensions", "extensionsRequired",
+                                              "extensionsUsed", "images",  "materials",  "samplers",
+                                              "textures"};
+  if (!nlohmann::json::accept(text)) return;
+  size_t i = skipSpace(text, 0);
+  if (i >= text.size() || text[i] != '{') return;
+  for (i = skipSpace(text, i + 1); i < text.size() && text[i] == '"';) {
+    const size_t keyEnd = skipValue(text, i);
+    const std::string key = text.substr(i + 1, keyEnd - i - 2);         // an escaped key is never one we read
+    const size_t value = skipSpace(text, skipSpace(text, keyEnd) + 1);  // past ':'
+    const size_t end = skipValue(text, value);
+    if (!kRead.count(key)) {
+      text[value] = '0';
+      for (size_t k = value + 1; k < end; ++k)
+        if (text[k] != '\n') text[k] = ' ';
+    }
+    i = skipSpace(text, end);
+    if (i < text.size() && text[i] == ',') i = skipSpace(text, i + 1);
+  }
+}
+
 std::string jsonChunkOf(ByteSource& bytes, const std::string& file, GltfContainerInfo& info) {
   info.glb = true;
   const uint64_t size = bytes.size();
@@ -175,14 +229,20 @@ JsonDocument parseGltfJson(const std::string& bytes, const std::string& file) {
   return parseGltfJson(bytes, file, info);
 }
 
-JsonDocument loadGltfJson(const std::string& path, GltfContainerInfo& info) {
+namespace {
+
+JsonDocument loadGltf(const std::string& path, GltfContainerInfo& info, bool onlyMaterialMembers) {
   // Opened with the .glb container's limit (only its JSON chunk is ever read); JSON text is
   // held to kGltf's.
   InputFileError error;
   std::optional<InputFile> in = InputFile::open(path, input_kind::kGlb, error);
   if (!in) throw DiagnosticError({{Severity::Error, error.code, {path, 0, 0}, error.message}});
   FileSource source(*in, path);
-  if (readsAsGlb(source, path)) return JsonDocument::parse(jsonChunkOf(source, path, info), path);
+  auto parse = [&](std::string text) {
+    if (onlyMaterialMembers) blankUnreadMembers(text);
+    return JsonDocument::parse(std::move(text), path);
+  };
+  if (readsAsGlb(source, path)) return parse(jsonChunkOf(source, path, info));
   const uint64_t size = in->size();
   if (size > kMaxGltfJsonBytes) {
     throw DiagnosticError({{Severity::Error,
@@ -192,7 +252,15 @@ JsonDocument loadGltfJson(const std::string& path, GltfContainerInfo& info) {
                                 std::to_string(kMaxGltfJsonBytes) + " bytes of JSON",
                             ""}});
   }
-  return JsonDocument::parse(source.read(0, size), path);
+  return parse(source.read(0, size));
+}
+
+}  // namespace
+
+JsonDocument loadGltfJson(const std::string& path, GltfContainerInfo& info) { return loadGltf(path, info, false); }
+
+JsonDocument loadGltfMaterialJson(const std::string& path, GltfContainerInfo& info) {
+  return loadGltf(path, info, true);
 }
 
 JsonDocument loadGltfJson(const std::string& path) {

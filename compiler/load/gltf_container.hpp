@@ -26,6 +26,11 @@ struct GltfContainerInfo {
   int64_t binChunkLength = -1;
 };
 JsonDocument loadGltfJson(const std::string& path, GltfContainerInfo& info);
+// The same for material import, which reads only the top-level members asset, buffers,
+// extensions, extensionsRequired, extensionsUsed, images, materials, samplers and textures: the
+// values of all others (nodes, meshes, accessors, animations: most of a large glTF's JSON) are
+// checked as JSON but never enter the tree. Positions are those of the file.
+JsonDocument loadGltfMaterialJson(const std::string& path, GltfContainerInfo& info);
 JsonDocument parseGltfJson(const std::string& bytes, const std::string& file, GltfContainerInfo& info);
 
 // Builds a .glb: header, JSON chunk (padded with spaces) and, if `bin` is not empty, a BIN

@@ -34,7 +34,8 @@ bool hasScheme(const std::string& uri) {
 std::vector<std::string> gltfExternalFiles(const std::string& gltfPath) {
   std::vector<std::string> files;
   try {
-    const JsonDocument doc = loadGltfJson(gltfPath);
+    GltfContainerInfo info;
+    const JsonDocument doc = loadGltfMaterialJson(gltfPath, info);
     const std::filesystem::path dir = std::filesystem::path(gltfPath).parent_path();
     for (const char* array : {"buffers", "images"}) {
       const auto it = doc.root().find(array);

@@ -192,7 +192,7 @@ std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc, const GltfCon
 
 std::vector<GltfMaterial> readGltf(const std::string& path) {
   GltfContainerInfo info;
-  JsonDocument doc = loadGltfJson(path, info);
+  JsonDocument doc = loadGltfMaterialJson(path, info);
   return mapGltfDocument(doc, &info);
 }
 

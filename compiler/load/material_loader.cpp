@@ -21,6 +21,9 @@ namespace {
 // A material is at most 4 levels deep: anything past 64 is refused by JsonDocument::parse
 // before its recursive position scanner runs.
 constexpr int kMaxMaterialJsonDepth = 64;
+// A material has tens of values (a few hundred with many parameters); 16 MiB of tiny ones
+// would build a tree of ~10 bytes per input byte for nothing (docs/formats.md "Input files").
+constexpr size_t kMaxMaterialJsonValues = 100'000;
 
 class JsonMaterialReader {
  public:
@@ -189,7 +192,7 @@ class JsonMaterialReader {
 }  // namespace
 
 MaterialDesc parseMaterialJson(std::string text, const std::string& file, const ShaderLibrary& lib) {
-  JsonDocument doc = JsonDocument::parse(std::move(text), file, kMaxMaterialJsonDepth);
+  JsonDocument doc = JsonDocument::parse(std::move(text), file, kMaxMaterialJsonDepth, kMaxMaterialJsonValues);
   DiagnosticSink sink;
   return finishMaterial(JsonMaterialReader(doc, lib, sink).run(), lib, sink);
 }

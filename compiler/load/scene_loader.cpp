@@ -37,6 +37,9 @@ using nlohmann::json;
 
 // A scene is a handful of levels deep; anything deeper is refused before the position scan.
 constexpr int kMaxSceneJsonDepth = 64;
+// A scene's values grow with its materials and their uses: a million is far beyond any real
+// scene and bounds its tree (docs/formats.md "Input files").
+constexpr size_t kMaxSceneJsonValues = 1'000'000;
 
 bool isGltf(const std::string& path) {
   std::string ext = lowerExtension(path);
@@ -257,7 +260,7 @@ std::vector<std::string> SceneDesc::lightTypes() const {
 }
 
 SceneDesc parseSceneJson(std::string text, const std::string& file, const ShaderLibrary& lib) {
-  JsonDocument doc = JsonDocument::parse(std::move(text), file, kMaxSceneJsonDepth);
+  JsonDocument doc = JsonDocument::parse(std::move(text), file, kMaxSceneJsonDepth, kMaxSceneJsonValues);
   DiagnosticSink sink;
   SceneJsonReader reader(doc, lib, sink);
   SceneDesc scene = reader.run();
