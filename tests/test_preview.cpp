@@ -1,8 +1,9 @@
 // matbricks preview (docs/preview.md): every shipped material under both environments
 // rendered through its fragment shader on lavapipe matches the reference render within the
 // permutation's tolerance at every pixel; the graphics path covers the sphere it should; a
-// sweep draws distinct spheres; a wrong reference is caught; the command line's bad inputs
-// fail cleanly and its PNGs decode.
+// sweep draws distinct spheres; a wrong reference is caught; a CPU double of fixed-point
+// sampling hardware is covered by the sampling share and fails without it; the command line's
+// bad inputs fail cleanly and its PNGs decode.
 #include <catch2/catch.hpp>
 
 #include <cmath>
