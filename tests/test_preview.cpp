@@ -1,11 +1,13 @@
 // matbricks preview (docs/preview.md): every shipped material under both environments
 // rendered through its fragment shader on lavapipe matches the reference render within the
 // permutation's tolerance at every pixel; the graphics path covers the sphere it should; a
-// sweep draws distinct spheres; a wrong reference is caught; the command line's bad inputs
-// fail cleanly and its PNGs decode.
+// sweep draws distinct spheres; a wrong reference is caught; a CPU double of fixed-point
+// sampling hardware is covered by the sampling share and fails without it; the command line's
+// bad inputs fail cleanly and its PNGs decode.
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -232,22 +234,55 @@ double overSamplingBound(const preview::PreviewResult& r) {
 }  // namespace
 
 TEST_CASE("a fixed-point sampler's image lies within the derived sampling bound", "[preview][vulkan][sampling]") {
-  const preview::WeightQuantizer devices[] = {{{4, 4}, preview::WeightRounding::Truncate},
-                                              {{4, 4}, preview::WeightRounding::Nearest},
-                                              {{8, 8}, preview::WeightRounding::Truncate},
-                                              {{8, 8}, preview::WeightRounding::Nearest}};
-  const auto files = test::exampleMaterialFiles();
+  using preview::WeightRounding;
+  // Every shipped material under both environments with 4-bit truncated weights (the spec's
+  // least precise sampler, the largest changes); the other roundings and 8 bits on the
+  // materials with the largest shares (a mirror-like metal, cloth at the cube seams).
+  const preview::WeightQuantizer worst{{4, 4}, WeightRounding::Truncate};
+  const preview::WeightQuantizer others[] = {
+      {{4, 4}, WeightRounding::Nearest}, {{8, 8}, WeightRounding::Truncate}, {{8, 8}, WeightRounding::Nearest}};
   for (const std::string env : {"studio", "sky"})
-    for (const auto& file : files) {
+    for (const auto& file : test::exampleMaterialFiles()) {
       const MaterialDesc m = loadMaterialJson(file, test::shippedLibrary());
+      std::vector<preview::WeightQuantizer> devices{worst};
+      if (m.name == "ue4_metal" || m.name == "velvet_green") devices.insert(devices.end(), others, others + 3);
       for (const auto& d : devices) {
         const preview::PreviewResult r = fixedPointPreview(m, env, d);
+        const double attained = overSamplingBound(r);
         INFO(m.name << " under " << env << " with " << d.bits.subTexelBits << "-bit "
-                    << (d.rounding == preview::WeightRounding::Truncate ? "truncated" : "rounded")
+                    << (d.rounding == WeightRounding::Truncate ? "truncated" : "rounded")
                     << " weights: max error/tolerance " << r.maxErrorRatio << ", " << r.failures
-                    << " pixels outside; over the sampling bound alone " << overSamplingBound(r));
+                    << " pixels outside; largest change over the sampling share " << attained);
         CHECK(r.passed());
-        CHECK(overSamplingBound(r) <= 1.0);
+        CHECK(attained <= 1.0);
+        // Tight: truncation to 4 bits comes within a factor 2 of the share somewhere
+        // (measured 0.70-0.96 of it at 56x56 with a 32x32 cube).
+        if (d.rounding == WeightRounding::Truncate && d.bits.subTexelBits == 4) CHECK(attained >= 0.5);
       }
+    }
+}
+
+TEST_CASE("without its sampling share the fixed-point sampler's image fails", "[preview][vulkan][sampling]") {
+  // The control: the same 4-bit device judged with a share for 30 bits (none, in effect) is
+  // outside the arithmetic tolerance, as the shipped materials were on an H100 (8 bits).
+  const preview::PreviewResult r =
+      fixedPointPreview(test::shippedMaterial("ue4_metal"), "studio", {{4, 4}, preview::WeightRounding::Truncate},
+                        harness::SamplerPrecision{30, 30});
+  CHECK(r.failures > 0);
+  CHECK_FALSE(r.passed());
+}
+
+TEST_CASE("sampling share per material and environment (docs/preview.md)", "[.sampling-table]") {
+  // Prints the table of docs/preview.md: the share at 8 and 8 bits (an H100's limits) beside
+  // the arithmetic tolerance, and how much of it a 4-bit truncating sampler uses.
+  for (const std::string env : {"studio", "sky"})
+    for (const auto& file : test::exampleMaterialFiles()) {
+      const MaterialDesc m = loadMaterialJson(file, test::shippedLibrary());
+      preview::PreviewOptions o = smallOptions();
+      o.samplerLimits = harness::SamplerPrecision{8, 8};
+      const preview::PreviewResult r = preview::renderPreview(device(), test::shippedLibrary(), m, o, environment(env));
+      const double attained = overSamplingBound(fixedPointPreview(m, env, {{4, 4}, preview::WeightRounding::Truncate}));
+      std::printf("| %s | %s | %.3g | %.3g | %.3g | %.3g | %.2f |\n", m.name.c_str(), env.c_str(), r.tolerance.abs,
+                  r.samplingMax, r.samplingOverArithmeticMax, r.samplingOverArithmeticMean, attained);
     }
 }

@@ -166,7 +166,9 @@ TEST_CASE("a cube fetch's bound is 0 on a constant cube and follows the texels o
     const double lod = k % 2 ? 0.0 : u(rng);
     const FilteredRgb f = flat.sampleFiltered(dir, lod, eight);
     for (int c = 0; c < 3; ++c) {
-      CHECK(f.bound[c] == 0.0);
+      // 0 within a level; the mip blend adds 2^-m times the double rounding of the two levels'
+      // values.
+      CHECK(f.bound[c] <= 1e-15 * (2.0 + c));
       CHECK(std::abs(f.value[c] - (2.0 + c)) < 1e-6);
     }
     // Away from the corners (where the spec leaves the missing texel's method open), level 0

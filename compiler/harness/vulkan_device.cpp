@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cstring>
 
+#include "harness/sampler_precision.hpp"
 #include "harness/vulkan_check.hpp"
 #include "harness/vulkan_internal.hpp"
 
@@ -183,10 +184,9 @@ bool offersShaderFloat16(VkPhysicalDevice device) {
 
 bool isLavapipeName(const std::string& name) { return containsNoCase(name, "llvmpipe"); }
 
-// Taken as reported, even below the spec's minimum of 4: the bound derived from them
-// (preview/texel_filter.hpp) only widens as they shrink, down to 0 bits (any weight in [0, 1]).
-SamplerPrecision deviceSamplerPrecision(const DeviceContext& ctx) {
-  return {ctx.props.limits.subTexelPrecisionBits, ctx.props.limits.mipmapPrecisionBits};
+SamplerPrecision samplerPrecision(const VulkanHarness& gpu) {
+  const VkPhysicalDeviceLimits& limits = gpu.context()->props.limits;
+  return {limits.subTexelPrecisionBits, limits.mipmapPrecisionBits};
 }
 
 void createInstance(DeviceContext& ctx, bool validation) {

@@ -220,8 +220,6 @@ uint64_t VulkanHarness::maxStorageBufferRange() const { return impl_->ctx->props
 
 bool VulkanHarness::supportsShaderFloat16() const { return impl_->ctx->shaderFloat16; }
 
-SamplerPrecision VulkanHarness::samplerPrecision() const { return deviceSamplerPrecision(*impl_->ctx); }
-
 std::shared_ptr<DeviceContext> VulkanHarness::context() const { return impl_->ctx; }
 
 std::shared_ptr<Kernel> VulkanHarness::createKernel(const std::vector<uint32_t>& spirv, uint32_t sampledTextures) {

@@ -54,16 +54,6 @@ struct RunResult {
   bool gpuTimestamps = true;
 };
 
-// How finely the device's sampler resolves linear filtering (VkPhysicalDeviceLimits, Vulkan
-// spec "Limits"): the weights of linear filtering within a level keep `subTexelBits` fraction
-// bits ("Texel Linear Filtering": "the number of fraction bits retained is specified by
-// subTexelPrecisionBits"), and the fraction between two mip levels keeps `mipmapBits` ("Image
-// Level(s) Selection": "quantized to the number of mipmap precision bits"). The spec requires
-// at least 4 of each; lavapipe reports 8 but filters in fp32, an NVIDIA H100 reports 8.
-struct SamplerPrecision {
-  uint32_t subTexelBits = 4, mipmapBits = 4;
-};
-
 class Kernel;
 class GpuTexture;  // harness/gpu_texture.hpp
 struct DeviceContext;
@@ -83,8 +73,6 @@ class VulkanHarness {
   // True when the device runs half arithmetic in shaders (shaderFloat16 of
   // VK_KHR_shader_float16_int8); the harness enables the feature whenever it is offered.
   bool supportsShaderFloat16() const;
-  // subTexelPrecisionBits and mipmapPrecisionBits as the device reports them.
-  SamplerPrecision samplerPrecision() const;
 
   // Creates the compute pipeline for a kernel following the contract above. With
   // `sampledTextures` > 0 the kernel also declares that many combined image samplers at

@@ -152,8 +152,6 @@ struct RunResources {
 
 // --- vulkan_device.cpp ------------------------------------------------------------------
 bool isLavapipeName(const std::string& name);
-// The chosen device's subTexelPrecisionBits and mipmapPrecisionBits (ctx.props.limits).
-SamplerPrecision deviceSamplerPrecision(const DeviceContext& ctx);
 void createInstance(DeviceContext& ctx, bool validation);
 void createDevice(DeviceContext& ctx, const DeviceOptions& options);
 

@@ -364,7 +364,7 @@ PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& li
   scene.lights = lights;
   scene.environment = &env.maps;
   scene.dfg = &env.dfg;
-  scene.samplerLimits = r.samplerPrecision = o.samplerLimits.value_or(gpu.samplerPrecision());
+  scene.samplerLimits = r.samplerPrecision = o.samplerLimits.value_or(harness::samplerPrecision(gpu));
   scene.tile = o.size;
   scene.sphereInputs = sphereModelInputs(gpu, lib, perm, spheres);
   for (auto& inputs : scene.sphereInputs)

@@ -38,16 +38,18 @@ namespace {
 // One texture fetch of the reference: sampled (and recorded) or, replaying, the recorded one
 // with the moved component shifted by its bound.
 template <class Sample>
-Vec3 fetched(FetchLog* log, const Sample& sample) {
+Vec3 fetched(FetchLog* log, bool perChannel, const Sample& sample) {
   if (log && log->replay) {
     if (log->next >= log->fetches.size()) throw std::logic_error("a replayed reference fetched more than it recorded");
     const size_t k = log->next++;
     FilteredRgb f = log->fetches[k];
-    if (k == log->moved) f.value[log->component] += f.bound[log->component];
+    if (k == log->moved)
+      for (int c = 0; c < 3; ++c)
+        if (log->component == 3 || log->component == c) f.value[c] += f.bound[c];
     return {f.value[0], f.value[1], f.value[2]};
   }
   const FilteredRgb f = sample();
-  if (log) log->fetches.push_back(f);
+  if (log) log->fetches.push_back(f), log->perChannel.push_back(perChannel);
   return {f.value[0], f.value[1], f.value[2]};
 }
 
@@ -69,13 +71,13 @@ ref::ModelEvalInput referenceWorkspace(const ReferenceScene& scene, size_t spher
   if (env.ibl()) {
     const EnvironmentMaps* maps = scene.environment;
     env.fetchPrefiltered = [maps, filter, log](const Vec3& r, double lod) {
-      return fetched(log, [&] { return maps->sampleFiltered({r.x, r.y, r.z}, lod, filter); });
+      return fetched(log, true, [&] { return maps->sampleFiltered({r.x, r.y, r.z}, lod, filter); });
     };
   }
   if (env.mode == "ibl_lut") {
     const lut::LutTable* table = scene.dfg;
     env.fetchDfg = [table, filter, log](double NoV, double perceptualRoughness) {
-      return fetched(log, [&] { return sampleDfgLut(*table, NoV, perceptualRoughness, filter); });
+      return fetched(log, false, [&] { return sampleDfgLut(*table, NoV, perceptualRoughness, filter); });
     };
   }
   e.env = std::move(env);
@@ -134,8 +136,9 @@ std::array<double, 3> samplingShare(const ReferenceScene& scene, const PixelAttr
   std::array<double, 3> share{0, 0, 0};
   log.replay = true;
   for (size_t k = 0; k < log.fetches.size(); ++k)
-    for (int c = 0; c < 3; ++c) {
-      if (log.fetches[k].bound[c] == 0.0) continue;  // equal texels: every device returns the same
+    for (int c = log.perChannel[k] ? 3 : 0; c < (log.perChannel[k] ? 4 : 3); ++c) {
+      const Rgb& b = log.fetches[k].bound;
+      if (c < 3 ? b[c] == 0.0 : b == Rgb{0, 0, 0}) continue;  // equal texels: every device returns the same
       log.next = 0, log.moved = k, log.component = c;
       const Vec3 moved = referencePixel(scene, a, x, y, work);
       const double d[3] = {std::abs(moved.x - reference.x), std::abs(moved.y - reference.y),
@@ -165,7 +168,7 @@ std::vector<double> referenceImage(const ReferenceScene& scene, const PixelAttri
         for (uint32_t x = 0; x < a.width; ++x) {
           const size_t pixel = size_t{y} * a.width + x;
           if (a.position[pixel * 4 + 3] != 1.0f) continue;
-          log.fetches.clear();
+          log.fetches.clear(), log.perChannel.clear();
           ref::ModelEvalInput& work = spheres.at(x / scene.tile);
           const Vec3 r = referencePixel(scene, a, x, y, work);
           out[pixel * 3] = r.x;

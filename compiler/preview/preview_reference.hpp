@@ -55,6 +55,10 @@ FilteredRgb sampleDfgLut(const lut::LutTable& table, double u, double v, const T
 // sampling share reaches the pixel (samplingShare).
 struct FetchLog {
   std::vector<FilteredRgb> fetches;
+  // Per fetch: its channels enter only the same channels of the radiance, linearly (the
+  // prefiltered radiance: the specular term is it times a colour), so all three may be moved
+  // at once; otherwise (the DFG texel, whose components mix into every channel) one by one.
+  std::vector<uint8_t> perChannel;
   bool replay = false;
   size_t next = 0;   // replay: the next fetch to return
   size_t moved = 0;  // replay: the fetch whose component `component` is moved
@@ -76,9 +80,10 @@ std::vector<double> referenceImage(const ReferenceScene& scene, const PixelAttri
 // device with the scene's sampler precision, per channel: each fetch enters the radiance
 // through the shading, so each component's sampling bound is carried to the pixel by
 // re-evaluating the shading with that component moved by its bound (the fetches replayed from
-// `log`, which the evaluation that gave `reference` recorded), and the moves are summed. Exact
-// where the radiance is linear in each fetched component (the prefiltered radiance is a factor
-// of the specular term), first order where it is not (the DFG texel's energy compensation).
+// `log`, which the evaluation that gave `reference` recorded; a per-channel fetch's three
+// components at once), and the moves are summed. Exact where the radiance is linear in each
+// fetched component (the prefiltered radiance is a factor of the specular term), first order
+// where it is not (the DFG texel's energy compensation).
 std::array<double, 3> samplingShare(const ReferenceScene& scene, const PixelAttributes& a, uint32_t x, uint32_t y,
                                     const ref::Vec3& reference, ref::ModelEvalInput& work, FetchLog& log);
 

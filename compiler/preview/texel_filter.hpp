@@ -27,7 +27,7 @@
 #include <array>
 #include <cstdint>
 
-#include "harness/vulkan_harness.hpp"
+#include "harness/sampler_precision.hpp"
 
 namespace mb::preview {
 
