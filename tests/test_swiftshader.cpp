@@ -77,7 +77,7 @@ TEST_CASE("SwiftShader: preview of every shipped material under both environment
       const MaterialDesc m = loadMaterialJson(file, test::shippedLibrary());
       const preview::PreviewResult r = preview::renderPreview(gpu, test::shippedLibrary(), m, o, environment);
       INFO(m.name << " under " << env << " on " << gpu.deviceName() << ": max error/tolerance " << r.maxErrorRatio
-                   << ", " << r.failures << " pixels outside, " << r.nonFinite << " non-finite");
+                  << ", " << r.failures << " pixels outside, " << r.nonFinite << " non-finite");
       CHECK(r.coveredPixels > 1000);
       CHECK(r.passed());
     }
