@@ -407,7 +407,7 @@ void PackageWriter::writeFileAtomically(const fs::path& file, const std::string&
   // Never replaces a directory or a device (checkOutputFile); a symlink's target is replaced,
   // not the link.
   checkOutputFile(file);
-  const fs::path target = resolvedOutputFile(file);
+  const fs::path target = fs::absolute(resolvedOutputFile(file));  // its directory is scanned for leftovers
   // The bytes go into a marked temporary directory beside the target and are renamed out of
   // it: a run killed before the rename leaves that directory, which the next write of this
   // file recognises and removes (cleanLeftovers); never a bare temporary file.
