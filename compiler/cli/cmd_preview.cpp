@@ -105,9 +105,9 @@ int runPreview(PreviewArgs& a, const GlobalOptions& g) {
          {std::pair{&a.output, "preview image"}, std::pair{&a.referenceImage, "reference image"},
           std::pair{&a.diffImage, "difference image"}}) {
       if (file->empty()) continue;
+      checkFileOutput(*file, what, inputs);
       if (!endsWithPng(*file))
         previewError("E-PREVIEW-OUTPUT", *file, std::string("the ") + what + " must be a .png file");
-      checkFileOutput(*file, what, inputs);
       inputs.push_back({*file, what});
     }
   } else {

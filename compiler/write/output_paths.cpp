@@ -87,11 +87,11 @@ std::string someEntries(const fs::path& dir) {
   return s;
 }
 
-// "notes.txt (not listed), spirv/ab.spv (changed since matbricks wrote it) and 3 more"
+// "notes.txt not listed, spirv/ab.spv changed since matbricks wrote it and 3 more"
 std::string listed(const std::vector<ForeignEntry>& entries) {
   std::string s;
   const size_t shown = std::min<size_t>(entries.size(), 4);
-  for (size_t i = 0; i < shown; ++i) s += (i ? ", " : "") + entries[i].path + " (" + entries[i].why + ")";
+  for (size_t i = 0; i < shown; ++i) s += (i ? ", " : "") + entries[i].path + " " + entries[i].why;
   if (entries.size() > shown) s += " and " + std::to_string(entries.size() - shown) + " more";
   return s;
 }

@@ -86,13 +86,13 @@ struct Scan {
       if (::fstatat(dirFd, name.c_str(), &st, AT_SYMLINK_NOFOLLOW) != 0) continue;  // gone meanwhile
       if (S_ISDIR(st.st_mode)) {
         if (isMountPoint(dirFd, name, dev, st)) {
-          found.push_back({rel + "/", "a mount point", true});
+          found.push_back({rel + "/", "is a mount point", true});
         } else if (!listedDirs.count(rel)) {
           found.push_back({rel + "/", "not listed"});
         } else {
           Fd sub(::openat(dirFd, name.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
           if (sub.fd < 0)
-            found.push_back({rel + "/", "not readable"});
+            found.push_back({rel + "/", "is not readable"});
           else
             directory(sub.fd, dev, rel + "/");
         }
@@ -100,9 +100,9 @@ struct Scan {
       }
       const auto listed = marker.files.find(rel);
       if (S_ISLNK(st.st_mode))
-        found.push_back({rel, "a symlink"});
+        found.push_back({rel, "is a symlink"});
       else if (!S_ISREG(st.st_mode))
-        found.push_back({rel, "not a regular file"});
+        found.push_back({rel, "is not a regular file"});
       else if (listed == marker.files.end())
         found.push_back({rel, "not listed"});
       else if (static_cast<std::uint64_t>(st.st_size) != listed->second.size ||
@@ -146,7 +146,7 @@ std::vector<ForeignEntry> foreignEntries(const fs::path& dir, const OutputMarker
     for (fs::path p = fs::path(path).parent_path(); !p.empty(); p = p.parent_path()) scan.listedDirs.insert(p.string());
   Fd root(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
   struct stat st {};
-  if (root.fd < 0 || ::fstat(root.fd, &st) != 0) return {{".", "not readable"}};
+  if (root.fd < 0 || ::fstat(root.fd, &st) != 0) return {{".", "is not readable"}};
   scan.directory(root.fd, st.st_dev, "");
   std::stable_partition(scan.found.begin(), scan.found.end(), [](const ForeignEntry& e) { return e.mountPoint; });
   return scan.found;

@@ -15,7 +15,7 @@ namespace mb {
 // One thing in a directory that its marker does not account for.
 struct ForeignEntry {
   std::string path;  // relative to the directory; directories end in '/'
-  std::string why;   // "a mount point", "not listed", "changed since matbricks wrote it", ...
+  std::string why;   // "is a mount point", "not listed", "changed since matbricks wrote it", ...
   bool mountPoint = false;
 };
 
