@@ -54,12 +54,25 @@ bench::BenchOptions resolveScope(const BenchArgs& a, const ShaderLibrary& lib, s
   return o;
 }
 
-// The --markdown file's text, "" when there is none yet (core/input_file.hpp: a FIFO or a
-// device there is a coded error, not a hang).
-std::string readFileIfAny(const std::string& path) {
+// --markdown FILE: nothing when FILE does not exist (it is created, holding the marks);
+// otherwise its text, which must hold both marks in order: only the part between them is
+// matbricks', so a file without them is refused (E-MARKDOWN-NO-MARKS), never replaced whole.
+std::string markedDocument(const std::string& path) {
   std::error_code ec;
-  if (!fs::exists(fs::symlink_status(path, ec))) return "";
-  return readInputFileOrThrow(path, input_kind::kMarkdown);
+  if (!fs::exists(path, ec)) return "";
+  std::string text = readInputFileOrThrow(path, input_kind::kMarkdown);
+  const size_t begin = text.find(bench::kMarkdownBegin);
+  const size_t end = begin == std::string::npos ? std::string::npos : text.find(bench::kMarkdownEnd, begin);
+  if (end == std::string::npos)
+    throw DiagnosticError(
+        {{Severity::Error,
+          "E-MARKDOWN-NO-MARKS",
+          {path, 0, 0},
+          "'" + path + "' exists and lacks the marks '" + bench::kMarkdownBegin + "' ... '" + bench::kMarkdownEnd +
+              "' (in that order): only the text between them is replaced, so a file without them is "
+              "never overwritten; nothing was written",
+          "put the two marks where the tables belong, or name a new file"}});
+  return text;
 }
 
 // Before measuring: every output checked (docs/cli.md "Outputs"); --markdown is read and its
@@ -74,6 +87,7 @@ void refuseUnsafeOutputs(const BenchArgs& a, const ShaderLibrary& lib, const std
   for (const auto& [file, what] : {std::pair{&a.json, "JSON results"}, std::pair{&a.csv, "CSV results"},
                                    std::pair{&a.markdown, "Markdown tables"}})
     if (!file->empty()) checkFileOutput(*file, what, inputs);
+  if (!a.markdown.empty()) markedDocument(a.markdown);
 }
 
 void printTable(const bench::BenchReport& r) {
@@ -126,7 +140,8 @@ int runBench(const BenchArgs& a, const GlobalOptions& g) {
   if (!a.json.empty()) PackageWriter::writeFileAtomically(a.json, json);
   if (!a.csv.empty()) PackageWriter::writeFileAtomically(a.csv, csv);
   if (!a.markdown.empty())
-    PackageWriter::writeFileAtomically(a.markdown, bench::spliceGenerated(readFileIfAny(a.markdown), md));
+    // Read again: the user may have edited it while the bench ran (checked again, too).
+    PackageWriter::writeFileAtomically(a.markdown, bench::spliceGenerated(markedDocument(a.markdown), md));
   // -q: the results are in the files; nothing on stdout.
   if (!a.quiet) printTable(report);
   return reportLayerMessages(*gpu) ? kExitCheckFailed : kExitOk;

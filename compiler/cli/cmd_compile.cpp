@@ -1,6 +1,7 @@
 // matbricks compile: materials (or a scene) -> the required permutations -> built in
 // parallel through the cache, to every target -> a package written atomically
 // (docs/cli.md, docs/scenes.md, docs/targets.md, docs/package.md).
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -60,6 +61,18 @@ void refuseUnsafeOutputs(const CompileArgs& a, const ShaderLibrary& lib, const S
   }
 }
 
+// --header names one file at the package's top level (docs/package.md): a plain name, and not
+// one the package itself writes there, which it would overwrite or collide with.
+void checkHeaderName(const std::string& name, const SourceLocation& at) {
+  checkOutputName(name, "--header", at);
+  std::vector<std::string> taken{"manifest.json", "include", "fragment"};
+  for (const auto& t : allTargets()) taken.push_back(t);
+  if (std::find(taken.begin(), taken.end(), name) != taken.end())
+    throw DiagnosticError({{Severity::Error, "E-OUTPUT-NAME", at,
+                            "--header '" + name + "' is a name the package itself writes at its top level",
+                            "give another file name such as materials.hpp"}});
+}
+
 std::unique_ptr<RemoteCache> openRemoteCache(const CompileArgs& a) {
   std::string url = a.cacheUrl;
   if (url.empty() && !a.noCache)
@@ -104,6 +117,7 @@ void compileArgsFromJson(const nlohmann::json& c, const std::string& file, Compi
     a.headerName = c.at("header").get<std::string>();
     a.cppNamespace = c.at("namespace").get<std::string>();
     g.shaderlib = c.at("shaderlib").get<std::string>();
+    checkHeaderName(a.headerName, {file, 0, 0});
   } catch (const nlohmann::json::exception& e) {
     throw DiagnosticError({{Severity::Error,
                             "E-SHARD-NOT-SHARD",
@@ -133,6 +147,8 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
         {{Severity::Error, "E-INVALID-NAME", {"--namespace", 0, 0}, "'" + a.cppNamespace + "' " + why}});
   if (a.noCache && a.cacheVerify > 0)
     throw CLI::ValidationError("--cache-verify conflicts with --no-cache (there is no remote cache to verify)");
+  // Bad input (exit 3), still before any work: a name option is a name, not a path.
+  checkHeaderName(a.headerName, {"<command line>", 0, 0});
   ShardSpec shard;
   if (!a.shard.empty()) {
     std::string why;

@@ -18,17 +18,13 @@ namespace {
 struct PreviewArgs {
   std::vector<std::string> materials;
   std::string output;
+  std::string referenceImage, diffImage;  // with a .png output: only when named
   std::string environment = "studio";
   preview::PreviewOptions options;
   bool json = false;
 };
 
 bool endsWithPng(const std::string& path) { return path.size() > 4 && path.compare(path.size() - 4, 4, ".png") == 0; }
-
-// "x.png" -> "x.reference.png" / "x.diff.png".
-std::string sibling(const std::string& png, const std::string& suffix) {
-  return png.substr(0, png.size() - 4) + suffix + ".png";
-}
 
 [[noreturn]] void previewError(const std::string& code, const std::string& where, const std::string& message) {
   throw DiagnosticError({{Severity::Error, code, {where, 0, 0}, message, ""}});
@@ -115,10 +111,21 @@ int runPreview(PreviewArgs& a, const GlobalOptions& g) {
       previewError("E-PREVIEW-OUTPUT", a.output,
                    "a .png output takes exactly one material (got " + std::to_string(materials.size()) +
                        "); give a directory to preview several");
-    checkFileOutput(a.output, "preview image", inputs);
-    checkFileOutput(sibling(a.output, ".reference"), "reference image", inputs);
-    checkFileOutput(sibling(a.output, ".diff"), "difference image", inputs);
+    // Each picture goes only where the user named it; none may be another's path.
+    for (const auto& [file, what] :
+         {std::pair{&a.output, "preview image"}, std::pair{&a.referenceImage, "reference image"},
+          std::pair{&a.diffImage, "difference image"}}) {
+      if (file->empty()) continue;
+      checkFileOutput(*file, what, inputs);
+      if (!endsWithPng(*file))
+        previewError("E-PREVIEW-OUTPUT", *file, std::string("the ") + what + " must be a .png file");
+      inputs.push_back({*file, what});
+    }
   } else {
+    if (!a.referenceImage.empty() || !a.diffImage.empty())
+      previewError("E-PREVIEW-OUTPUT", a.referenceImage.empty() ? a.diffImage : a.referenceImage,
+                   "--reference-image and --diff-image go with a .png output; an output directory holds every "
+                   "material's reference and difference pictures");
     checkDirectoryOutput(a.output, inputs);
   }
 
@@ -133,7 +140,7 @@ int runPreview(PreviewArgs& a, const GlobalOptions& g) {
   nlohmann::json out = nlohmann::json::array();
   if (singleFile) {
     const auto& r = results.front();
-    preview::writePreviewImages(r, a.output, sibling(a.output, ".reference"), sibling(a.output, ".diff"));
+    preview::writePreviewImages(r, a.output, a.referenceImage, a.diffImage);
   } else {
     PackageWriter w("preview");
     for (const auto& r : results) {
@@ -176,8 +183,12 @@ Command addPreviewCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("materials", args->materials, kMaterialFilesHelp)->required();
   cmd->add_option("-o,--output", args->output,
                   "Directory (new, empty or matbricks-written) for <material>.png, .reference.png and .diff.png, or "
-                  "one X.png (one material; X.reference.png and X.diff.png beside it)")
+                  "one X.png (one material; the GPU picture only, see --reference-image and --diff-image)")
       ->required();
+  cmd->add_option("--reference-image", args->referenceImage,
+                  "With -o X.png: also write the CPU reference picture to this .png file");
+  cmd->add_option("--diff-image", args->diffImage,
+                  "With -o X.png: also write the difference heatmap to this .png file");
   cmd->add_option("--size", args->options.size, "Pixels per sphere tile edge (default 512, at most 8192)");
   cmd->add_option("--environment", args->environment, "Environment: studio (default) or sky");
   cmd->add_option("--lights", args->options.lights,

@@ -403,8 +403,8 @@ PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& li
 void writePreviewImages(const PreviewResult& r, const std::filesystem::path& gpuPng,
                         const std::filesystem::path& referencePng, const std::filesystem::path& diffPng) {
   writePng(gpuPng, r.gpuImage);
-  writePng(referencePng, r.referenceImage);
-  writePng(diffPng, r.diffImage);
+  if (!referencePng.empty()) writePng(referencePng, r.referenceImage);
+  if (!diffPng.empty()) writePng(diffPng, r.diffImage);
 }
 
 }  // namespace mb::preview

@@ -112,7 +112,8 @@ inline constexpr float kBackground[3] = {0.05f, 0.05f, 0.05f};
 PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const MaterialDesc& material,
                             const PreviewOptions& options, const PreviewEnvironment& environment);
 
-// Writes the three pictures, each atomically.
+// Writes the GPU picture and, where a path is given (the user named it), the reference and
+// difference pictures, each atomically.
 void writePreviewImages(const PreviewResult& r, const std::filesystem::path& gpuPng,
                         const std::filesystem::path& referencePng, const std::filesystem::path& diffPng);
 

@@ -3,12 +3,10 @@
 #include <sys/stat.h>
 
 #include <algorithm>
-#include <fstream>
-#include <nlohmann/json.hpp>
 #include <optional>
-#include <sstream>
 
 #include "core/diagnostics.hpp"
+#include "write/owned_tree.hpp"
 
 namespace mb {
 namespace fs = std::filesystem;
@@ -89,22 +87,16 @@ std::string someEntries(const fs::path& dir) {
   return s;
 }
 
+// "notes.txt not listed, spirv/ab.spv changed since matbricks wrote it and 3 more"
+std::string listed(const std::vector<ForeignEntry>& entries) {
+  std::string s;
+  const size_t shown = std::min<size_t>(entries.size(), 4);
+  for (size_t i = 0; i < shown; ++i) s += (i ? ", " : "") + entries[i].path + " " + entries[i].why;
+  if (entries.size() > shown) s += " and " + std::to_string(entries.size() - shown) + " more";
+  return s;
+}
+
 }  // namespace
-
-std::string outputMarkerText(const std::string& kind) {
-  nlohmann::json j{
-      {"format", "matbricks-output"}, {"version", 1}, {"kind", kind}, {"generator", "matbricks " MB_VERSION}};
-  return j.dump(2) + "\n";
-}
-
-bool carriesOutputMarker(const fs::path& dir) {
-  std::ifstream in(dir / kOutputMarkerName, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream s;
-  s << in.rdbuf();
-  auto j = nlohmann::json::parse(s.str(), nullptr, false);
-  return j.is_object() && j.value("format", "") == "matbricks-output";
-}
 
 void refuseOverlap(const fs::path& output, const std::string& outputWhat, const std::vector<ProtectedPath>& inputs) {
   bool outputExists = false;
@@ -142,12 +134,76 @@ void checkOutputDirectory(const fs::path& dir) {
          "output directory '" + dir.string() + "' exists and is not a directory; nothing was changed",
          "give a new or empty directory, or one matbricks wrote");
   if (fs::is_empty(dir, ec) && !ec) return;
-  if (carriesOutputMarker(dir)) return;
-  fail("E-OUTPUT-NOT-PACKAGE", dir,
-       "output directory '" + dir.string() + "' holds files matbricks did not write (" + someEntries(dir) + "; no " +
-           kOutputMarkerName +
-           " marker): it is replaced only when new, empty or a matbricks output; nothing was changed",
-       "give a new or empty directory, or remove this one yourself");
+  std::string why;
+  const std::optional<OutputMarker> marker = readOutputMarker(dir, why);
+  if (!marker) {
+    const bool present = fs::exists(fs::symlink_status(dir / kOutputMarkerName, ec));
+    fail("E-OUTPUT-NOT-PACKAGE", dir,
+         "output directory '" + dir.string() + "' holds files matbricks did not write (" + someEntries(dir) + "; " +
+             (present ? "its " + std::string(kOutputMarkerName) + " is not ours: " + why
+                      : "no " + std::string(kOutputMarkerName) + " marker") +
+             "): it is replaced only when new, empty or a matbricks output; nothing was changed",
+         "give a new or empty directory, or remove this one yourself");
+  }
+  const std::vector<ForeignEntry> foreign = foreignEntries(dir, *marker);
+  if (!foreign.empty() && foreign.front().mountPoint)
+    fail("E-OUTPUT-MOUNT", dir,
+         "output directory '" + dir.string() + "' has a mount point inside (" + foreign.front().path +
+             "): matbricks never removes anything across file systems; nothing was changed",
+         "unmount it, or give another directory");
+  if (marker->version < 2 && !foreign.empty())
+    fail("E-OUTPUT-UNLISTED", dir,
+         "output directory '" + dir.string() +
+             "' carries a marker of an older matbricks, which lists no files, and holds " + listed(foreign) +
+             ": only what a marker lists is ever removed; nothing was changed",
+         "remove the directory yourself once; directories written from now on list their files");
+  if (!marker->complete)
+    fail("E-OUTPUT-UNLISTED", dir,
+         "output directory '" + dir.string() +
+             "' carries an unfinished marker (of a staging directory, not a finished " +
+             "output): its files are not known to be matbricks'; nothing was changed",
+         "remove the directory yourself");
+  if (!foreign.empty())
+    fail("E-OUTPUT-UNLISTED", dir,
+         "output directory '" + dir.string() + "' holds what its " + kOutputMarkerName + " does not list (" +
+             listed(foreign) + "): matbricks replaces only the files it wrote; nothing was changed",
+         "move those out, or remove the directory yourself");
+}
+
+fs::path resolvedOutputDirectory(const fs::path& dir) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::absolute(dir), ec);
+  if (ec) p = fs::absolute(dir).lexically_normal();
+  if (p.filename().empty()) p = p.parent_path();
+  // weakly_canonical stops at a dangling symlink; follow it by hand (as the kernel would, at
+  // most 40 links: ELOOP).
+  for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(p, ec)); ++hops) {
+    const fs::path to = fs::read_symlink(p, ec);
+    if (ec) break;
+    p = (to.is_absolute() ? to : p.parent_path() / to).lexically_normal();
+    if (p.filename().empty()) p = p.parent_path();
+  }
+  return p;
+}
+
+void checkOutputName(const std::string& name, const std::string& option, const SourceLocation& at) {
+  std::string why;
+  if (name.empty())
+    why = "is empty";
+  else if (name.find('/') != std::string::npos || name.find('\\') != std::string::npos)
+    why = "holds a path separator";
+  else if (name == "." || name == "..")
+    why = "is '" + name + "'";
+  else if (name.front() == '.')
+    why = "starts with a dot (a hidden file, or the package's own marker)";
+  else if (std::any_of(name.begin(), name.end(),
+                       [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }))
+    why = "holds a control character";
+  if (why.empty()) return;
+  throw DiagnosticError({{Severity::Error, "E-OUTPUT-NAME", at,
+                          option + " '" + name + "' " + why +
+                              ": it names one file inside the output directory, not a path; nothing was written",
+                          "give a plain file name such as materials.hpp"}});
 }
 
 void checkOutputFile(const fs::path& file) {
