@@ -22,10 +22,11 @@ constexpr float kHalfMinNormal = 0x1p-14f;  // smaller magnitudes are denormal
 constexpr float kHalfUlpScale = 0x1p-10f;   // ulp of a half in [2^e, 2^(e+1)) is 2^(e-10)
 constexpr float kUlpCap = 0x1p15f;          // binade of the largest finite half
 // A perturbation of n ULP (or absolute e) lands on a value that OpQuantizeToF16 then rounds
-// to the nearest half, up to half an ulp further: moving by n - 1/2 ULP (e - 2^-12, for
-// results of magnitude <= 1 whose ulp is <= 2^-11) keeps the rounded result inside the bound.
+// to the nearest half, up to half an ulp further: moving by n - 1/2 ULP (e - 2^-11, for
+// results of magnitude < 2, whose ulp is <= 2^-10: sin, cos, and log, log2 on [0.5, 2])
+// keeps the rounded result inside the bound.
 constexpr float kRoundingSlack = 0.5f;
-constexpr float kAbsSinCosLog = 0x1p-7f - 0x1p-12f;  // sin, cos; log, log2 inside [0.5, 2]
+constexpr float kAbsSinCosLog = 0x1p-7f - 0x1p-11f;  // sin, cos; log, log2 inside [0.5, 2]
 constexpr float kUlpInverseSqrt = 2.0f - kRoundingSlack;
 constexpr float kUlpLog = 3.0f - kRoundingSlack;
 constexpr float kUlpAtan = 5.0f - kRoundingSlack;
@@ -481,14 +482,12 @@ class Emulation {
 
   uint32_t bitsOf(uint32_t t, uint32_t x) { return emit(Op::OpBitcast, uintT(shape(t).components), {x}); }
 
-  // +1 or -1 per component, from a hash of the operand bits (Wellons' lowbias32 finalizer).
+  // +1 or -1 per component, from a hash of the operand bits: the top bit of a Fibonacci
+  // (multiplicative) hash, which every bit of the operand reaches through the carries.
   uint32_t signFromBits(uint32_t t, uint32_t bits) {
     const uint32_t n = shape(t).components;
     const uint32_t u = uintT(n);
-    uint32_t h = emit(Op::OpBitwiseXor, u, {bits, emit(Op::OpShiftRightLogical, u, {bits, constU(n, 16)})});
-    h = emit(Op::OpIMul, u, {h, constU(n, 0x7feb352du)});
-    h = emit(Op::OpBitwiseXor, u, {h, emit(Op::OpShiftRightLogical, u, {h, constU(n, 15)})});
-    h = emit(Op::OpIMul, u, {h, constU(n, 0x846ca68bu)});
+    uint32_t h = emit(Op::OpIMul, u, {bits, constU(n, 0x9e3779b1u)});
     uint32_t top = emit(Op::OpShiftRightLogical, u, {h, constU(n, 31)});
     uint32_t f = emit(Op::OpConvertUToF, t, {top});
     return emit(Op::OpFAdd, t, {constF(t, 1.0f), emit(Op::OpFMul, t, {f, constF(t, -2.0f)})});
@@ -543,7 +542,7 @@ class Emulation {
   uint32_t atan2(uint32_t t, uint32_t y, uint32_t x) {
     const uint32_t n = shape(t).components;
     uint32_t bits = emit(Op::OpBitwiseXor, uintT(n),
-                         {bitsOf(t, y), emit(Op::OpIMul, uintT(n), {bitsOf(t, x), constU(n, 0x9e3779b1u)})});
+                         {bitsOf(t, y), emit(Op::OpShiftLeftLogical, uintT(n), {bitsOf(t, x), constU(n, 16)})});
     uint32_t r = perturbUlps(t, ext(GLSLstd450Atan2, t, {y, x}), constF(t, kUlpAtan), bits);
     // atan2(0, 0) is not mathematically defined, so "the value returned is undefined" (the
     // spec's ULP rule): NaN, as hardware that forms y / x returns.

@@ -1,5 +1,5 @@
 // The precision axis of emitted code (DESIGN.md "permutation ... × precision"). Fp16 emits
-// true half arithmetic: the library sources are rewritten to float16_t/f16vecN
+// half arithmetic (run as the worst conforming device computes it by default, Fp16Mode): the library sources are rewritten to float16_t/f16vecN
 // (fp16_rewrite.hpp), GL_EXT_shader_explicit_arithmetic_types_float16 is enabled and MB_FP16
 // is defined so that a brick can add a Filament-style guard inside `#ifdef MB_FP16`. The
 // probe's buffers stay fp32; values are converted at the boundary.

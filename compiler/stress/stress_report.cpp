@@ -124,7 +124,7 @@ std::string formatStressMarkdown(const std::vector<StressResult>& results, const
     << "Each brick runs with "
     << (!half      ? "fp32 arithmetic"
         : emulated ? "fp16 arithmetic as the least precise conforming Vulkan device may compute it (`--fp16 "
-                     "emulated`: every half result rounded, denormals flushed to zero, division by the "
+                     "emulated`: every half result rounded, denormals both flushed and kept, division by the "
                      "reciprocal, transcendentals at the edge of the spec's error bounds; what this models and "
                      "what it cannot: [docs/stress.md](stress.md#the-fp16-emulation))"
                    : "the device's own fp16 arithmetic (`--fp16 driver`)")

@@ -250,7 +250,8 @@ ProbeRun runProbeOnGpu(harness::VulkanHarness& gpu, const ProbeProgram& program,
   run.gpu = std::move(result.outputs);
   run.gpuMs = result.gpuMs;
   run.firstDispatchMs = result.firstDispatchMs;
-  if (!program.denormalsKeptSpirv.empty()) {
+  if (program.precision == ShaderPrecision::Fp16 && program.fp16Mode == Fp16Mode::Emulated &&
+      !program.denormalsKeptSpirv.empty()) {
     // The emulated fp16 kernel under the other denormal behaviour: a value is NaN (Inf) when
     // either behaviour gives NaN (Inf), as some conforming device computes it that way;
     // otherwise the flushing kernel's value is kept.
