@@ -44,8 +44,8 @@ void writeGroup(std::ostringstream& s, const BenchGroup& grp) {
   auto point = [](const BenchItem& it) {
     return formatCost(it.cost) + ", static " + staticText(it.staticCost) + ", max error " + g3(it.error.maxScaled());
   };
-  s << "\nFrontier, cheapest first (each step significantly costlier than the one before): `" << front[0]->id << "` ("
-    << point(*front[0]) << ")";
+  s << "\nFrontier, cheapest first (a step between equally accurate points may be within the noise; a less accurate point is on it only where significantly cheaper): `"
+    << front[0]->id << "` (" << point(*front[0]) << ")";
   for (size_t k = 1; k < front.size(); ++k) {
     const BenchItem &a = *front[k - 1], &b = *front[k];
     double ratio = b.error.maxScaled() > 0 ? a.error.maxScaled() / b.error.maxScaled() : 0;
