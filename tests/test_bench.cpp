@@ -212,11 +212,7 @@ TEST_CASE("static cost: deterministic, per evaluation, and ordered as the operat
     return std::pair{compileComputeGlsl(t.glsl, t.fileName).spirv, compileComputeGlsl(e.glsl, e.fileName).spirv};
   };
   auto perEval = [&](const std::string& id, uint32_t iterations) {
-    auto [timed, base] = kernels(id, iterations);
-    uint32_t components = 0;
-    for (const auto& in : buildBrickProbe(lib, *lib.findBrick(id)).shader.layout.inputs)
-      components += uint32_t(componentCount(in.type));
-    return staticCostPerEvaluation(timed, base, iterations, components);
+    return staticCostPerEvaluation(kernels(id, iterations).first);
   };
   // The loop's trip count is read from the kernel: the same cost per evaluation at 4 and 8
   // iterations, and twice the loop's share of the whole kernel at 8.
@@ -228,6 +224,9 @@ TEST_CASE("static cost: deterministic, per evaluation, and ordered as the operat
   CHECK(s4.loops == 1);
   CHECK(s4.loopsWithUnknownTripCount == 0);
   CHECK(s8.fmaSlots - s4.fmaSlots == Approx(2 * (s4.fmaSlots - s2.fmaSlots)));  // linear in the trip count
+  // Per evaluation is one iteration of the loop less its counter (an integer add and
+  // compare, weight 2 each: op_weights.cpp), which is the whole kernel's per-iteration growth.
+  CHECK(ggx4 == Approx((s4.fmaSlots - s2.fmaSlots) / 2 - 4));
   // A brick with a loop of its own (an 11-term series): its trip count is found too.
   auto [th, bh] = kernels("horizon_wrap_accurate", 4);
   CHECK(staticCost(th).loopsWithUnknownTripCount == 0);
@@ -240,6 +239,19 @@ TEST_CASE("static cost: deterministic, per evaluation, and ordered as the operat
   CHECK(perEval("v_smith_ggx_correlated_fast", 4) < perEval("v_smith_ggx_correlated", 4));
   CHECK(perEval("f_schlick", 4) < perEval("f_dielectric_exact", 4));
   CHECK_THROWS(staticCost({1, 2, 3}));
+}
+
+TEST_CASE("static cost: every shipped brick costs more than nothing", "[bench]") {
+  // Even a brick that returns a constant pays the add that accumulates its result, so a
+  // cost of 0 or below means the definition subtracts something the brick never had.
+  const ShaderLibrary& lib = test::shippedLibrary();
+  REQUIRE(!lib.bricks().empty());
+  for (const Brick& b : lib.bricks()) {
+    EmittedShader t = emitBrickBenchProbe(lib, b, {4, false});
+    const double c = staticCostPerEvaluation(compileComputeGlsl(t.glsl, t.fileName).spirv);
+    INFO(b.id << ": static cost " << c);
+    CHECK(c > 0);
+  }
 }
 
 TEST_CASE("binary16 rounding and bilinear DFG LUT sampling", "[bench][ibl]") {

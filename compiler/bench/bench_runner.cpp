@@ -12,7 +12,6 @@
 #include "bench/static_cost.hpp"
 #include "bench/yardstick.hpp"
 #include "emit/bench_probe.hpp"
-#include "library/value_type.hpp"
 #include "permute/permutation.hpp"
 #include "validate/probe_program.hpp"
 
@@ -68,9 +67,7 @@ BenchCost measureBenchCost(harness::VulkanHarness& gpu, const ProbeProgram& prob
         return last;
       },
       probe.shader.layout, probe.domain, options);
-  uint32_t inputComponents = 0;
-  for (const auto& in : probe.shader.layout.inputs) inputComponents += uint32_t(componentCount(in.type));
-  c.staticCost = staticCostPerEvaluation(last.timed, last.baseline, c.measured.iterations, inputComponents);
+  c.staticCost = staticCostPerEvaluation(last.timed);
   return c;
 }
 

@@ -35,8 +35,8 @@ struct BenchItem {
   std::string id;    // brick id, or permutation key
   std::string kind;  // "brick" or "permutation"
   CostMeasurement cost;
-  // bench/static_cost.hpp: the call's operations per evaluation, weighted by throughput
-  // (fp32 FMA issue slots), from the optimized bench kernels. Deterministic.
+  // bench/static_cost.hpp: one iteration of the optimized timed kernel's loop less its
+  // counter, weighted by throughput (fp32 FMA issue slots). Deterministic, always > 0.
   double staticCost = 0;
   size_t spirvInstructions = 0;                // the probe's, after spirv-opt (as validate reports it)
   std::string yardstick;                       // "ground_truth" or "reference"

@@ -97,8 +97,9 @@ std::string toMarkdown(const BenchReport& r) {
   s << "Measured with " << describeRun(r) << ". Errors: max and mean over the samples of "
     << "|x − truth| / max(1, |truth|). Cost: the bench kernel's time net of the empty loop per evaluation, median "
     << "and distribution-free 95 % interval of the paired repeats, or \"below resolution\" where the interval does "
-    << "not clear the timer's resolution. Static cost: the call's operations weighted by throughput, in fp32 FMA "
-    << "issue slots (CUDA C++ Programming Guide, compute capability 9.0). A frontier step needs a significantly "
+    << "not clear the timer's resolution. Static cost: one iteration of the timed loop less its counter (the call, "
+    << "the perturbation of the inputs it reads, the add of its result) weighted by throughput, in fp32 FMA issue "
+    << "slots (CUDA C++ Programming Guide, compute capability 9.0). A frontier step needs a significantly "
     << "higher cost (disjoint intervals); a point that is cheaper only within the noise is a tie.\n\n";
   for (const auto& grp : r.groups) writeGroup(s, grp);
   if (r.hasIbl) writeIbl(s, r);

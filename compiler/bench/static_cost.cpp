@@ -173,6 +173,7 @@ class Walker {
     if (auto it = memo_.find(id); it != memo_.end()) return it->second;
     if (!active_.insert(id).second) throw std::runtime_error("static cost: recursive call");
     const Function& f = m_.functions.at(id);
+    if (id == m_.entryPoint) entry_ = &f;
     Ends e = walk(f, f.entry, {}, 0);
     active_.erase(id);
     double c = std::max(0.0, e.exit);
@@ -238,11 +239,18 @@ class Walker {
       std::set<uint32_t> inner = stops;
       inner.insert({b.loopMerge, label});
       Ends body;
+      ++loopDepth_;
       for (uint32_t s : successors(b)) body.add(walk(f, s, inner, depth + 1), own);
+      --loopDepth_;
       double iteration = own;
       for (uint32_t end : {label, b.loopMerge})
         if (auto it = body.at.find(end); it != body.at.end()) iteration = std::max(iteration, it->second);
+      counterOps_ = 0;
       const double trips = tripCount(f, b);
+      if (&f == entry_ && loopDepth_ == 0 && !result.outerLoopFound) {
+        result.outerLoopFound = true;
+        result.outerLoopIteration = iteration - counterOps_;
+      }
       const double loop = trips * iteration;
       // Leaving the loop other than through its merge (a return, an outer break): after
       // the loop's cost, as an upper bound.
@@ -367,6 +375,7 @@ class Walker {
         x += step;
       }
       if (trips >= (int64_t{1} << 24) || trips == 0) return unknown();
+      counterOps_ = weight(inc) + weight(cmp);
       return double(trips);
     }
     return unknown();
@@ -375,6 +384,9 @@ class Walker {
   const Module& m_;
   std::unordered_map<uint32_t, double> memo_;
   std::set<uint32_t> active_;
+  const Function* entry_ = nullptr;
+  int loopDepth_ = 0;
+  double counterOps_ = 0;  // the weight of the last counted loop's counter increment and exit test
 };
 
 }  // namespace
@@ -388,10 +400,10 @@ StaticCost staticCost(const std::vector<uint32_t>& spirv) {
   return s;
 }
 
-double staticCostPerEvaluation(const std::vector<uint32_t>& timed, const std::vector<uint32_t>& baseline,
-                               uint32_t iterations, uint32_t inputComponents) {
-  const double sumAdds = inputComponents > 1 ? double(inputComponents - 1) : 0.0;
-  return (staticCost(timed).fmaSlots - staticCost(baseline).fmaSlots) / double(std::max(iterations, 1u)) + sumAdds;
+double staticCostPerEvaluation(const std::vector<uint32_t>& timed) {
+  StaticCost s = staticCost(timed);
+  if (!s.outerLoopFound) throw std::runtime_error("static cost: the bench kernel has no loop");
+  return s.outerLoopIteration;
 }
 
 }  // namespace mb::bench

@@ -31,16 +31,21 @@ struct StaticCost {
   double fmaSlots = 0;  // weighted operations along the costliest path
   uint32_t loops = 0;
   uint32_t loopsWithUnknownTripCount = 0;
+  // One iteration of the entry point's first outermost loop (its costliest path), less the
+  // loop counter's increment and exit test when the trip count was read from them.
+  bool outerLoopFound = false;
+  double outerLoopIteration = 0;
 };
 
 // Throws std::runtime_error on a module it cannot read (not SPIR-V, no entry point).
 StaticCost staticCost(const std::vector<uint32_t>& spirv);
 
-// The bench probe's static cost per evaluation: what the timed kernel's path adds over the
-// empty loop's (the same subtraction the measured cost makes), per iteration, plus back the
-// empty loop's sum of its `inputComponents` inputs (inputComponents - 1 adds), so that what
-// remains is the call's own operations.
-double staticCostPerEvaluation(const std::vector<uint32_t>& timed, const std::vector<uint32_t>& baseline,
-                               uint32_t iterations, uint32_t inputComponents);
+// The bench probe's static cost per evaluation: one iteration of the timed kernel's loop, less
+// its counter: the call's own operations, the perturbation of the inputs the optimized call
+// still reads, and the add that accumulates its result (one per output component, so never
+// 0). Deliberately not "timed minus empty loop": the empty loop perturbs and sums every
+// input, while the optimizer drops the perturbation of inputs a brick ignores, so that
+// difference goes negative for bricks that read few inputs. Throws when the kernel has no loop.
+double staticCostPerEvaluation(const std::vector<uint32_t>& timed);
 
 }  // namespace mb::bench
