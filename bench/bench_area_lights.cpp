@@ -96,10 +96,12 @@ std::map<std::string, Cost> readCosts(const std::string& benchJson) {
   std::ifstream in(benchJson);
   if (!in) return costs;
   json j = json::parse(in);
+  // Only resolved costs: a cost below resolution has "ns_per_eval": null (compiler/bench/cost.hpp).
   for (const auto& g : j.at("groups"))
     for (const auto& it : g.at("items"))
-      costs[it.at("id").get<std::string>()] = {it.at("ns_per_eval").get<double>(),
-                                               it.at("spirv_instructions").get<double>()};
+      if (it.at("ns_per_eval").is_number())
+        costs[it.at("id").get<std::string>()] = {it.at("ns_per_eval").get<double>(),
+                                                 it.at("spirv_instructions").get<double>()};
   return costs;
 }
 

@@ -29,10 +29,13 @@
 #include <spirv-tools/libspirv.hpp>
 #include <spirv-tools/optimizer.hpp>
 #include <thread>
+#include <tuple>
 #include <type_traits>
 
 #include "core/data_dir.hpp"
+#include "bench/bench_runner.hpp"
 #include "bench/cost.hpp"
+#include "bench/report.hpp"
 #include "compile/build.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "compile/target_checks.hpp"
@@ -241,23 +244,33 @@ json benchScaling(const ShaderLibrary& lib, const MaterialDesc& base, size_t max
   return rows;
 }
 
+// One form's cost as bench measures it (compiler/bench/bench_runner.hpp measurePermutationCost):
+// calibrated iterations, median and 95 % interval of paired repeats or "below resolution",
+// and the static cost of its bench kernel.
 json costOf(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const Permutation& perm,
             const bench::CostOptions& o) {
   ProbeProgram probe = buildPermutationProbe(lib, perm);
-  BenchProbeOptions timedOpt, baseOpt;
-  timedOpt.iterations = baseOpt.iterations = o.iterations;
-  baseOpt.baseline = true;
-  EmittedShader timed = emitPermutationBenchProbe(lib, perm, timedOpt),
-                base = emitPermutationBenchProbe(lib, perm, baseOpt);
-  bench::CostMeasurement c =
-      bench::measureCost(gpu, compileComputeGlsl(timed.glsl, timed.fileName),
-                         compileComputeGlsl(base.glsl, base.fileName), probe.shader.layout, probe.domain, o);
-  return {{"key", perm.key()},
-          {"ns_per_eval", c.nsPerEval},
-          {"ns_per_eval_min", c.nsPerEvalMin},
-          {"records_per_dispatch", c.records},
-          {"gpu_timestamps", c.gpuTimestamps},
-          {"spirv_instructions", spirvInstructionCount(probe.compiled.spirv)}};
+  bench::BenchCost c = bench::measurePermutationCost(gpu, lib, perm, probe, o);
+  json j = bench::toJson(c.measured);
+  j["key"] = perm.key();
+  j["static_cost_fma"] = c.staticCost;
+  j["spirv_instructions"] = spirvInstructionCount(probe.compiled.spirv);
+  return j;
+}
+
+// full / specialized: the ratio of the medians, bounds from the intervals' ends (each 95 %,
+// so the bounds hold with at least 90 %), significant when the intervals are disjoint.
+json ratioOf(const json& full, const json& specialized) {
+  if (!full["resolved"].get<bool>() || !specialized["resolved"].get<bool>())
+    return json{{"resolved", false},
+                {"static", full["static_cost_fma"].get<double>() / specialized["static_cost_fma"].get<double>()}};
+  const auto f = full["ns_per_eval_ci"], sp = specialized["ns_per_eval_ci"];
+  return json{{"resolved", true},
+              {"median", full["ns_per_eval"].get<double>() / specialized["ns_per_eval"].get<double>()},
+              {"low", f[0].get<double>() / sp[1].get<double>()},
+              {"high", f[1].get<double>() / sp[0].get<double>()},
+              {"significant", sp[1].get<double>() < f[0].get<double>() || f[1].get<double>() < sp[0].get<double>()},
+              {"static", full["static_cost_fma"].get<double>() / specialized["static_cost_fma"].get<double>()}};
 }
 
 // The feature-complete form with every feature's inputs read at run time (sampled over their
@@ -280,7 +293,7 @@ MaterialDesc withRuntimeFeatureInputs(MaterialDesc m, const ShaderLibrary& lib) 
 json benchRuntime(const ShaderLibrary& lib, const std::vector<MaterialDesc>& materials, int repeats) {
   harness::VulkanHarness gpu;
   bench::CostOptions o;
-  o.repeats = std::max<uint32_t>(9, static_cast<uint32_t>(repeats));  // cost.hpp default: ns figures need more
+  o.repeats = std::max<uint32_t>(9, static_cast<uint32_t>(repeats));  // cost.hpp default: a 96 % interval
   struct Case {
     std::string material;
     std::vector<std::string> folded;
@@ -303,17 +316,20 @@ json benchRuntime(const ShaderLibrary& lib, const std::vector<MaterialDesc>& mat
     fc.material = &fullConstant;
     fr.material = &fullRuntime;
     json sp = costOf(gpu, lib, p, o), jc = costOf(gpu, lib, fc, o), jr = costOf(gpu, lib, fr, o);
-    const double base = sp["ns_per_eval"].get<double>();
     rows.push_back({{"material", c.material},
                     {"specialized", sp},
                     {"feature_complete_constant", jc},
                     {"feature_complete_runtime", jr},
-                    {"time_ratio_constant_over_specialized", jc["ns_per_eval"].get<double>() / base},
-                    {"time_ratio_runtime_over_specialized", jr["ns_per_eval"].get<double>() / base}});
+                    {"ratio_constant_over_specialized", ratioOf(jc, sp)},
+                    {"ratio_runtime_over_specialized", ratioOf(jr, sp)}});
     std::cerr << "  runtime: " << c.material << " done\n";
   }
-  return json{
-      {"device", gpu.deviceName()}, {"iterations_per_record", o.iterations}, {"repeats", o.repeats}, {"rows", rows}};
+  return json{{"device", gpu.deviceName()},
+              {"iterations_per_record", "calibrated per form (each form's cost.iterations_per_record)"},
+              {"repeats", o.repeats},
+              {"cost_method", bench::kCostMethod},
+              {"static_cost_method", bench::kStaticCostMethod},
+              {"rows", rows}};
 }
 
 // e (opt-in, --breakdown): where one permutation's compile time goes. Every stage that
@@ -615,21 +631,31 @@ std::string markdown(const json& r) {
            fmt(row["ms_per_permutation"]) + " | " + fmt(row["peak_rss_mib"]) + " |\n";
   }
   if (r.contains("runtime")) {
-    s +=
-        "\n## d. Specialized against feature-complete, on " + r["runtime"]["device"].get<std::string>() +
-        "\n\nns per evaluation (ratio to specialized) and SPIR-V instructions after spirv-opt. Full (constants): every "
-        "feature on, the folded or absent features' inputs compile-time constants at the scene's values. Full "
-        "(run-time): the same inputs read from the record, as a uniform-driven uber shader.\n\n"
-        "| material | specialized | full (constants) | full (run-time) | instr. specialized | full (constants) | full (run-time) |\n"
-        "|---|---|---|---|---|---|---|\n";
-    auto instr = [](const json& j) { return std::to_string(j["spirv_instructions"].get<size_t>()); };
+    s += "\n## d. Specialized against feature-complete, on " + r["runtime"]["device"].get<std::string>() +
+         "\n\nCost per evaluation (median of " + std::to_string(r["runtime"]["repeats"].get<int>()) +
+         " paired repeats, 95 % interval; iterations calibrated per form), the ratio to specialized (bounds from the "
+         "intervals' ends; \"significant\": disjoint intervals), the static cost (fp32 FMA slots) and its ratio, "
+         "and SPIR-V instructions after spirv-opt. Full (constants): every feature on, the folded or absent "
+         "features' inputs compile-time constants at the scene's values. Full (run-time): the same inputs read from "
+         "the record, as a uniform-driven uber shader.\n\n"
+         "| material | form | cost / eval (95 % interval) | ratio to specialized | static cost | static ratio | "
+         "SPIR-V instr. |\n|---|---|---|---|---:|---:|---:|\n";
+    auto ratioText = [](const json& q) {
+      if (!q["resolved"].get<bool>()) return std::string("n/a (below resolution)");
+      return fmt(q["median"]) + "x (" + fmt(q["low"]) + " to " + fmt(q["high"]) + ")" +
+             (q["significant"].get<bool>() ? ", significant" : ", not significant");
+    };
     for (const auto& row : r["runtime"]["rows"])
-      s += "| " + row["material"].get<std::string>() + " | " + fmt(row["specialized"]["ns_per_eval"]) + " ns | " +
-           fmt(row["feature_complete_constant"]["ns_per_eval"]) + " ns (" +
-           fmt(row["time_ratio_constant_over_specialized"]) + "x) | " +
-           fmt(row["feature_complete_runtime"]["ns_per_eval"]) + " ns (" +
-           fmt(row["time_ratio_runtime_over_specialized"]) + "x) | " + instr(row["specialized"]) + " | " +
-           instr(row["feature_complete_constant"]) + " | " + instr(row["feature_complete_runtime"]) + " |\n";
+      for (const auto& [key, label, ratio] :
+           {std::tuple{"specialized", "specialized", ""},
+            {"feature_complete_constant", "full (constants)", "ratio_constant_over_specialized"},
+            {"feature_complete_runtime", "full (run-time)", "ratio_runtime_over_specialized"}}) {
+        const json& f = row[key];
+        s += "| " + row["material"].get<std::string>() + " | " + label + " | " + f["text"].get<std::string>() + " | " +
+             (*ratio ? ratioText(row[ratio]) : std::string("1")) + " | " + fmt(f["static_cost_fma"]) + " | " +
+             (*ratio ? fmt(row[ratio]["static"]) + "x" : std::string("1")) + " | " +
+             std::to_string(f["spirv_instructions"].get<size_t>()) + " |\n";
+      }
   }
   if (r.contains("breakdown")) s += "\n" + markdownBreakdown(r["breakdown"]);
   if (r.contains("recipes")) {

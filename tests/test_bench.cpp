@@ -8,14 +8,18 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "bench/cost_format.hpp"
+#include "bench/cost_interval.hpp"
 #include "bench/ibl_bench.hpp"
 #include "bench/pareto.hpp"
+#include "bench/static_cost.hpp"
 #include "bench/report.hpp"
 #include "bench/svg_chart.hpp"
 #include "emit/bench_probe.hpp"
 #include "permute/permutation.hpp"
 #include "support/harness_support.hpp"
 #include "support/pipeline_support.hpp"
+#include "library/value_type.hpp"
 #include "validate/validation.hpp"
 
 using namespace mb;
@@ -79,6 +83,175 @@ TEST_CASE("the Pareto frontier of a hand-made set", "[bench]") {
   CHECK(paretoFrontier(pts) == std::vector<size_t>{9, 3, 0, 1, 5, 4});
   CHECK(paretoFrontier({}).empty());
   CHECK(paretoFrontier({{1.0, nan}}).empty());
+}
+
+TEST_CASE("the frontier counts a cost as lower only where the intervals are disjoint", "[bench]") {
+  std::vector<ParetoPoint> pts{
+      {1.0, 1e-2, 0.9, 1.1},     // 0: nominally cheapest resolved, but within the noise of 1: a tie with 1
+      {1.05, 1e-4, 0.95, 1.15},  // 1: frontier (wins the tie: more accurate)
+      {2.0, 1e-6, 1.9, 2.1},     // 2: frontier (significantly costlier than 1, more accurate)
+      {3.0, 1e-3, 2.9, 3.1},     // 3: dominated by 1 outright: not a tie
+      {0.1, 1e-1, 0.0, 0.5},     // 4: below resolution, bound 0.5 < 0.95: significantly cheaper, frontier
+      {2.05, 1e-6, 1.95, 2.2},   // 5: equal error to 2, overlapping cost: neither dominates, both frontier
+  };
+  FrontierMarks m = paretoFrontierWithTies(pts);
+  CHECK(m.frontier == std::vector<size_t>{4, 1, 2, 5});
+  REQUIRE(m.tiedWith.size() == pts.size());
+  CHECK(m.tiedWith[0] == std::optional<size_t>{1});
+  for (size_t i : {1, 2, 3, 4, 5}) CHECK_FALSE(m.tiedWith[i]);
+  // Disjoint intervals restore the classic rule: 0 is then significantly cheaper than 1.
+  pts[0].costHigh = 0.94;
+  m = paretoFrontierWithTies(pts);
+  CHECK(m.frontier == std::vector<size_t>{4, 0, 1, 2, 5});
+  CHECK_FALSE(m.tiedWith[0]);
+  // Everything within one interval: only the most accurate point remains, the others tie with it.
+  std::vector<ParetoPoint> noise{{0.3, 1e-1, 0.0, 1.0}, {0.5, 1e-2, 0.0, 1.0}, {0.7, 1e-3, 0.0, 1.0}};
+  m = paretoFrontierWithTies(noise);
+  CHECK(m.frontier == std::vector<size_t>{2});
+  CHECK(m.tiedWith[0] == std::optional<size_t>{2});
+  CHECK(m.tiedWith[1] == std::optional<size_t>{2});
+}
+
+TEST_CASE("the median's order-statistic interval and the below-resolution rule", "[bench]") {
+  // Coverage of [x(k), x(n+1-k)]: 1 - 2 P(Binomial(n, 1/2) <= k - 1).
+  CHECK(orderStatisticCoverage(9, 2) == Approx(1 - 2 * 10.0 / 512));
+  CHECK(orderStatisticCoverage(6, 1) == Approx(1 - 2 / 64.0));
+  CHECK(orderStatisticCoverage(1, 1) == 0.0);
+  // n = 9: k = 2 (96.1 %); k = 3 would be 82 %.
+  MedianInterval m = medianInterval({9, 1, 8, 2, 7, 3, 6, 4, 5});
+  CHECK(m.median == 5);
+  CHECK(m.low == 2);
+  CHECK(m.high == 8);
+  CHECK(m.confidence == Approx(0.9609375));
+  // n = 20: P(B <= 5) = 21700 / 2^20, so k = 6: [x(6), x(15)] at 95.9 %.
+  std::vector<double> twenty;
+  for (int i = 20; i >= 1; --i) twenty.push_back(i);
+  m = medianInterval(twenty);
+  CHECK(m.low == 6);
+  CHECK(m.high == 15);
+  CHECK(m.confidence == Approx(1 - 2 * 21700.0 / 1048576));
+  // Too few repeats for 95 %: [min, max] at its own, lower coverage; never resolved.
+  m = medianInterval({3, 1, 2, 5, 4});
+  CHECK(m.low == 1);
+  CHECK(m.high == 5);
+  CHECK(m.confidence == Approx(0.9375));
+  CHECK_FALSE(separatedFromEmptyLoop(m, 0.001));
+  CHECK(medianInterval({}).samples == 0);
+
+  // Synthetic paired differences (ms per dispatch), timer resolution 0.002 ms.
+  const double resolution = 0.002;
+  CHECK(separatedFromEmptyLoop(medianInterval({1.0, 1.1, 0.9, 1.05, 0.95, 1.02, 0.98, 1.01, 0.99}), resolution));
+  // Straddling zero: the kernel is not separated from the empty loop.
+  CHECK_FALSE(separatedFromEmptyLoop(medianInterval({0.3, -0.2, 0.1, -0.4, 0.2, 0.05, -0.1, 0.15, -0.05}), resolution));
+  // Positive but within the timer's resolution.
+  CHECK_FALSE(separatedFromEmptyLoop(
+      medianInterval({0.001, 0.0015, 0.0012, 0.0011, 0.0013, 0.0014, 0.001, 0.0012, 0.0011}), resolution));
+  // One outlier does not move an order-statistic interval (it would a t-interval).
+  MedianInterval outlier = medianInterval({1.0, 1.1, 0.9, 1.05, 0.95, 1.02, 0.98, 1.01, 500.0});
+  CHECK(outlier.high <= 1.1);
+  CHECK(separatedFromEmptyLoop(outlier, resolution));
+  CHECK(significantlyCheaper({1, 2}, {2.5, 3}));
+  CHECK_FALSE(significantlyCheaper({1, 2}, {2, 3}));
+  CHECK_FALSE(significantlyCheaper({2.5, 3}, {1, 2}));
+}
+
+TEST_CASE("costs print as 3 significant digits in a fitting unit, never 0 or negative", "[bench]") {
+  CHECK(formatDuration(0.000712) == "712 fs");
+  CHECK(formatDuration(0.0123) == "12.3 ps");
+  CHECK(formatDuration(0.9996) == "1.00 ns");  // rounds into the next unit, not "1000 ps"
+  CHECK(formatDuration(0.99949) == "999 ps");
+  CHECK(formatDuration(1.0) == "1.00 ns");
+  CHECK(formatDuration(42.0) == "42.0 ns");
+  CHECK(formatDuration(1234.5) == "1.23 µs");
+  CHECK(formatDuration(2.5e6) == "2.50 ms");
+  CHECK(formatDuration(3e9) == "3.00 s");
+  CHECK(formatDuration(1.5e13) == "15000 s");
+  CHECK(formatDuration(1e-9) == "1.00e-3 fs");
+  for (double bad : {0.0, -0.0, -1e-12, -0.01, -5.0, std::nan(""), double(INFINITY), -double(INFINITY)})
+    CHECK(formatDuration(bad) == "n/a");
+  // A sweep over 24 decades: a positive number with exactly 3 significant digits and a unit.
+  for (double v = 1.7e-6; v < 1e11; v *= 1.37) {
+    std::string t = formatDuration(v);
+    INFO(v << " -> " << t);
+    CHECK(t.front() != '-');
+    CHECK(t.rfind("0.0", 0) != 0);
+    CHECK(std::stod(t) > 0);
+    size_t significant = 0;
+    bool leading = true;
+    for (char c : t.substr(0, t.find(' '))) {
+      if (c == 'e') break;
+      if (std::isdigit(static_cast<unsigned char>(c)) && !(leading && c == '0')) ++significant, leading = false;
+    }
+    CHECK(significant == 3);
+  }
+  // A measurement that is not resolved prints no value, only the (positive) bound it is below,
+  // however negative or zero its raw median and interval.
+  CostMeasurement c;
+  c.nsPerEval = -0.01;
+  c.nsPerEvalLow = -0.6;
+  c.nsPerEvalHigh = 0.0;
+  c.nsResolution = 0.000125;
+  CHECK(formatCost(c) == "below resolution");
+  CHECK(formatCostWithInterval(c) == "below resolution (< 125 fs)");
+  c.nsPerEvalHigh = 0.0234;
+  CHECK(formatCostWithInterval(c) == "below resolution (< 23.4 ps)");
+  c.resolved = true;
+  c.nsPerEval = 1.234;
+  c.nsPerEvalLow = 1.2;
+  c.nsPerEvalHigh = 1.27;
+  CHECK(formatCost(c) == "1.23 ns");
+  CHECK(formatCostWithInterval(c) == "1.23 ns (1.20 ns to 1.27 ns)");
+}
+
+TEST_CASE("static cost: deterministic, per evaluation, and ordered as the operations are", "[bench]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  auto kernels = [&](const std::string& id, uint32_t iterations) {
+    const Brick& b = *lib.findBrick(id);
+    EmittedShader t = emitBrickBenchProbe(lib, b, {iterations, false}),
+                  e = emitBrickBenchProbe(lib, b, {iterations, true});
+    return std::pair{compileComputeGlsl(t.glsl, t.fileName).spirv, compileComputeGlsl(e.glsl, e.fileName).spirv};
+  };
+  auto perEval = [&](const std::string& id, uint32_t iterations) {
+    return staticCostPerEvaluation(kernels(id, iterations).first);
+  };
+  // The loop's trip count is read from the kernel: the same cost per evaluation at 4 and 8
+  // iterations, and twice the loop's share of the whole kernel at 8.
+  const double ggx4 = perEval("d_ggx", 4), ggx8 = perEval("d_ggx", 8);
+  CHECK(ggx4 == ggx8);
+  CHECK(perEval("d_ggx", 4) == ggx4);  // deterministic
+  StaticCost s2 = staticCost(kernels("d_ggx", 2).first), s4 = staticCost(kernels("d_ggx", 4).first),
+             s8 = staticCost(kernels("d_ggx", 8).first);
+  CHECK(s4.loops == 1);
+  CHECK(s4.loopsWithUnknownTripCount == 0);
+  CHECK(s8.fmaSlots - s4.fmaSlots == Approx(2 * (s4.fmaSlots - s2.fmaSlots)));  // linear in the trip count
+  // Per evaluation is one iteration of the loop less its counter (an integer add and
+  // compare, weight 2 each: op_weights.cpp), which is the whole kernel's per-iteration growth.
+  CHECK(ggx4 == Approx((s4.fmaSlots - s2.fmaSlots) / 2 - 4));
+  // A brick with a loop of its own (an 11-term series): its trip count is found too.
+  auto [th, bh] = kernels("horizon_wrap_accurate", 4);
+  CHECK(staticCost(th).loopsWithUnknownTripCount == 0);
+  // Known orderings: GGX is rational where Beckmann needs an exp; the fast correlated Smith
+  // drops two square roots; Schlick's Fresnel is one pow5 against the exact dielectric's
+  // square roots and divisions.
+  INFO("d_ggx " << ggx4 << ", d_beckmann " << perEval("d_beckmann", 4));
+  CHECK(ggx4 > 0);
+  CHECK(ggx4 < perEval("d_beckmann", 4));
+  CHECK(perEval("v_smith_ggx_correlated_fast", 4) < perEval("v_smith_ggx_correlated", 4));
+  CHECK(perEval("f_schlick", 4) < perEval("f_dielectric_exact", 4));
+  CHECK_THROWS(staticCost({1, 2, 3}));
+}
+
+TEST_CASE("static cost: every shipped brick costs more than nothing", "[bench]") {
+  // Even a brick that returns a constant pays the add that accumulates its result, so a
+  // cost of 0 or below means the definition subtracts something the brick never had.
+  const ShaderLibrary& lib = test::shippedLibrary();
+  REQUIRE(!lib.bricks().empty());
+  for (const Brick& b : lib.bricks()) {
+    EmittedShader t = emitBrickBenchProbe(lib, b, {4, false});
+    const double c = staticCostPerEvaluation(compileComputeGlsl(t.glsl, t.fileName).spirv);
+    INFO(b.id << ": static cost " << c);
+    CHECK(c > 0);
+  }
 }
 
 TEST_CASE("binary16 rounding and bilinear DFG LUT sampling", "[bench][ibl]") {
@@ -192,6 +365,10 @@ TEST_CASE("a tiny bench run: finite numbers, the validator's instruction count, 
     const BenchItem& it = g.items[0];
     INFO(it.id);
     CHECK(std::isfinite(it.cost.nsPerEval));
+    CHECK_FALSE(it.cost.resolved);  // one repeat gives no 95 % interval: below resolution
+    CHECK(it.cost.nsUpperBound() > 0);
+    CHECK(it.cost.iterations == 4);  // fixed: no calibration
+    CHECK(it.staticCost > 0);
     CHECK(it.cost.nsRaw > 0);
     CHECK(it.cost.nsBaseline > 0);
     CHECK(it.cost.evaluations == 256 * 4);
@@ -224,8 +401,12 @@ TEST_CASE("a tiny bench run: finite numbers, the validator's instruction count, 
   CHECK(j["groups"][0]["frontier"][0] == "d_ggx");
   std::string csv = toCsv(r);
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 3);
+  CHECK(csv.find(",d_ggx,brick,,,,") != std::string::npos);  // no value for a cost below resolution
   std::string md = toMarkdown(r);
   CHECK(md.find("### `specular_d`") != std::string::npos);
+  CHECK(md.find("| below resolution (< ") != std::string::npos);
+  CHECK(j["groups"][0]["items"][0]["ns_per_eval"].is_null());
+  CHECK(j["groups"][0]["items"][0]["cost"]["ns_per_eval_below"].get<double>() > 0);
   std::string doc = std::string("intro\n") + kMarkdownBegin + "\nold\n" + kMarkdownEnd + "\ntail\n";
   CHECK(spliceGenerated(doc, "new\n") ==
         std::string("intro\n") + kMarkdownBegin + "\nnew\n" + kMarkdownEnd + "\ntail\n");

@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "bench/ibl_bench.hpp"
 #include "bench/parallel.hpp"
 #include "bench/pareto.hpp"
+#include "bench/static_cost.hpp"
 #include "bench/yardstick.hpp"
 #include "emit/bench_probe.hpp"
 #include "permute/permutation.hpp"
@@ -32,15 +34,16 @@ ErrorSummary errorAgainst(const ProbeRun& run, const ProbeLayout& layout, const 
   return e;
 }
 
-// Cost of the bench kernels, instruction count of the probe, error of the probe's GPU output.
-BenchItem measure(harness::VulkanHarness& gpu, const ProbeProgram& probe, const EmittedShader& timed,
-                  const EmittedShader& baseline, const Yardstick& yardstick, const BenchOptions& o) {
+// Cost of the bench kernels (measured and static), instruction count of the probe, error of
+// the probe's GPU output. `emit(options)` writes the timed or the baseline bench kernel.
+BenchItem measure(harness::VulkanHarness& gpu, const ProbeProgram& probe, const BenchKernelEmitter& emit,
+                  const Yardstick& yardstick, const BenchOptions& o) {
   BenchItem item;
   item.id = probe.shader.key;
   item.spirvInstructions = spirvInstructionCount(probe.compiled.spirv);
-  item.cost =
-      measureCost(gpu, compileComputeGlsl(timed.glsl, timed.fileName),
-                  compileComputeGlsl(baseline.glsl, baseline.fileName), probe.shader.layout, probe.domain, o.cost);
+  BenchCost cost = measureBenchCost(gpu, probe, emit, o.cost);
+  item.cost = cost.measured;
+  item.staticCost = cost.staticCost;
   ProbeRun run = runProbe(gpu, probe, generateSamples(probe.shader.layout, probe.domain, o.samples, o.seed));
   item.vsReference = compare(run, probe);
   item.yardstick = yardstick.kind;
@@ -51,6 +54,29 @@ BenchItem measure(harness::VulkanHarness& gpu, const ProbeProgram& probe, const 
 
 }  // namespace
 
+BenchCost measureBenchCost(harness::VulkanHarness& gpu, const ProbeProgram& probe, const BenchKernelEmitter& emit,
+                           const CostOptions& options) {
+  KernelPair last;
+  BenchCost c;
+  c.measured = measureCost(
+      gpu,
+      [&](uint32_t iterations) {
+        EmittedShader timed = emit({iterations, false}), base = emit({iterations, true});
+        last = {compileComputeGlsl(timed.glsl, timed.fileName).spirv,
+                compileComputeGlsl(base.glsl, base.fileName).spirv};
+        return last;
+      },
+      probe.shader.layout, probe.domain, options);
+  c.staticCost = staticCostPerEvaluation(last.timed);
+  return c;
+}
+
+BenchCost measurePermutationCost(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const Permutation& perm,
+                                 const ProbeProgram& probe, const CostOptions& options) {
+  return measureBenchCost(
+      gpu, probe, [&](const BenchProbeOptions& k) { return emitPermutationBenchProbe(lib, perm, k); }, options);
+}
+
 void markFrontier(BenchGroup& group) {
   // One yardstick per chart: where some items are measured against a ground truth, an item
   // measured only against its own reference (its fp32 error, not an approximation error)
@@ -58,10 +84,16 @@ void markFrontier(BenchGroup& group) {
   bool anyTruth = std::any_of(group.items.begin(), group.items.end(),
                               [](const BenchItem& it) { return it.yardstick == "ground_truth"; });
   std::vector<ParetoPoint> points;
-  for (const auto& it : group.items)
-    points.push_back({it.cost.nsPerEval, anyTruth && it.yardstick != "ground_truth" ? NAN : it.error.maxScaled()});
-  for (auto& it : group.items) it.onFrontier = false;
-  for (size_t i : paretoFrontier(points)) group.items[i].onFrontier = true;
+  for (const auto& it : group.items) {
+    const CostMeasurement& c = it.cost;
+    points.push_back({c.nsPerEval, anyTruth && it.yardstick != "ground_truth" ? NAN : it.error.maxScaled(),
+                      c.resolved ? c.nsPerEvalLow : 0.0, c.resolved ? c.nsPerEvalHigh : c.nsUpperBound()});
+  }
+  FrontierMarks marks = paretoFrontierWithTies(points);
+  for (auto& it : group.items) it.onFrontier = false, it.tiedWith.clear();
+  for (size_t i : marks.frontier) group.items[i].onFrontier = true;
+  for (size_t i = 0; i < points.size(); ++i)
+    if (marks.tiedWith[i]) group.items[i].tiedWith = group.items[*marks.tiedWith[i]].id;
 }
 
 BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, const std::vector<MaterialDesc>& materials,
@@ -70,7 +102,6 @@ BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, cons
   rep.device = gpu.deviceName();
   rep.toolchain = toolchainVersion();
   rep.options = o;
-  BenchProbeOptions timedOpt{o.cost.iterations, false}, baseOpt{o.cost.iterations, true};
   const std::vector<Permutation> perms = permutationsFor(materials);
   if (progress) {
     size_t units = perms.size();
@@ -86,8 +117,9 @@ BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, cons
     for (const auto& id : lib.bricksOfSlot(slot.name)) {
       if (!selected(o.bricks, id)) continue;
       const Brick& b = *lib.findBrick(id);
-      group.items.push_back(measure(gpu, buildBrickProbe(lib, b), emitBrickBenchProbe(lib, b, timedOpt),
-                                    emitBrickBenchProbe(lib, b, baseOpt), brickYardstick(b), o));
+      group.items.push_back(measure(
+          gpu, buildBrickProbe(lib, b), [&](const BenchProbeOptions& k) { return emitBrickBenchProbe(lib, b, k); },
+          brickYardstick(b), o));
       group.items.back().id = id;
       group.items.back().kind = "brick";
       if (progress) progress->advance();
@@ -100,9 +132,9 @@ BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, cons
   BenchGroup mats{"materials", {}};
   for (const auto& perm : perms) {
     ProbeProgram probe = buildPermutationProbe(lib, perm);
-    mats.items.push_back(measure(gpu, probe, emitPermutationBenchProbe(lib, perm, timedOpt),
-                                 emitPermutationBenchProbe(lib, perm, baseOpt),
-                                 materialYardstick(*perm.material, probe.shader.layout), o));
+    mats.items.push_back(measure(
+        gpu, probe, [&](const BenchProbeOptions& k) { return emitPermutationBenchProbe(lib, perm, k); },
+        materialYardstick(*perm.material, probe.shader.layout), o));
     mats.items.back().kind = "permutation";
     if (progress) progress->advance();
   }

@@ -3,6 +3,7 @@
 // Every shader is built by the probe machinery (validate/probe_program.hpp) and the bench
 // probe emitter (emit/bench_probe.hpp); nothing here writes GLSL.
 #pragma once
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -12,8 +13,11 @@
 #include "bench/dfg_lut.hpp"
 #include "bench/error_summary.hpp"
 #include "library/shader_library.hpp"
+#include "emit/bench_probe.hpp"
 #include "load/material_desc.hpp"
+#include "permute/permutation.hpp"
 #include "validate/error_metrics.hpp"
+#include "validate/probe_program.hpp"
 
 namespace mb::bench {
 
@@ -31,12 +35,18 @@ struct BenchItem {
   std::string id;    // brick id, or permutation key
   std::string kind;  // "brick" or "permutation"
   CostMeasurement cost;
+  // bench/static_cost.hpp: one iteration of the optimized timed kernel's loop less its
+  // counter, weighted by throughput (fp32 FMA issue slots). Deterministic, always > 0.
+  double staticCost = 0;
   size_t spirvInstructions = 0;                // the probe's, after spirv-opt (as validate reports it)
   std::string yardstick;                       // "ground_truth" or "reference"
   std::vector<std::string> groundTruthBricks;  // permutations: bricks replaced by their truth
   ErrorSummary error;                          // GPU output against the yardstick
   ErrorStats vsReference;                      // GPU output against the brick's own reference (fp32 error)
   bool onFrontier = false;
+  // Off the frontier only because its cost is not significantly different from this
+  // frontier item's, which is at least as accurate (bench/pareto.hpp); empty otherwise.
+  std::string tiedWith;
 };
 
 // One chart: the bricks of a slot, or the example materials' permutations.
@@ -67,8 +77,24 @@ struct BenchReport {
   IblSection ibl;
 };
 
+// Writes the timed or the empty-loop bench kernel (emit/bench_probe.hpp) for some iterations.
+using BenchKernelEmitter = std::function<EmittedShader(const BenchProbeOptions&)>;
+
+struct BenchCost {
+  CostMeasurement measured;
+  double staticCost = 0;  // BenchItem::staticCost
+};
+// The measured cost (bench/cost.hpp, calibrating the iterations by recompiling the kernels)
+// and the static cost of the final kernels, on the probe's layout and sample domain.
+BenchCost measureBenchCost(harness::VulkanHarness& gpu, const ProbeProgram& probe, const BenchKernelEmitter& emit,
+                           const CostOptions& options);
+// The same for a material permutation (bench's materials, the report, mb_bench_compile).
+BenchCost measurePermutationCost(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const Permutation& perm,
+                                 const ProbeProgram& probe, const CostOptions& options);
+
 // Marks the Pareto frontier of (ns per evaluation, max scaled error) in `group`, over the
-// items measured against a ground truth if there are any, else over all.
+// items measured against a ground truth if there are any, else over all: costs compared by
+// their confidence intervals (a cost below resolution is [0, its bound]), ties marked.
 void markFrontier(BenchGroup& group);
 
 // `progress` (may be null) counts one unit per measured item (brick, permutation, LUT).

@@ -9,6 +9,17 @@
 namespace mb::bench {
 
 nlohmann::json toJson(const BenchReport& report);
+// One cost: resolved or not, its interval and how it was calibrated (also mb_bench_compile's).
+nlohmann::json toJson(const CostMeasurement& cost);
+
+// One-line descriptions of the two costs, for the JSON and the reports.
+inline constexpr const char* kCostMethod =
+    "median over paired repeats of (timed - empty loop) dispatch time / evaluations; interval: distribution-free "
+    "95 % confidence interval of the median from order statistics; below resolution when its lower end does not "
+    "exceed the timer's resolution over a dispatch";
+inline constexpr const char* kStaticCostMethod =
+    "operations of the optimized bench kernel's costliest path over the empty loop's, per evaluation, in fp32 FMA "
+    "issue slots: 128 / throughput per clock per SM, CUDA C++ Programming Guide, compute capability 9.0";
 std::string toCsv(const BenchReport& report);
 // Per group: a table of every item, then the frontier's steps (what each costs and buys);
 // then the IBL table.

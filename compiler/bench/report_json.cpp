@@ -1,5 +1,6 @@
 #include <cmath>
 
+#include "bench/cost_format.hpp"
 #include "bench/report.hpp"
 
 namespace mb::bench {
@@ -22,16 +23,39 @@ nlohmann::json toJson(const ErrorSummary& e) {
           {"truth_invalid", e.truthInvalid()}};
 }
 
+}  // namespace
+
+nlohmann::json toJson(const CostMeasurement& c) {
+  nlohmann::json j{{"resolved", c.resolved},
+                   {"text", formatCostWithInterval(c)},
+                   {"ci_confidence", c.confidence},
+                   {"ns_resolution", number(c.nsResolution)},
+                   {"ns_loop_baseline_spread", number(c.nsBaselineSpread)},
+                   {"ns_per_eval_raw", number(c.nsRaw)},
+                   {"ns_per_eval_loop_baseline", number(c.nsBaseline)},
+                   {"records_per_dispatch", c.records},
+                   {"iterations_per_record", c.iterations},
+                   {"evaluations_per_dispatch", c.evaluations},
+                   {"calibration_rounds", c.calibrationRounds},
+                   {"gpu_timestamps", c.gpuTimestamps}};
+  // Only a resolved cost has a value and an interval; otherwise only the bound it is below.
+  if (c.resolved) {
+    j["ns_per_eval"] = number(c.nsPerEval);
+    j["ns_per_eval_ci"] = {number(c.nsPerEvalLow), number(c.nsPerEvalHigh)};
+  } else {
+    j["ns_per_eval_below"] = number(c.nsUpperBound());
+  }
+  return j;
+}
+
+namespace {
+
 nlohmann::json toJson(const BenchItem& it) {
   return {{"id", it.id},
           {"kind", it.kind},
-          {"ns_per_eval", number(it.cost.nsPerEval)},
-          {"ns_per_eval_from_minima", number(it.cost.nsPerEvalMin)},
-          {"ns_per_eval_raw", number(it.cost.nsRaw)},
-          {"ns_per_eval_loop_baseline", number(it.cost.nsBaseline)},
-          {"records_per_dispatch", it.cost.records},
-          {"evaluations_per_dispatch", it.cost.evaluations},
-          {"gpu_timestamps", it.cost.gpuTimestamps},
+          {"ns_per_eval", it.cost.resolved ? number(it.cost.nsPerEval) : nlohmann::json(nullptr)},
+          {"cost", toJson(it.cost)},
+          {"static_cost_fma", number(it.staticCost)},
           {"spirv_instructions", it.spirvInstructions},
           {"yardstick", it.yardstick},
           {"ground_truth_bricks", it.groundTruthBricks},
@@ -42,7 +66,8 @@ nlohmann::json toJson(const BenchItem& it) {
             {"nan_count", it.vsReference.nanCount},
             {"inf_count", it.vsReference.infCount},
             {"within_tolerance", it.vsReference.passed()}}},
-          {"on_frontier", it.onFrontier}};
+          {"on_frontier", it.onFrontier},
+          {"tied_with", it.tiedWith}};
 }
 
 }  // namespace
@@ -59,8 +84,11 @@ nlohmann::json toJson(const BenchReport& r) {
                        {"records", o.cost.records},
                        {"iterations", o.cost.iterations},
                        {"target_dispatch_ms", o.cost.targetDispatchMs},
+                       {"max_dispatch_ms", o.cost.maxDispatchMs},
                        {"lut_sizes", o.lutSizes}}},
                      {"error_metric", "|x - truth| / max(1, |truth|) over every output value of every sample"},
+                     {"cost_method", kCostMethod},
+                     {"static_cost_method", kStaticCostMethod},
                      {"groups", nlohmann::json::array()}};
   for (const auto& g : r.groups) {
     nlohmann::json items = nlohmann::json::array(), frontier = nlohmann::json::array();

@@ -2,13 +2,19 @@
 #include <cstdio>
 #include <sstream>
 
+#include "bench/cost_format.hpp"
 #include "bench/report.hpp"
 
 namespace mb::bench {
 namespace {
 
 std::string g3(double v) { return printfDouble("%.3g", v); }
-std::string ns(double v) { return printfDouble("%.2f", v); }
+std::string staticText(double v) { return printfDouble("%.1f", v); }
+
+std::string frontierText(const BenchItem& it) {
+  if (it.onFrontier) return "yes";
+  return it.tiedWith.empty() ? "" : "tie with `" + it.tiedWith + "`";
+}
 
 std::string yardstickText(const BenchItem& it) {
   if (it.yardstick == "reference") return "own reference (no ground truth)";
@@ -21,26 +27,29 @@ std::string yardstickText(const BenchItem& it) {
 void writeGroup(std::ostringstream& s, const BenchGroup& grp) {
   s << "### `" << grp.name << "`\n\n"
     << "| " << (grp.name == "materials" ? "permutation" : "brick")
-    << " | ns/eval | SPIR-V instructions | max error | mean error | measured against | frontier |\n"
-    << "|---|---:|---:|---:|---:|---|:-:|\n";
+    << " | cost / eval (95 % interval) | static cost (FMA) | SPIR-V instructions | max error | mean error | "
+       "measured against | frontier |\n"
+    << "|---|---:|---:|---:|---:|---:|---|:-:|\n";
   for (const auto& it : grp.items)
-    s << "| `" << it.id << "` | " << ns(it.cost.nsPerEval) << " | " << it.spirvInstructions << " | "
-      << g3(it.error.maxScaled()) << " | " << g3(it.error.meanScaled()) << " | " << yardstickText(it) << " | "
-      << (it.onFrontier ? "yes" : "") << " |\n";
+    s << "| `" << it.id << "` | " << formatCostWithInterval(it.cost) << " | " << staticText(it.staticCost) << " | "
+      << it.spirvInstructions << " | " << g3(it.error.maxScaled()) << " | " << g3(it.error.meanScaled()) << " | "
+      << yardstickText(it) << " | " << frontierText(it) << " |\n";
   std::vector<const BenchItem*> front;
   for (const auto& it : grp.items)
     if (it.onFrontier) front.push_back(&it);
-  std::sort(front.begin(), front.end(), [](auto* a, auto* b) { return a->cost.nsPerEval < b->cost.nsPerEval; });
+  // Frontier order: by cost; below-resolution items (bounded only) first.
+  auto key = [](const BenchItem* it) { return it->cost.resolved ? it->cost.nsPerEval : 0.0; };
+  std::stable_sort(front.begin(), front.end(), [&](auto* a, auto* b) { return key(a) < key(b); });
   if (front.empty()) return void(s << "\n");
-  s << "\nFrontier, cheapest first: `" << front[0]->id << "` (" << ns(front[0]->cost.nsPerEval) << " ns, "
-    << front[0]->spirvInstructions << " instructions, max error " << g3(front[0]->error.maxScaled()) << ")";
+  auto point = [](const BenchItem& it) {
+    return formatCost(it.cost) + ", static " + staticText(it.staticCost) + ", max error " + g3(it.error.maxScaled());
+  };
+  s << "\nFrontier, cheapest first (a step between equally accurate points may be within the noise; a less accurate point is on it only where significantly cheaper): `"
+    << front[0]->id << "` (" << point(*front[0]) << ")";
   for (size_t k = 1; k < front.size(); ++k) {
     const BenchItem &a = *front[k - 1], &b = *front[k];
     double ratio = b.error.maxScaled() > 0 ? a.error.maxScaled() / b.error.maxScaled() : 0;
-    long dInstr = long(b.spirvInstructions) - long(a.spirvInstructions);
-    s << "; then `" << b.id << "`: +" << ns(b.cost.nsPerEval - a.cost.nsPerEval) << " ns and "
-      << (dInstr >= 0 ? "+" : "") << dInstr << " instructions buy max error " << g3(a.error.maxScaled()) << " → "
-      << g3(b.error.maxScaled()) << (ratio > 0 ? " (" + g3(ratio) + "x smaller)" : "");
+    s << "; then `" << b.id << "` (" << point(b) << ")" << (ratio > 0 ? ": " + g3(ratio) + "x smaller error" : "");
   }
   s << ".\n\n";
 }
@@ -58,7 +67,7 @@ void writeIbl(std::ostringstream& s, const BenchReport& r) {
     if (grp.name == "env_brdf")
       for (const auto& it : grp.items)
         s << "| `" << it.id << "` (analytic" << (it.id == "env_brdf_approx_nonmetal" ? ", truth at f0 = 0.04" : "")
-          << ") | " << ns(it.cost.nsPerEval) << " ns/eval, " << it.spirvInstructions << " instructions | "
+          << ") | " << formatCost(it.cost) << " / eval, static " << staticText(it.staticCost) << " | "
           << g3(it.error.maxScaled()) << " | " << g3(it.error.meanScaled()) << " |\n";
   for (const auto& l : r.ibl.luts)
     s << "| DFG LUT " << l.size << "×" << l.size << " " << lutFormatName(l.format) << " | " << l.bytes << " bytes | "
@@ -76,15 +85,22 @@ std::string printfDouble(const char* format, double value) {
 
 std::string describeRun(const BenchReport& r) {
   const BenchOptions& o = r.options;
-  return "device " + r.device + "; medians of " + std::to_string(o.cost.repeats) + " repeats, " +
-         std::to_string(o.cost.iterations) + " evaluations per record; " + std::to_string(o.samples) +
+  const std::string iterations = o.cost.iterations ? std::to_string(o.cost.iterations) + " evaluations per record"
+                                                   : "evaluations per record calibrated";
+  return "device " + r.device + "; medians of " + std::to_string(o.cost.repeats) +
+         " paired repeats with 95 % intervals, " + iterations + "; " + std::to_string(o.samples) +
          " error samples (seed " + std::to_string(o.seed) + ")";
 }
 
 std::string toMarkdown(const BenchReport& r) {
   std::ostringstream s;
   s << "Measured with " << describeRun(r) << ". Errors: max and mean over the samples of "
-    << "|x − truth| / max(1, |truth|).\n\n";
+    << "|x − truth| / max(1, |truth|). Cost: the bench kernel's time net of the empty loop per evaluation, median "
+    << "and distribution-free 95 % interval of the paired repeats, or \"below resolution\" where the interval does "
+    << "not clear the timer's resolution. Static cost: one iteration of the timed loop less its counter (the call, "
+    << "the perturbation of the inputs it reads, the add of its result) weighted by throughput, in fp32 FMA issue "
+    << "slots (CUDA C++ Programming Guide, compute capability 9.0). A frontier step needs a significantly "
+    << "higher cost (disjoint intervals); a point that is cheaper only within the noise is a tie.\n\n";
   for (const auto& grp : r.groups) writeGroup(s, grp);
   if (r.hasIbl) writeIbl(s, r);
   return s.str();

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "bench/cost_format.hpp"
 #include "bench/report.hpp"
 
 namespace mb::bench {
@@ -13,9 +14,17 @@ constexpr double kWidth = 820, kHeight = 540;
 constexpr double kLeft = 90, kRight = 200, kTop = 64, kBottom = 72;  // margins
 constexpr double kErrorFloor = 1e-12;  // an exact 0 is drawn here (log axis), labelled "= 0"
 
+// Where an item is drawn: a resolved cost at its median, one below resolution at the bound
+// it is below (with a bar from 0); never at a zero or negative cost.
+double drawnCost(const CostMeasurement& c) { return c.resolved ? c.nsPerEval : c.nsUpperBound(); }
+double barLow(const CostMeasurement& c) { return c.resolved ? c.nsPerEvalLow : 0.0; }
+double barHigh(const CostMeasurement& c) { return c.resolved ? c.nsPerEvalHigh : c.nsUpperBound(); }
+
 struct Axes {
-  double x0, x1;  // cost range
-  int y0, y1;     // log10 error range (decades)
+  double x0, x1;            // cost range, ns
+  int y0, y1;               // log10 error range (decades)
+  double unitNs = 1;        // the tick labels' unit, in ns
+  const char* unit = "ns";  // and its name
   double px(double cost) const { return kLeft + (cost - x0) / (x1 - x0) * (kWidth - kLeft - kRight); }
   double py(double err) const {
     double e = std::log10(std::max(err, kErrorFloor));
@@ -26,8 +35,7 @@ struct Axes {
 Axes axesFor(const BenchGroup& g) {
   double cmin = 0, cmax = 0, emin = INFINITY, emax = 0;
   for (const auto& it : g.items) {
-    cmin = std::min(cmin, it.cost.nsPerEval);
-    cmax = std::max(cmax, it.cost.nsPerEval);
+    if (std::isfinite(barHigh(it.cost))) cmax = std::max(cmax, barHigh(it.cost));
     double e = it.error.maxScaled();
     if (std::isfinite(e)) {
       emin = std::min(emin, std::max(e, kErrorFloor));
@@ -37,6 +45,8 @@ Axes axesFor(const BenchGroup& g) {
   if (!std::isfinite(emin)) emin = emax = 1.0;
   Axes a{cmin, cmax > cmin ? cmax : cmin + 1.0, int(std::floor(std::log10(emin))), int(std::ceil(std::log10(emax)))};
   a.x1 += 0.08 * (a.x1 - a.x0);
+  for (auto [scale, name] : {std::pair{1e-6, "fs"}, {1e-3, "ps"}, {1.0, "ns"}, {1e3, "µs"}, {1e6, "ms"}})
+    if (a.x1 >= scale) a.unitNs = scale, a.unit = name;
   // Keep points off the frame: a value within a tenth of a decade of an edge gets one more.
   if (std::log10(emax) > a.y1 - 0.1) ++a.y1;
   if (std::log10(emin) < a.y0 + 0.1) --a.y0;
@@ -46,9 +56,9 @@ Axes axesFor(const BenchGroup& g) {
 void drawAxes(std::ostringstream& s, const Axes& a) {
   const double left = kLeft, right = kWidth - kRight, top = kTop, bottom = kHeight - kBottom;
   s << "<g font-size=\"12\" stroke-width=\"1\">\n";
-  double step = niceStep(a.x1 - a.x0);
-  for (double x = std::ceil(a.x0 / step) * step; x <= a.x1 + 1e-9 * step; x += step) {
-    double X = a.px(x);
+  double step = niceStep((a.x1 - a.x0) / a.unitNs);
+  for (double x = std::ceil(a.x0 / a.unitNs / step) * step; x <= a.x1 / a.unitNs + 1e-9 * step; x += step) {
+    double X = a.px(x * a.unitNs);
     s << "<line x1=\"" << X << "\" y1=\"" << top << "\" x2=\"" << X << "\" y2=\"" << bottom
       << "\" stroke=\"#e6e6e6\"/>\n<text x=\"" << X << "\" y=\"" << bottom + 18 << "\" text-anchor=\"middle\">"
       << printfDouble("%g", std::abs(x) < 1e-9 * step ? 0.0 : x) << "</text>\n";
@@ -62,7 +72,8 @@ void drawAxes(std::ostringstream& s, const Axes& a) {
   s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << right - left << "\" height=\"" << bottom - top
     << "\" fill=\"none\" stroke=\"#333333\"/>\n";
   s << "<text x=\"" << (left + right) / 2 << "\" y=\"" << kHeight - 24
-    << "\" text-anchor=\"middle\">cost: ns per evaluation (net of the empty-loop baseline)</text>\n";
+    << "\" text-anchor=\"middle\">cost per evaluation, " << a.unit
+    << ", net of the empty loop (bars: 95 % interval; dashed: below resolution)</text>\n";
   s << "<text transform=\"translate(22 " << (top + bottom) / 2
     << ") rotate(-90)\" text-anchor=\"middle\">max error |x - truth| / max(1, |truth|) (log)</text>\n";
   s << "</g>\n";
@@ -149,10 +160,11 @@ std::string paretoSvg(const BenchGroup& g, const std::string& subtitle) {
   // The frontier line, in cost order.
   std::vector<const BenchItem*> order;
   for (const auto& it : g.items) order.push_back(&it);
-  std::sort(order.begin(), order.end(), [](auto* p, auto* q) { return p->cost.nsPerEval < q->cost.nsPerEval; });
+  std::stable_sort(order.begin(), order.end(),
+                   [](auto* p, auto* q) { return drawnCost(p->cost) < drawnCost(q->cost); });
   s << "<polyline fill=\"none\" stroke=\"#d62728\" stroke-width=\"2\" points=\"";
   for (const BenchItem* it : order)
-    if (it->onFrontier) s << a.px(it->cost.nsPerEval) << "," << a.py(it->error.maxScaled()) << " ";
+    if (it->onFrontier) s << a.px(drawnCost(it->cost)) << "," << a.py(it->error.maxScaled()) << " ";
   s << "\"/>\n";
 
   // Points first, then labels placed greedily (in cost order) at the first spot that
@@ -161,23 +173,29 @@ std::string paretoSvg(const BenchGroup& g, const std::string& subtitle) {
   bool anyOffFrontierByYardstick =
       anyTruth && std::any_of(order.begin(), order.end(), [](auto* it) { return it->yardstick != "ground_truth"; });
   const double lx = kWidth - kRight + 14, ly = kTop + 10;
-  std::vector<Box> taken{{lx - 6, ly - 8, kWidth, ly + (anyOffFrontierByYardstick ? 62 : 28)}};  // the legend
+  std::vector<Box> taken{{lx - 6, ly - 8, kWidth, ly + (anyOffFrontierByYardstick ? 102 : 68)}};  // the legend
   std::vector<std::pair<double, double>> at;
   s << "<g>\n";
   for (const BenchItem* it : order) {
     double e = it->error.maxScaled();
-    double X = a.px(it->cost.nsPerEval), Y = std::isfinite(e) ? a.py(e) : kTop + 6;
+    double X = a.px(drawnCost(it->cost)), Y = std::isfinite(e) ? a.py(e) : kTop + 6;
     at.push_back({X, Y});
     taken.push_back({X - 5, Y - 5, X + 5, Y + 5});
-    std::string tip = "<title>" + xmlEscape(it->id) + ": " + printfDouble("%.3g", it->cost.nsPerEval) +
-                      " ns, max error " + printfDouble("%.3g", e) + "</title>";
+    s << "<line x1=\"" << a.px(barLow(it->cost)) << "\" y1=\"" << Y << "\" x2=\"" << a.px(barHigh(it->cost))
+      << "\" y2=\"" << Y << "\" stroke=\"#888888\" stroke-width=\"1.2\""
+      << (it->cost.resolved ? "" : " stroke-dasharray=\"3 2\"") << "/>\n";
+    std::string tip = "<title>" + xmlEscape(it->id) + ": " + xmlEscape(formatCostWithInterval(it->cost)) + ", static " +
+                      printfDouble("%.1f", it->staticCost) + " FMA, max error " + printfDouble("%.3g", e) +
+                      (it->tiedWith.empty() ? "" : ", tie with " + xmlEscape(it->tiedWith)) + "</title>";
     if (anyTruth && it->yardstick != "ground_truth") {
       s << "<rect x=\"" << X - 4 << "\" y=\"" << Y - 4
         << "\" width=\"8\" height=\"8\" fill=\"#bbbbbb\" stroke=\"#777777\">" << tip << "</rect>\n";
     } else {
       s << "<circle cx=\"" << X << "\" cy=\"" << Y << "\" r=\"4.5\" stroke-width=\"1.5\" "
-        << (it->onFrontier ? "fill=\"#d62728\" stroke=\"#d62728\"" : "fill=\"white\" stroke=\"#555555\"") << ">" << tip
-        << "</circle>\n";
+        << (it->onFrontier         ? "fill=\"#d62728\" stroke=\"#d62728\""
+            : it->tiedWith.empty() ? "fill=\"white\" stroke=\"#555555\""
+                                   : "fill=\"#f4b6b6\" stroke=\"#d62728\"")
+        << ">" << tip << "</circle>\n";
     }
   }
   s << "</g>\n<g font-size=\"11\">\n";
@@ -185,7 +203,8 @@ std::string paretoSvg(const BenchGroup& g, const std::string& subtitle) {
     const BenchItem& it = *order[k];
     double e = it.error.maxScaled();
     std::string label = it.id + (it.yardstick == "reference" ? " (vs own ref.)" : "") +
-                        (std::isfinite(e) ? (e == 0 ? " (= 0)" : "") : " (non-finite)");
+                        (std::isfinite(e) ? (e == 0 ? " (= 0)" : "") : " (non-finite)") +
+                        (it.cost.resolved ? "" : " (below resolution)");
     auto [X, Y] = at[k];
     Placement p = placeLabel(X, Y, label.size(), taken);
     taken.push_back(p.box);
@@ -201,12 +220,16 @@ std::string paretoSvg(const BenchGroup& g, const std::string& subtitle) {
     << "<text x=\"" << lx + 10 << "\" y=\"" << ly + 4 << "\">Pareto frontier</text>"
     << "<circle cx=\"" << lx << "\" cy=\"" << ly + 20
     << "\" r=\"4.5\" fill=\"white\" stroke=\"#555555\" stroke-width=\"1.5\"/>"
-    << "<text x=\"" << lx + 10 << "\" y=\"" << ly + 24 << "\">dominated</text>";
+    << "<text x=\"" << lx + 10 << "\" y=\"" << ly + 24 << "\">dominated</text>"
+    << "<circle cx=\"" << lx << "\" cy=\"" << ly + 40
+    << "\" r=\"4.5\" fill=\"#f4b6b6\" stroke=\"#d62728\" stroke-width=\"1.5\"/>"
+    << "<text x=\"" << lx + 10 << "\" y=\"" << ly + 44 << "\">tie: cheaper only within</text>"
+    << "<text x=\"" << lx + 10 << "\" y=\"" << ly + 58 << "\">the noise of a better point</text>";
   if (anyOffFrontierByYardstick)
-    s << "<rect x=\"" << lx - 4 << "\" y=\"" << ly + 36
+    s << "<rect x=\"" << lx - 4 << "\" y=\"" << ly + 76
       << "\" width=\"8\" height=\"8\" fill=\"#bbbbbb\" stroke=\"#777777\"/>"
-      << "<text x=\"" << lx + 10 << "\" y=\"" << ly + 44 << "\">no ground truth: fp32</text>"
-      << "<text x=\"" << lx + 10 << "\" y=\"" << ly + 58 << "\">error only, off frontier</text>";
+      << "<text x=\"" << lx + 10 << "\" y=\"" << ly + 84 << "\">no ground truth: fp32</text>"
+      << "<text x=\"" << lx + 10 << "\" y=\"" << ly + 98 << "\">error only, off frontier</text>";
   s << "</g>\n";
   s << "</svg>\n";
   return s.str();

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "bench/cost_format.hpp"
 #include "bench/report.hpp"
 #include "bench/yardstick.hpp"
 #include "core/data_dir.hpp"
@@ -90,18 +91,26 @@ void refuseUnsafeOutputs(const BenchArgs& a, const ShaderLibrary& lib, const std
   if (!a.markdown.empty()) markedDocument(a.markdown);
 }
 
+// Costs as bench/cost_format.hpp writes them (never 0 or negative: "below resolution"
+// instead), each with its 95 % interval.
 void printTable(const bench::BenchReport& r) {
-  std::printf("device: %s\n%-18s %-44s %9s %9s %7s %10s %10s  %-12s %s\n", r.device.c_str(), "group", "id", "ns/eval",
-              "loop ns", "instr", "max err", "mean err", "vs", "frontier");
+  std::printf("device: %s\n%-18s %-44s %-17s %-26s %8s %7s %10s %10s  %-12s %s\n", r.device.c_str(), "group", "id",
+              "cost/eval", "95% interval", "static", "instr", "max err", "mean err", "vs", "frontier");
   for (const auto& g : r.groups)
-    for (const auto& it : g.items)
-      std::printf("%-18s %-44s %9.2f %9.2f %7zu %10.3g %10.3g  %-12s %s\n", g.name.c_str(), it.id.c_str(),
-                  it.cost.nsPerEval, it.cost.nsBaseline, it.spirvInstructions, it.error.maxScaled(),
-                  it.error.meanScaled(), it.yardstick.c_str(), it.onFrontier ? "*" : "");
+    for (const auto& it : g.items) {
+      const bench::CostMeasurement& c = it.cost;
+      std::string interval =
+          c.resolved ? bench::formatDuration(c.nsPerEvalLow) + " to " + bench::formatDuration(c.nsPerEvalHigh)
+                     : "< " + bench::formatDuration(c.nsUpperBound());
+      std::string frontier = it.onFrontier ? "*" : it.tiedWith.empty() ? "" : "tie: " + it.tiedWith;
+      std::printf("%-18s %-44s %-17s %-26s %8.1f %7zu %10.3g %10.3g  %-12s %s\n", g.name.c_str(), it.id.c_str(),
+                  bench::formatCost(c).c_str(), interval.c_str(), it.staticCost, it.spirvInstructions,
+                  it.error.maxScaled(), it.error.meanScaled(), it.yardstick.c_str(), frontier.c_str());
+    }
   if (r.hasIbl)
     for (const auto& l : r.ibl.luts)
-      std::printf("%-18s dfg_lut %3ux%-3u %-32s %9s %9s %7s %10.3g %10.3g  %-12s\n", "ibl", l.size, l.size,
-                  bench::lutFormatName(l.format).c_str(), "-", "-", "-", l.error.maxScaled(), l.error.meanScaled(),
+      std::printf("%-18s dfg_lut %3ux%-3u %-32s %-17s %-26s %8s %7s %10.3g %10.3g  %-12s\n", "ibl", l.size, l.size,
+                  bench::lutFormatName(l.format).c_str(), "-", "-", "-", "-", l.error.maxScaled(), l.error.meanScaled(),
                   "ground_truth");
 }
 
@@ -161,16 +170,22 @@ Command addBenchCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--lut-sizes", a->lutSizes, "DFG LUT sizes for the IBL table")
       ->delimiter(',')
       ->check(CLI::Range(2u, 1024u));
-  cmd->add_option("--repeats", a->options.cost.repeats, "Timed dispatches per item (median)")
+  cmd->add_option("--repeats", a->options.cost.repeats,
+                  "Paired (timed, empty-loop) dispatches per item: median and 95% interval (>= 6 for one)")
       ->check(CLI::Range(1u, 1000u));
   cmd->add_option("--samples", a->options.samples, "Error samples per item")
       ->check(CLI::Range(uint64_t{1}, uint64_t{10000000}));
   cmd->add_option("--records", a->options.cost.records, "Records per timed dispatch (0: calibrate to --target-ms)")
       ->check(CLI::Range(uint64_t{0}, uint64_t{1} << 20));
-  cmd->add_option("--iterations", a->options.cost.iterations, "Evaluations per record in the bench probe")
-      ->check(CLI::Range(1u, 4096u));
-  cmd->add_option("--target-ms", a->options.cost.targetDispatchMs, "Dispatch length the calibration aims at")
+  cmd->add_option(
+         "--iterations", a->options.cost.iterations,
+         "Evaluations per record in the bench probe (0: calibrate until the kernel clearly exceeds the empty loop)")
+      ->check(CLI::Range(0u, bench::kMaxIterations));
+  cmd->add_option("--target-ms", a->options.cost.targetDispatchMs, "Dispatch length the record calibration aims at")
       ->check(CLI::Range(0.1, 10000.0));
+  cmd->add_option("--max-ms", a->options.cost.maxDispatchMs,
+                  "Longest dispatch the iteration calibration may reach (0: 10 x --target-ms)")
+      ->check(CLI::Range(0.0, 100000.0));
   cmd->add_option("--seed", a->options.seed, "Sampler seed");
   cmd->add_option("--json", a->json, "Write the full results as JSON");
   cmd->add_option("--csv", a->csv, "Write one CSV row per brick, permutation and LUT");

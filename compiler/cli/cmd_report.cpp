@@ -174,7 +174,8 @@ Command addReportCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--slot-samples", a->options.slotSamples, "Error samples per brick of the slot charts (default 256)")
       ->check(CLI::Range(uint64_t{1}, uint64_t{10000000}));
   cmd->add_option("--seed", a->options.seed, "Sampler seed");
-  cmd->add_option("--repeats", a->options.cost.repeats, "Timed dispatches per cost measurement (median; default 3)")
+  cmd->add_option("--repeats", a->options.cost.repeats,
+                  "Timed dispatches per cost measurement (median and 95% interval; default 6)")
       ->check(CLI::Range(1u, 1000u));
   cmd->add_option("--target-ms", a->options.cost.targetDispatchMs, "Dispatch length the cost calibration aims at")
       ->check(CLI::Range(0.1, 10000.0));

@@ -218,6 +218,8 @@ uint32_t VulkanHarness::maxWorkGroupCountX() const { return impl_->ctx->props.li
 
 uint64_t VulkanHarness::maxStorageBufferRange() const { return impl_->ctx->props.limits.maxStorageBufferRange; }
 
+double VulkanHarness::timestampPeriodNs() const { return impl_->ctx->props.limits.timestampPeriod; }
+
 bool VulkanHarness::supportsShaderFloat16() const { return impl_->ctx->shaderFloat16; }
 
 std::shared_ptr<DeviceContext> VulkanHarness::context() const { return impl_->ctx; }

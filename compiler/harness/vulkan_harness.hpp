@@ -70,6 +70,9 @@ class VulkanHarness {
   bool isLavapipe() const;
   uint32_t maxWorkGroupCountX() const;
   uint64_t maxStorageBufferRange() const;
+  // VkPhysicalDeviceLimits::timestampPeriod: nanoseconds per timestamp tick (bench uses it
+  // for the resolution of a timed dispatch).
+  double timestampPeriodNs() const;
   // True when the device runs half arithmetic in shaders (shaderFloat16 of
   // VK_KHR_shader_float16_int8); the harness enables the feature whenever it is offered.
   bool supportsShaderFloat16() const;

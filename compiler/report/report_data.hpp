@@ -45,7 +45,8 @@ struct ReportOptions {
 
 struct PermutationRow {
   ValidationRecord validation;  // error metrics, compile time, SPIR-V instructions
-  bench::CostMeasurement cost;  // ns per evaluation of its bench kernel
+  bench::CostMeasurement cost;  // ns per evaluation of its bench kernel, with its interval
+  double staticCost = 0;        // bench/static_cost.hpp, fp32 FMA issue slots per evaluation
   std::vector<std::string> bricks;
 };
 

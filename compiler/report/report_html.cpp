@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "bench/cost_format.hpp"
 #include "bench/report.hpp"
 #include "bench/svg_chart.hpp"
 #include "report/albedo_chart.hpp"
@@ -66,7 +67,7 @@ void header(Html& h, const ReportData& r) {
 void permutationTable(Html& h, const MaterialSection& m) {
   h.s << "<div class=\"wide\"><table><tr><th class=\"l\">permutation</th><th>verdict</th><th>samples</th><th>max abs</th><th>max rel</th>"
          "<th>max ULP</th><th>NaN</th><th>Inf</th><th>neg.</th><th>worst / allowed</th><th>compile ms</th>"
-         "<th>SPIR-V instr.</th><th>ns / eval</th><th>ns / eval (min)</th><th>GPU ms</th></tr>\n";
+         "<th>SPIR-V instr.</th><th>cost / eval (95 % interval)</th><th>static cost (FMA)</th><th>GPU ms</th></tr>\n";
   for (const auto& p : m.permutations) {
     const ValidationRecord& v = p.validation;
     h.s << "<tr><td class=\"l\">" << xmlEscape(v.key) << "</td><td>" << verdict(v.passed()) << "</td><td>" << v.samples
@@ -74,7 +75,7 @@ void permutationTable(Html& h, const MaterialSection& m) {
         << "</td><td>" << v.stats.nanCount << "</td><td>" << v.stats.infCount << "</td><td>" << v.stats.negativeCount
         << "</td><td>" << g3(v.stats.worstRatio) << "</td><td>" << printfDouble("%.1f", v.compileMs)
         << (v.compileCached ? " (cache)" : "") << "</td><td>" << v.spirvInstructions << "</td><td>"
-        << printfDouble("%.2f", p.cost.nsPerEval) << "</td><td>" << printfDouble("%.2f", p.cost.nsPerEvalMin)
+        << xmlEscape(bench::formatCostWithInterval(p.cost)) << "</td><td>" << printfDouble("%.1f", p.staticCost)
         << "</td><td>" << printfDouble("%.2f", v.gpuMs) << "</td></tr>\n";
   }
   h.s << "</table></div>\n";
@@ -85,7 +86,10 @@ void materials(Html& h, const ReportData& r) {
          "against the double-precision reference over seeded samples (as <code>matbricks validate</code>), the "
          "probe's compile time (glslang + spirv-opt; \"cache\": its SPIR-V came from the probe cache) and SPIR-V "
          "instruction count, and the run time of its bench kernel net of the empty loop (as <code>matbricks "
-         "bench</code>: median and fastest of the repeats).</p>\n";
+         "bench</code>: median of the paired repeats and its distribution-free 95 % interval, or \"below "
+         "resolution\" where that interval does not clear the timer's resolution), and its static cost: the "
+         "operations of the optimized kernel weighted by throughput, in fp32 FMA issue slots (CUDA C++ "
+         "Programming Guide, compute capability 9.0).</p>\n";
   for (size_t k = 0; k < r.materials.size(); ++k) {
     const MaterialSection& m = r.materials[k];
     h.s << "<section id=\"material-" << k << "\"><h3>" << xmlEscape(m.name) << "</h3>\n<p class=\"note\">model "
@@ -107,7 +111,9 @@ void slots(Html& h, const bench::BenchReport& b) {
          "materials' shaders call, measured as <code>matbricks bench</code> does ("
       << xmlEscape(bench::describeRun(b))
       << "). Error: max |x − truth| / max(1, |truth|) against the slot's ground truth, or the brick's own reference "
-         "where it has none. Red: the Pareto frontier.</p>\n";
+         "where it has none. Red: the Pareto frontier, whose every step is significantly costlier (disjoint 95 % "
+         "intervals); pink: a tie, cheaper than a more accurate frontier point only within the noise; bars: the "
+         "cost's 95 % interval (dashed: below resolution, drawn up to the bound).</p>\n";
   const std::string subtitle = bench::describeRun(b);
   for (const auto& g : b.groups) {
     h.s << "<section id=\"slot-" << xmlEscape(g.name) << "\"><h3>" << xmlEscape(g.name) << "</h3>\n";

@@ -15,17 +15,6 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// bench's cost of one permutation: its bench kernel against the empty-loop baseline
-// (emit/bench_probe.hpp), on the probe's own layout and sample domain.
-bench::CostMeasurement permutationCost(const ShaderLibrary& lib, harness::VulkanHarness& gpu, const Permutation& perm,
-                                       const ProbeProgram& probe, const bench::CostOptions& cost) {
-  EmittedShader timed = emitPermutationBenchProbe(lib, perm, {cost.iterations, false});
-  EmittedShader baseline = emitPermutationBenchProbe(lib, perm, {cost.iterations, true});
-  return bench::measureCost(gpu, compileComputeGlsl(timed.glsl, timed.fileName),
-                            compileComputeGlsl(baseline.glsl, baseline.fileName), probe.shader.layout, probe.domain,
-                            cost);
-}
-
 void addUnique(std::vector<std::string>& to, const std::vector<std::string>& from) {
   for (const auto& s : from)
     if (std::find(to.begin(), to.end(), s) == to.end()) to.push_back(s);
@@ -45,7 +34,9 @@ MaterialSection measureMaterial(const ShaderLibrary& lib, harness::VulkanHarness
     PermutationRow row;
     row.validation = validateProbe(gpu, probe, "permutation", o.samples, o.seed);
     row.bricks = probe.shader.bricks;
-    row.cost = permutationCost(lib, gpu, perm, probe, o.cost);
+    bench::BenchCost cost = bench::measurePermutationCost(gpu, lib, perm, probe, o.cost);
+    row.cost = cost.measured;
+    row.staticCost = cost.staticCost;
     if (progress) progress->advance();
     s.permutations.push_back(std::move(row));
   }
@@ -68,7 +59,7 @@ std::vector<std::string> slotsOf(const ShaderLibrary& lib, const std::vector<std
 
 bench::CostOptions ReportOptions::quickCost() {
   bench::CostOptions c;
-  c.repeats = 3;
+  c.repeats = 6;  // the fewest paired repeats that give a 95 % interval (bench/cost_interval.hpp)
   c.targetDispatchMs = 2;
   return c;
 }
