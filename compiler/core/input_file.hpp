@@ -35,7 +35,7 @@ inline constexpr InputKind kCsv{"CSV file", std::uintmax_t{1} << 40};  // stream
 inline constexpr InputKind kJson{"JSON file", std::uintmax_t{256} << 20};
 inline constexpr InputKind kManifest{"package manifest", std::uintmax_t{256} << 20};
 // An output marker lists every file of its directory: 10^5 permutations make some 10 MB.
-inline constexpr InputKind kMarker{"output marker", std::uintmax_t{256} << 20};
+inline constexpr InputKind kMarker{"matbricks output marker", std::uintmax_t{256} << 20};
 inline constexpr InputKind kCacheEntry{"cache entry", std::uintmax_t{64} << 20};
 inline constexpr InputKind kShardFile{"shard file", std::uintmax_t{64} << 20};
 inline constexpr InputKind kMarkdown{"Markdown file", std::uintmax_t{16} << 20};
