@@ -18,8 +18,9 @@ inline constexpr const char* kCostMethod =
     "95 % confidence interval of the median from order statistics; below resolution when its lower end does not "
     "exceed the timer's resolution over a dispatch";
 inline constexpr const char* kStaticCostMethod =
-    "operations of the optimized bench kernel's costliest path over the empty loop's, per evaluation, in fp32 FMA "
-    "issue slots: 128 / throughput per clock per SM, CUDA C++ Programming Guide, compute capability 9.0";
+    "operations of one iteration of the optimized timed bench kernel's loop less its counter (the call, the "
+    "perturbation of the inputs it reads, the add of its result), along its costliest path, in fp32 FMA issue slots: "
+    "128 / throughput per clock per SM, CUDA C++ Programming Guide, compute capability 9.0";
 std::string toCsv(const BenchReport& report);
 // Per group: a table of every item, then the frontier's steps (what each costs and buys);
 // then the IBL table.
