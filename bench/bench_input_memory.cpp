@@ -9,7 +9,8 @@
 // Inputs: a material JSON just under its 16 MiB limit in three shapes (one long description;
 // an array of small numbers; small objects: the last two over a material's value limit), a
 // ~40 MB glTF in four shapes (a buffer as a data: URI; a scene graph of nodes with matrices;
-// nodes that are tiny objects, the worst case of a JSON tree; a .glb with a BIN chunk), and
+// nodes that are tiny objects, the worst case of a JSON tree; a .glb with a BIN chunk), the
+// two node shapes also as `compile --scene` (which walks the nodes), and
 // eval CSVs of the given row counts. Each is compared with the same command on a small input (the
 // baseline: the process, the library, the compiler or the Vulkan device). Prints one JSON
 // object per run. This process writes the inputs in small blocks and holds nothing large: a
@@ -84,9 +85,11 @@ void appendU32(std::string& out, uint32_t v) {
 }
 
 uint64_t writeGltf(const fs::path& file, const std::string& shape, uint64_t bytes) {
-  const std::string head = std::string("{\n  ") + kGltfMaterial;
+  // One mesh uses the material, and the first node that mesh: `compile --scene` compiles it.
+  const std::string head =
+      std::string("{\n  ") + kGltfMaterial + ",\n  \"meshes\": [{\"primitives\": [{\"material\": 0}]}]";
   if (shape == "small") {
-    std::ofstream(file, std::ios::binary) << head << "\n}\n";
+    std::ofstream(file, std::ios::binary) << head << ",\n  \"nodes\": [{\"mesh\": 0}]\n}\n";
     return fs::file_size(file);
   }
   if (shape == "data_uri") {
@@ -102,15 +105,16 @@ uint64_t writeGltf(const fs::path& file, const std::string& shape, uint64_t byte
     return writeBulk(
         file, head + ",\n  \"nodes\": [",
         [](uint64_t i) {
-          return "{\"name\": \"node" + std::to_string(i) +
+          return "{" + std::string(i ? "" : "\"mesh\": 0, ") + "\"name\": \"node" + std::to_string(i) +
                  "\", \"matrix\": [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 12.5, 3.25, -7.75, "
                  "1.0]}";
         },
         ",\n    ", "]\n}\n", bytes);
   if (shape == "tiny_nodes")  // the worst shape for a JSON tree: one small object per ~20 bytes
     return writeBulk(
-        file, head + ",\n  \"nodes\": [", [](uint64_t i) { return "{\"name\": \"n" + std::to_string(i) + "\"}"; }, ", ",
-        "]\n}\n", bytes);
+        file, head + ",\n  \"nodes\": [",
+        [](uint64_t i) { return i ? "{\"name\": \"n" + std::to_string(i) + "\"}" : std::string("{\"mesh\": 0}"); },
+        ", ", "]\n}\n", bytes);
   // .glb: the JSON chunk declares the BIN chunk as buffer 0 (glTF 2.0, "GLB-stored Buffer").
   const uint32_t binLength = static_cast<uint32_t>((bytes - 1024) / 4 * 4);
   std::string json =
@@ -195,6 +199,11 @@ int main(int argc, char** argv) {
     fs::remove_all(work / "pkg");
     return std::vector<std::string>{cli, "compile", "-q", input.string(), "--no-cache", "-o", (work / "pkg").string()};
   };
+  auto compileScene = [&](const fs::path& input) {
+    fs::remove_all(work / "pkg");
+    return std::vector<std::string>{
+        cli, "compile", "-q", "--scene", input.string(), "--no-cache", "-o", (work / "pkg").string()};
+  };
 
   // Materials: the baseline is the smallest valid material of the same shape.
   const fs::path small = work / "small.json";
@@ -213,10 +222,16 @@ int main(int argc, char** argv) {
   writeGltf(smallGltf, "small", 0);
   const Run gltfBase = runChild(compile(smallGltf), work / "log.txt");
   report("gltf small", compile(smallGltf), fs::file_size(smallGltf), gltfBase, gltfBase);
+  const Run sceneBase = runChild(compileScene(smallGltf), work / "log.txt");
+  report("gltf scene small", compileScene(smallGltf), fs::file_size(smallGltf), sceneBase, sceneBase);
   for (const char* shape : {"data_uri", "nodes", "tiny_nodes", "glb"}) {
     const fs::path file = work / (std::string("big_") + shape + (std::string(shape) == "glb" ? ".glb" : ".gltf"));
     const uint64_t bytes = writeGltf(file, shape, kGltfBytes);
     report(std::string("gltf ") + shape, compile(file), bytes, runChild(compile(file), work / "log.txt"), gltfBase);
+    // The scene walk reads the node graph that material import skips.
+    if (std::string(shape) == "nodes" || std::string(shape) == "tiny_nodes")
+      report(std::string("gltf scene ") + shape, compileScene(file), bytes,
+             runChild(compileScene(file), work / "log.txt"), sceneBase);
     fs::remove(file);
   }
 

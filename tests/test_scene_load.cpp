@@ -4,7 +4,9 @@
 
 #include <filesystem>
 
+#include "load/gltf_container.hpp"
 #include "load/scene_desc.hpp"
+#include "support/gltf_support.hpp"
 #include "support/pipeline_support.hpp"
 
 using namespace mb;
@@ -120,6 +122,44 @@ TEST_CASE("glTF scene: referenced lights and the materials meshes use", "[scene]
   REQUIRE(cc);
   CHECK(cc->constant);
   CHECK(cc->value == std::vector<double>{0.0});
+}
+
+// The scene walk builds a tree only of the node members it reads (load/gltf_container.hpp,
+// loadGltfSceneJson): the others are blanked in place, so what remains keeps its position, and
+// a node left with none of them is still an object (no type error).
+TEST_CASE("glTF scene: nodes' unread members are skipped, positions kept", "[scene][gltf]") {
+  auto gltf = [](const std::string& mesh) {
+    return "{\n  \"asset\": {\"version\": \"2.0\"},\n"
+           "  \"materials\": [{\"name\": \"Red\", \"pbrMetallicRoughness\": {\"baseColorFactor\": [0.8, 0.2, 0.2, "
+           "1]}}],\n  \"meshes\": [{\"primitives\": [{\"material\": 0}]}],\n  \"nodes\": [\n"
+           "    {\"name\": \"root\", \"matrix\": [1, 0, 0, 0,\n      0, 1, 0, 0,\n      0, 0, 1, 0,\n      0, 0, 0, "
+           "1], \"children\": [1, 2]},\n    {\"name\": \"only a name\", \"extras\": {\"a\": [1, {\"b\": 2}]}},\n"
+           "    {\"name\": \"last\", \"mesh\": " +
+           mesh + "}\n  ]\n}\n";
+  };
+  const ShaderLibrary& lib = test::shippedLibrary();
+  test::TempFile good("scene_nodes_good.gltf", gltf("0"));
+  SceneDesc s = loadScene(good.path(), lib);
+  REQUIRE(s.materials.size() == 1);
+  CHECK(s.materials[0].material.name == "Red");
+  GltfContainerInfo info;
+  const JsonDocument doc = loadGltfSceneJson(good.path(), info);
+  const nlohmann::json& nodes = doc.root().at("nodes");
+  CHECK(nodes[0].at("children").size() == 2);
+  CHECK(nodes[0].at("matrix") == 0);  // blanked: its node has members the walk reads
+  CHECK(nodes[1] == nlohmann::json::object());
+  CHECK(nodes[2].at("mesh") == 0);
+
+  test::TempFile bad("scene_nodes_bad.gltf", gltf("7"));
+  std::vector<Diagnostic> ds;
+  try {
+    loadScene(bad.path(), lib);
+  } catch (const DiagnosticError& e) {
+    ds = e.diagnostics();
+  }
+  REQUIRE(ds.size() == 1);
+  CHECK(ds[0].code == "E-GLTF-INDEX");
+  test::requireAt(ds[0], {11, 30});  // the 7, after the blanked name on its line
 }
 
 TEST_CASE("scene JSON pulls a glTF file in and adds its own materials", "[scene]") {

@@ -12,6 +12,7 @@
 #include <climits>
 #include <set>
 #include <string_view>
+#include <vector>
 #include <cstdio>
 
 namespace mb {
@@ -135,30 +136,86 @@ size_t skipValue(const std::string& t, size_t i) {
   return i;
 }
 
-// Overwrites the value of every top-level member that material import does not read with a
-// `0` and spaces, keeping its newlines: that value never enters the tree, and every other
-// value keeps its line and column. Only valid JSON is touched (nlohmann's accept builds no
-// tree); invalid JSON is left for the parse to report where it is wrong.
-void blankUnreadMembers(std::string& text) {
-  static const std::set<std::string> kRead = {"asset",          "buffers", "extensions", "extensionsRequired",
-                                              "extensionsUsed", "images",  "materials",  "samplers",
-                                              "textures"};
-  if (!nlohmann::json::accept(text)) return;
-  size_t i = skipSpace(text, 0);
-  if (i >= text.size() || text[i] != '{') return;
-  for (i = skipSpace(text, i + 1); i < text.size() && text[i] == '"';) {
+// Which parts of a glTF's JSON a reader builds a tree of (loadGltf).
+enum class GltfReader { kAll, kMaterials, kScene };
+
+// Overwrites text[value, end) (one valid JSON value) with `0`, or with `{}` when `emptyObject`,
+// and spaces, keeping its newlines: every other value keeps its line and column.
+void blankValue(std::string& text, size_t value, size_t end, bool emptyObject) {
+  for (size_t k = value; k < end; ++k)
+    if (text[k] != '\n') text[k] = ' ';
+  text[value] = emptyObject ? '{' : '0';
+  if (emptyObject) text[end - 1] = '}';
+}
+
+// Whether a reader that reads the members named in `read` may read the member whose key is
+// written `key`: a key with an escape may decode to one of them, so it is kept.
+bool mayRead(const std::set<std::string>& read, const std::string& key) {
+  return read.count(key) || key.find('\\') != std::string::npos;
+}
+
+// Calls member(key, value, end) for each member of the valid object whose '{' is at `open`
+// (`member` may blank [value, end)); returns where the object's '}' is.
+template <class Member>
+size_t forEachMember(std::string& text, size_t open, Member&& member) {
+  size_t i = skipSpace(text, open + 1);
+  while (i < text.size() && text[i] == '"') {
     const size_t keyEnd = skipValue(text, i);
-    const std::string key = text.substr(i + 1, keyEnd - i - 2);         // an escaped key is never one we read
+    const std::string key = text.substr(i + 1, keyEnd - i - 2);         // as written: escapes not decoded
     const size_t value = skipSpace(text, skipSpace(text, keyEnd) + 1);  // past ':'
     const size_t end = skipValue(text, value);
-    if (!kRead.count(key)) {
-      text[value] = '0';
-      for (size_t k = value + 1; k < end; ++k)
-        if (text[k] != '\n') text[k] = ' ';
+    member(key, value, end);
+    i = skipSpace(text, end);
+    if (i < text.size() && text[i] == ',') i = skipSpace(text, i + 1);
+  }
+  return i;
+}
+
+// The members of a node the scene walk reads (load/scene_gltf.cpp): a node array of millions
+// of small objects (names, transforms) is most of a large scene's JSON, and a tree member costs
+// ~100 bytes. A node with none of them becomes an empty object (still an object, so the walk
+// says the same about it); the others keep them and blank the rest.
+void blankUnreadNodeMembers(std::string& text, size_t array) {
+  static const std::set<std::string> kRead = {"children", "extensions", "mesh"};
+  size_t i = skipSpace(text, array + 1);
+  while (i < text.size() && text[i] != ']') {
+    const size_t end = skipValue(text, i);
+    if (text[i] == '{') {
+      std::vector<std::pair<size_t, size_t>> unread;
+      bool readsAny = false;
+      forEachMember(text, i, [&](const std::string& key, size_t value, size_t valueEnd) {
+        if (mayRead(kRead, key))
+          readsAny = true;
+        else
+          unread.push_back({value, valueEnd});
+      });
+      if (!readsAny) blankValue(text, i, end, true);
+      for (size_t k = 0; readsAny && k < unread.size(); ++k) blankValue(text, unread[k].first, unread[k].second, false);
     }
     i = skipSpace(text, end);
     if (i < text.size() && text[i] == ',') i = skipSpace(text, i + 1);
   }
+}
+
+// Blanks the value of every top-level member that `reader` does not read (and, for a scene,
+// the node members it does not read), so that they never enter the tree. Only valid JSON is
+// touched (nlohmann's accept builds no tree); invalid JSON is left for the parse to report
+// where it is wrong.
+void blankUnreadMembers(std::string& text, GltfReader reader) {
+  static const std::set<std::string> kMaterialReads = {"asset",          "buffers", "extensions", "extensionsRequired",
+                                                       "extensionsUsed", "images",  "materials",  "samplers",
+                                                       "textures"};
+  static const std::set<std::string> kSceneReads = {"meshes", "nodes", "scene", "scenes"};
+  if (reader == GltfReader::kAll || !nlohmann::json::accept(text)) return;
+  const size_t i = skipSpace(text, 0);
+  if (i >= text.size() || text[i] != '{') return;
+  forEachMember(text, i, [&](const std::string& key, size_t value, size_t end) {
+    const bool scene = reader == GltfReader::kScene && mayRead(kSceneReads, key);
+    if (!scene && !mayRead(kMaterialReads, key))
+      blankValue(text, value, end, false);
+    else if (scene && key == "nodes" && text[value] == '[')
+      blankUnreadNodeMembers(text, value);
+  });
 }
 
 std::string jsonChunkOf(ByteSource& bytes, const std::string& file, GltfContainerInfo& info) {
@@ -231,7 +288,7 @@ JsonDocument parseGltfJson(const std::string& bytes, const std::string& file) {
 
 namespace {
 
-JsonDocument loadGltf(const std::string& path, GltfContainerInfo& info, bool onlyMaterialMembers) {
+JsonDocument loadGltf(const std::string& path, GltfContainerInfo& info, GltfReader reader) {
   // Opened with the .glb container's limit (only its JSON chunk is ever read); JSON text is
   // held to kGltf's.
   InputFileError error;
@@ -239,7 +296,7 @@ JsonDocument loadGltf(const std::string& path, GltfContainerInfo& info, bool onl
   if (!in) throw DiagnosticError({{Severity::Error, error.code, {path, 0, 0}, error.message}});
   FileSource source(*in, path);
   auto parse = [&](std::string text) {
-    if (onlyMaterialMembers) blankUnreadMembers(text);
+    blankUnreadMembers(text, reader);
     return JsonDocument::parse(std::move(text), path);
   };
   if (readsAsGlb(source, path)) return parse(jsonChunkOf(source, path, info));
@@ -257,10 +314,16 @@ JsonDocument loadGltf(const std::string& path, GltfContainerInfo& info, bool onl
 
 }  // namespace
 
-JsonDocument loadGltfJson(const std::string& path, GltfContainerInfo& info) { return loadGltf(path, info, false); }
+JsonDocument loadGltfJson(const std::string& path, GltfContainerInfo& info) {
+  return loadGltf(path, info, GltfReader::kAll);
+}
 
 JsonDocument loadGltfMaterialJson(const std::string& path, GltfContainerInfo& info) {
-  return loadGltf(path, info, true);
+  return loadGltf(path, info, GltfReader::kMaterials);
+}
+
+JsonDocument loadGltfSceneJson(const std::string& path, GltfContainerInfo& info) {
+  return loadGltf(path, info, GltfReader::kScene);
 }
 
 JsonDocument loadGltfJson(const std::string& path) {

@@ -31,6 +31,10 @@ JsonDocument loadGltfJson(const std::string& path, GltfContainerInfo& info);
 // values of all others (nodes, meshes, accessors, animations: most of a large glTF's JSON) are
 // checked as JSON but never enter the tree. Positions are those of the file.
 JsonDocument loadGltfMaterialJson(const std::string& path, GltfContainerInfo& info);
+// The same for the scene walk (load/scene_gltf.cpp), which also reads scene, scenes, meshes and
+// nodes, and of each node only children, extensions and mesh: a node's other members are
+// blanked, and a node with none of those is read as an empty object.
+JsonDocument loadGltfSceneJson(const std::string& path, GltfContainerInfo& info);
 JsonDocument parseGltfJson(const std::string& bytes, const std::string& file, GltfContainerInfo& info);
 
 // Builds a .glb: header, JSON chunk (padded with spaces) and, if `bin` is not empty, a BIN

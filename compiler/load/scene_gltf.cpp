@@ -26,6 +26,7 @@ class GltfSceneWalker {
   // without scenes contributes every node (the spec leaves that case to the application).
   void walk() {
     if (!f_.isObject("")) return;
+    visited_.assign(count("/nodes"), false);
     if (f_.find("/scenes") && f_.isArray("/scenes") && !f_.find("/scenes")->empty()) {
       size_t s = 0;
       if (f_.find("/scene")) s = index(f_.find("/scene"), "/scene", f_.find("/scenes")->size());
@@ -62,7 +63,8 @@ class GltfSceneWalker {
   }
 
   void visit(size_t node) {
-    if (!visited_.insert(node).second) return;  // a node listed twice, or a cycle
+    if (visited_[node]) return;  // a node listed twice, or a cycle
+    visited_[node] = true;
     std::string ptr = JsonFields::element("/nodes", node);
     if (!f_.isObject(ptr)) return;
     std::string light = ptr + "/extensions/KHR_lights_punctual/light";
@@ -94,7 +96,7 @@ class GltfSceneWalker {
   }
 
   JsonFields f_;
-  std::set<size_t> visited_;
+  std::vector<bool> visited_;  // per node: a bit, not a set's ~48 bytes (a scene may have millions)
 };
 
 // KHR_lights_punctual types -> ours (the extension has exactly these three).
@@ -108,7 +110,7 @@ std::string lightType(const std::string& t) {
 
 GltfSceneContents readGltfScene(const std::string& path, const ShaderLibrary& lib) {
   GltfContainerInfo container;
-  JsonDocument doc = loadGltfJson(path, container);
+  JsonDocument doc = loadGltfSceneJson(path, container);
   DiagnosticSink sink;
   GltfSceneWalker walker(doc, sink);
   walker.walk();
