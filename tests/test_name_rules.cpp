@@ -139,7 +139,7 @@ TEST_CASE("compile --depfile refuses a material path with a tab before writing a
   fs::remove_all(dir);
 }
 
-TEST_CASE("--namespace is a C++ identifier or a nested a::b", "[names]") {
+TEST_CASE("the --namespace option is a C++ identifier or a nested a::b", "[names]") {
   for (const char* ok : {"engine", "my_engine::materials", "a::b::c", "_private", "ns2"}) {
     INFO(ok);
     CHECK(cppNamespaceRefusal(ok).empty());

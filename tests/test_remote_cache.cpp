@@ -312,7 +312,7 @@ TEST_CASE("another unit's blob with its key field rewritten is a miss: rebuilt, 
   CHECK(alone.cacheMismatch == 0);
 }
 
-TEST_CASE("--cache-verify: a valid-looking wrong entry under the right key is caught and evicted",
+TEST_CASE("cache verification: a valid-looking wrong entry under the right key is caught and evicted",
           "[remote-cache][cache]") {
   FilledServer filled("remote_verify");
   const auto& [dir, server, clean, blobs] = filled;
@@ -357,7 +357,7 @@ TEST_CASE("--cache-verify: a valid-looking wrong entry under the right key is ca
   test::requireIdentical(clean.built, verified.built);
 }
 
-TEST_CASE("--cache-verify samples by key: the same keys every run, about the given fraction", "[remote-cache]") {
+TEST_CASE("cache verification samples by key: the same keys every run, about the given fraction", "[remote-cache]") {
   RemoteCache half({"http://h", "subdirs", 1, 0.5}), none({"http://h", "subdirs", 1, 0}),
       all({"http://h", "subdirs", 1, 1});
   size_t sampled = 0;
