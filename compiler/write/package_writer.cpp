@@ -326,9 +326,11 @@ void PackageWriter::commit(const fs::path& dir) {
   }
   writeIntoStaging(staging, [&] {
     size_t written = 0;
-    for (const auto& [rel, bytes] : files_) {
+    for (const auto& file : files_) {
+      // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
+      const std::string& bytes = file.second;
       if (written++ == files_.size() / 2) faultPoint("staging-half");
-      writeInto(staging, rel,
+      writeInto(staging, file.first,
                 [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
     }
     finishMarker(staging);
