@@ -20,6 +20,7 @@
 #include "write/depfile.hpp"
 #include "write/package_contents.hpp"
 #include "write/package_writer.hpp"
+#include "write/shard_writer.hpp"
 
 namespace mb::cli {
 namespace {

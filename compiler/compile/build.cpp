@@ -25,8 +25,8 @@
 #include "compile/engine_includes.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
+#include "core/content_hash.hpp"
 #include "emit/fragment_shader.hpp"
-#include "write/package_writer.hpp"
 
 namespace mb {
 namespace {

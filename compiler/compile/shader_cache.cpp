@@ -19,8 +19,8 @@
 
 #include <xxhash.h>
 
+#include "core/atomic_file.hpp"
 #include "core/input_file.hpp"
-#include "write/package_writer.hpp"
 
 namespace mb {
 namespace fs = std::filesystem;

@@ -1,5 +1,5 @@
 // compile: deterministic shards of one build, and the set of shard directories `merge` reads
-// (docs/targets.md "Shards").
+// (docs/targets.md "Shards"). Writing a shard directory is write/'s (write/shard_writer.hpp).
 //
 // A build's compile units (distinct emitted GLSL, in plan order) are dealt round-robin:
 // shard i of N owns the units whose index is i-1 modulo N, so N machines compile disjoint,
@@ -25,8 +25,6 @@
 
 namespace mb {
 
-class PackageWriter;
-
 struct ShardSpec {
   unsigned index = 0;  // 1-based
   unsigned count = 0;  // 0: the whole build
@@ -42,25 +40,6 @@ inline constexpr const char* kShardFormat = "matbricks-shard-1";
 
 // Digest of a build's split (see above): 16 hex digits.
 std::string planDigest(unsigned count, const std::vector<std::string>& unitKeys);
-
-// Writes a shard directory as a streaming build hands its permutations over: each unit's
-// entry when its first permutation arrives, shard.json at the end. `writer` was constructed
-// with kind "shard"; `command` is what `merge` needs to rebuild the plan (the compile
-// command's inputs, cli/compile_run.hpp).
-class ShardWriter {
- public:
-  ShardWriter(PackageWriter& writer, const ShardSpec& spec, nlohmann::json command);
-  // A permutation of this shard (BuiltPermutation::inShard) with its unit's identity.
-  void add(const CacheIdentity& unit, const CompiledArtifacts& artifacts, const std::string& permutationKey);
-  void finish(const std::string& digest, size_t units);
-
- private:
-  PackageWriter& writer_;
-  ShardSpec spec_;
-  nlohmann::json command_;
-  nlohmann::json entries_ = nlohmann::json::array();
-  std::map<std::string, size_t> byKey_;
-};
 
 // Shard directories given to `merge`: checked to be shards 1..N of one split, each once.
 class ShardSet {

@@ -15,6 +15,7 @@
 
 #include "compile/glsl_compiler.hpp"
 #include "compile/shader_cache.hpp"
+#include "core/atomic_file.hpp"
 #include "core/diagnostics.hpp"
 #include "core/input_file.hpp"
 #include "harness/vulkan_harness.hpp"
@@ -22,7 +23,6 @@
 #include "preview/environment_cache.hpp"
 #include "preview/environment_prefilter.hpp"
 #include "preview/environment_sh.hpp"
-#include "write/package_writer.hpp"
 
 namespace mb::preview {
 namespace {

@@ -55,7 +55,7 @@ bool isMountPoint(int dirFd, const std::string& name, dev_t parentDev, const str
   return (sx.stx_attributes_mask & STATX_ATTR_MOUNT_ROOT) && (sx.stx_attributes & STATX_ATTR_MOUNT_ROOT);
 }
 
-// contentHash (write/package_writer.hpp) of a file, read through `dirFd` without following links.
+// contentHash (core/content_hash.hpp) of a file, read through `dirFd` without following links.
 std::string hashFileAt(int dirFd, const std::string& name) {
   Fd fd(::openat(dirFd, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC));
   if (fd.fd < 0) return "";

@@ -12,7 +12,6 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
-#include <thread>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -392,30 +391,6 @@ void PackageWriter::commit(const fs::path& dir) {
   removeOld(previous);
 }
 
-bool replaceFileAtomically(const fs::path& file, const std::string& bytes) {
-  static std::atomic<uint64_t> counter{0};
-  std::ostringstream name;
-  name << file.filename().string() << ".tmp." << ::getpid() << "."
-       << std::hash<std::thread::id>{}(std::this_thread::get_id()) << "." << counter++;
-  const fs::path tmp = file.parent_path() / name.str();
-  std::error_code ec;
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      fs::remove(tmp, ec);
-      return false;
-    }
-  }
-  fs::rename(tmp, file, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    return false;
-  }
-  return true;
-}
-
 void PackageWriter::writeFileAtomically(const fs::path& file, const std::string& bytes) {
   // Never replaces a directory or a device (checkOutputFile); a symlink's target is replaced,
   // not the link.
@@ -438,12 +413,6 @@ void PackageWriter::writeFileAtomically(const fs::path& file, const std::string&
     throw;
   }
   removeTemporary(temporary);
-}
-
-std::string contentHash(const void* data, size_t size) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(XXH64(data, size, 0)));
-  return buf;
 }
 
 }  // namespace mb

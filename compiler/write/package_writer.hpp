@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/content_hash.hpp"  // the marker records each file's contentHash
 #include "write/output_marker.hpp"
 #include "write/spill_file.hpp"
 
@@ -46,7 +47,8 @@ class PackageWriter {
   void commit(const std::filesystem::path& dir);
   // Writes one file the user named: via a marked temporary directory beside it
   // (".<name>.matbricks-tmp.<pid>.<n>", removed by the next write when a kill left it) and a
-  // rename; throws DiagnosticError (E-IO) when that fails.
+  // rename; throws DiagnosticError (E-IO) when that fails. matbricks' own cache files go
+  // through replaceFileAtomically (core/atomic_file.hpp) instead.
   static void writeFileAtomically(const std::filesystem::path& file, const std::string& bytes);
 
  private:
@@ -63,14 +65,5 @@ class PackageWriter {
   std::filesystem::path stagedFor_;
   size_t streamed_ = 0;
 };
-
-// Writes `bytes` to a temporary sibling of `file` whose name no other writer uses (process id,
-// thread id, a counter), then rename(2)s it over `file`: a reader sees the old file, the new
-// one or none, never a partial one. False (and no temporary left) on any I/O failure. For
-// matbricks' own cache directories; a file the user named goes through writeFileAtomically.
-bool replaceFileAtomically(const std::filesystem::path& file, const std::string& bytes);
-
-// 64-bit xxHash of bytes, as 16 hex digits.
-std::string contentHash(const void* data, size_t size);
 
 }  // namespace mb
