@@ -49,11 +49,6 @@ spvc_backend backendOf(const std::string& target) {
 
 }  // namespace
 
-const std::vector<std::string>& allTargets() {
-  static const std::vector<std::string> t{"spirv", "glsl450", "essl310", "hlsl", "msl"};
-  return t;
-}
-
 std::string targetExtension(const std::string& target) {
   if (target == "spirv") return ".spv";
   if (target == "glsl450") return ".comp";

@@ -15,10 +15,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/vocabulary.hpp"  // allTargets(), the target names in package order
+
 namespace mb {
 
-// Target names, in package order: spirv, glsl450, essl310, hlsl, msl.
-const std::vector<std::string>& allTargets();
 // File extension of a target's output in the package: ".spv", ".comp", ".es.comp", ".hlsl", ".metal".
 std::string targetExtension(const std::string& target);
 // The same for a fragment shader: ".spv", ".frag", ".es.frag", ".hlsl", ".metal".

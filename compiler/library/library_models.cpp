@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <set>
 
+#include "core/vocabulary.hpp"
 #include "library/library_loader.hpp"
 #include "library/value_json.hpp"
 
@@ -68,11 +69,14 @@ std::optional<std::string> LibraryLoader::roleBinding(JsonFields& f, const std::
 }
 
 // "quality": {"low": {role: brick}, "medium": {...}}. "high" is the default bindings and is
-// not written (docs/scenes.md "Quality"); the level names are permute/axes.hpp's
-// allQualityLevels() minus "high" (the library does not depend on permute).
+// not written (docs/scenes.md "Quality"): the levels are allQualityLevels() but "high".
 std::map<std::string, std::map<std::string, std::string>> LibraryLoader::readQuality(JsonFields& f,
                                                                                      const ShadingModel& m) {
-  static const std::vector<std::string> levels{"low", "medium"};
+  static const std::vector<std::string> levels = [] {
+    std::vector<std::string> v = allQualityLevels();
+    std::erase(v, "high");
+    return v;
+  }();
   std::map<std::string, std::map<std::string, std::string>> out;
   if (!f.object("/quality", {}, levels, "quality table")) return out;
   for (const auto& level : levels) {

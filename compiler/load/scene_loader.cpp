@@ -5,15 +5,14 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "compile/targets.hpp"
 #include "core/json_fields.hpp"
+#include "core/vocabulary.hpp"
+#include "library/light_order.hpp"
 #include "load/material_resolve.hpp"
 #include "load/project_files.hpp"
 #include "load/scene_desc.hpp"
 #include "load/scene_gltf.hpp"
 #include "load/scene_uses.hpp"
-#include "permute/axes.hpp"
-#include "permute/permutation.hpp"
 
 namespace mb {
 

@@ -28,16 +28,6 @@ bool definesQuality(const ShadingModel& model, const std::string& quality) {
 
 }  // namespace
 
-const std::vector<std::string>& allPrecisions() {
-  static const std::vector<std::string> v{"fp32", "fp16"};
-  return v;
-}
-
-const std::vector<std::string>& allQualityLevels() {
-  static const std::vector<std::string> v{"low", "medium", "high"};
-  return v;
-}
-
 std::optional<std::string> invalidReason(const ShadingModel& model, const AxisPoint& point) {
   const std::string m = "model '" + model.name + "'";
   for (const auto& f : point.features)

@@ -7,13 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "core/vocabulary.hpp"  // the axes' values: allPrecisions(), allQualityLevels()
 #include "library/shader_library.hpp"
 #include "permute/permutation.hpp"
 
 namespace mb {
-
-const std::vector<std::string>& allPrecisions();     // fp32, fp16
-const std::vector<std::string>& allQualityLevels();  // low, medium, high
 
 // One point of the axis space of one model, before it is bound to a material.
 struct AxisPoint {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "library/light_order.hpp"  // canonicalLights(): the order of `lights`
 #include "load/material_desc.hpp"
 
 namespace mb {
@@ -36,8 +37,5 @@ std::vector<Permutation> permutationsFor(const std::vector<MaterialDesc>& materi
 // What `validate` runs for one material: every light type its model shades together, once
 // per environment mode the model supports.
 std::vector<Permutation> validationPermutationsFor(const MaterialDesc& material, const ShaderLibrary& lib);
-
-// Sorts light types into allLightTypes() order and drops duplicates.
-std::vector<std::string> canonicalLights(std::vector<std::string> lights);
 
 }  // namespace mb
