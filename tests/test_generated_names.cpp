@@ -7,9 +7,9 @@
 #include <cfloat>
 #include <set>
 
+#include "compile/generated_names.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "emit/emitter.hpp"
-#include "emit/generated_names.hpp"
 #include "load/glsl_names.hpp"
 #include "support/material_fixtures.hpp"
 #include "support/pipeline_support.hpp"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "emit/generated_names.hpp"
+#include "load/generated_names_source.hpp"
 
 namespace mb {
 
@@ -16,7 +16,7 @@ namespace mb {
 // be read as a member), a C++ keyword (a member of the C++ header's parameter struct).
 std::string reservedNameReason(const std::string& name);
 // The same, then `generated`: the identifiers the code generated for the material declares or
-// uses where the name goes (emit/generated_names.hpp), name -> what it is.
+// uses where the name goes (compile/generated_names.hpp, through load/generated_names_source.hpp), name -> what it is.
 std::string reservedNameReason(const std::string& name, const std::map<std::string, GeneratedName>& generated);
 
 // A name user surface code declares at global scope, where: `line` counts from 0 within the

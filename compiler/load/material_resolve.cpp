@@ -13,8 +13,8 @@
 #include <tuple>
 
 #include "core/json_fields.hpp"
-#include "emit/generated_names.hpp"
 #include "library/value_json.hpp"
+#include "load/generated_names_source.hpp"
 #include "load/glsl_names.hpp"
 
 namespace mb {
@@ -415,7 +415,7 @@ class Resolver {
   // What the code emitted for this material (its model, features and bricks) names, derived
   // once per material and only when it has a user parameter to check.
   const std::map<std::string, GeneratedName>& generatedNames() {
-    if (!generated_) generated_ = generatedIdentifiers(lib_, desc_);
+    if (!generated_) generated_ = generatedNamesOf(lib_, desc_);
     return *generated_;
   }
 

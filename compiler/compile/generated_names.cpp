@@ -1,4 +1,4 @@
-#include "emit/generated_names.hpp"
+#include "compile/generated_names.hpp"
 
 #include <cctype>
 #include <functional>
@@ -266,4 +266,11 @@ std::map<std::string, GeneratedName> generatedIdentifiers(const ShaderLibrary& l
   return cache.emplace(key, std::move(names)).first->second;
 }
 
+// The resolver (load/) asks for these names through load/generated_names_source.hpp.
+[[maybe_unused]] static const bool registeredAsSource = (setGeneratedNamesSource(&generatedIdentifiers), true);
+
 }  // namespace mb
+
+// mb_core's link options name this symbol as undefined, so the linker takes this object (and
+// the registration above) into every program, also where nothing calls generatedIdentifiers.
+extern "C" const int mb_generated_names_source_linked = 1;

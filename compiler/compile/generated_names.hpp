@@ -2,22 +2,18 @@
 // lands (a user parameter becomes a parameter of materialInputs() and evaluateMaterial(), a
 // member of MaterialParams and the probe's local p_<name>): derived from the emitted code
 // itself, so that the loader's name check (load/glsl_names.hpp) refuses exactly what would
-// collide, and grows with the library and the emitter without a list to keep in step.
+// collide, and grows with the library and the emitter without a list to keep in step. In
+// compile/ because it parses the emitted code with glslang; the loader reaches it through the
+// source this file registers (load/generated_names_source.hpp).
 #pragma once
 #include <map>
 #include <string>
 
 #include "library/shader_library.hpp"
+#include "load/generated_names_source.hpp"
 #include "load/material_desc.hpp"
 
 namespace mb {
-
-struct GeneratedName {
-  std::string what;  // for the message
-  // Only ever a local or parameter of a generated function (`b`, `f`, `px`, the probe's p_x):
-  // a global of the same name in user surface code is shadowed there, not redefined.
-  bool localOnly = false;
-};
 
 // name -> what it is, for the message ("used in the generated evaluateMaterial()", "a
 // function of common/geometry.glsl", "a macro of the generated code", "the probe's local
