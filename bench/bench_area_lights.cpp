@@ -96,7 +96,7 @@ std::map<std::string, Cost> readCosts(const std::string& benchJson) {
   std::ifstream in(benchJson);
   if (!in) return costs;
   json j = json::parse(in);
-  // Only resolved costs: a cost below resolution has "ns_per_eval": null (compiler/bench/cost.hpp).
+  // Only resolved costs: a cost below resolution has "ns_per_eval": null (compiler/bench_engine/cost.hpp).
   for (const auto& g : j.at("groups"))
     for (const auto& it : g.at("items"))
       if (it.at("ns_per_eval").is_number())

@@ -6,7 +6,7 @@
 //      whole `matbricks compile --scene` CLI run a second time;
 //   c. cold compile time against scene size (1 .. 10000 distinct permutations), -j2;
 //   d. GPU time of a specialized (folded) permutation against its feature-complete form, with
-//      the features' inputs as constants and as run-time inputs (compiler/bench/cost.hpp, as
+//      the features' inputs as constants and as run-time inputs (compiler/bench_engine/cost.hpp, as
 //      `matbricks bench`), and the three SPIR-V instruction counts;
 //   e. (--breakdown) where one permutation's time goes, stage by stage, on one thread;
 //   f. (--recipes=FILE) spirv-opt recipes against RegisterPerformancePasses: time, instructions.
@@ -33,9 +33,9 @@
 #include <type_traits>
 
 #include "core/data_dir.hpp"
-#include "bench/bench_runner.hpp"
-#include "bench/cost.hpp"
-#include "bench/report.hpp"
+#include "bench_engine/bench_runner.hpp"
+#include "bench_engine/cost.hpp"
+#include "bench_engine/report.hpp"
 #include "compile/build.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "compile/target_checks.hpp"
@@ -244,7 +244,7 @@ json benchScaling(const ShaderLibrary& lib, const MaterialDesc& base, size_t max
   return rows;
 }
 
-// One form's cost as bench measures it (compiler/bench/bench_runner.hpp measurePermutationCost):
+// One form's cost as bench measures it (compiler/bench_engine/bench_runner.hpp measurePermutationCost):
 // calibrated iterations, median and 95 % interval of paired repeats or "below resolution",
 // and the static cost of its bench kernel.
 json costOf(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const Permutation& perm,

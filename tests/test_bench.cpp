@@ -1,4 +1,4 @@
-// matbricks bench (compiler/bench/, emit/bench_probe): the Pareto frontier, the DFG LUT
+// matbricks bench (compiler/bench_engine/, emit/bench_probe): the Pareto frontier, the DFG LUT
 // arithmetic, the bench probe's kernels, and a tiny run through the library and the CLI.
 // No timing is asserted: run times are measured by `matbricks bench`, not judged here.
 #include <catch2/catch.hpp>
@@ -8,13 +8,13 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
-#include "bench/cost_format.hpp"
-#include "bench/cost_interval.hpp"
-#include "bench/ibl_bench.hpp"
-#include "bench/pareto.hpp"
-#include "bench/static_cost.hpp"
-#include "bench/report.hpp"
-#include "bench/svg_chart.hpp"
+#include "bench_engine/cost_format.hpp"
+#include "bench_engine/cost_interval.hpp"
+#include "bench_engine/ibl_bench.hpp"
+#include "bench_engine/pareto.hpp"
+#include "bench_engine/static_cost.hpp"
+#include "bench_engine/report.hpp"
+#include "bench_engine/svg_chart.hpp"
 #include "emit/bench_probe.hpp"
 #include "permute/permutation.hpp"
 #include "support/harness_support.hpp"

@@ -1,17 +1,17 @@
 // matbricks bench: run time against error per slot, per example material permutation and
-// for the DFG LUT choices (compiler/bench/). Results as JSON, CSV, SVG Pareto charts and the
+// for the DFG LUT choices (compiler/bench_engine/). Results as JSON, CSV, SVG Pareto charts and the
 // Markdown tables of docs/accuracy.md.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
-#include "bench/cost_format.hpp"
-#include "bench/report.hpp"
-#include "bench/yardstick.hpp"
+#include "bench_engine/cost_format.hpp"
+#include "bench_engine/report.hpp"
+#include "bench_engine/yardstick.hpp"
 #include "core/data_dir.hpp"
 #include "core/input_file.hpp"
-#include "bench/svg_chart.hpp"
+#include "bench_engine/svg_chart.hpp"
 #include "cli/cli_common.hpp"
 #include "cli/progress.hpp"
 #include "write/package_writer.hpp"
@@ -91,7 +91,7 @@ void refuseUnsafeOutputs(const BenchArgs& a, const ShaderLibrary& lib, const std
   if (!a.markdown.empty()) markedDocument(a.markdown);
 }
 
-// Costs as bench/cost_format.hpp writes them (never 0 or negative: "below resolution"
+// Costs as bench_engine/cost_format.hpp writes them (never 0 or negative: "below resolution"
 // instead), each with its 95 % interval.
 void printTable(const bench::BenchReport& r) {
   std::printf("device: %s\n%-18s %-44s %-17s %-26s %8s %7s %10s %10s  %-12s %s\n", r.device.c_str(), "group", "id",

@@ -9,7 +9,7 @@
 
 #include "cli/cli_common.hpp"
 #include "cli/progress.hpp"
-#include "bench/report.hpp"
+#include "bench_engine/report.hpp"
 #include "core/data_dir.hpp"
 #include "load/scene_desc.hpp"
 #include "permute/axes.hpp"

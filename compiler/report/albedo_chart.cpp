@@ -4,8 +4,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "bench/report.hpp"
-#include "bench/svg_chart.hpp"
+#include "bench_engine/report.hpp"
+#include "bench_engine/svg_chart.hpp"
 
 namespace mb::report {
 namespace {

@@ -2,7 +2,7 @@
 // (energy/white_furnace.hpp), one line per perceptual roughness through the GPU integrals, the
 // double reference's integrals as hollow markers on it, and the line A = 1 that an
 // energy-conserving lobe stays under. Hand-written SVG like bench's Pareto charts
-// (bench/svg_chart.hpp, whose axis step and escaping it shares).
+// (bench_engine/svg_chart.hpp, whose axis step and escaping it shares).
 #pragma once
 #include <string>
 

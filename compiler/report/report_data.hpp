@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/bench_runner.hpp"
+#include "bench_engine/bench_runner.hpp"
 #include "energy/energy_grid.hpp"
 #include "energy/white_furnace.hpp"
 #include "lut/lut_check.hpp"
@@ -46,7 +46,7 @@ struct ReportOptions {
 struct PermutationRow {
   ValidationRecord validation;  // error metrics, compile time, SPIR-V instructions
   bench::CostMeasurement cost;  // ns per evaluation of its bench kernel, with its interval
-  double staticCost = 0;        // bench/static_cost.hpp, fp32 FMA issue slots per evaluation
+  double staticCost = 0;        // bench_engine/static_cost.hpp, fp32 FMA issue slots per evaluation
   std::vector<std::string> bricks;
 };
 

@@ -2,9 +2,9 @@
 
 #include <sstream>
 
-#include "bench/cost_format.hpp"
-#include "bench/report.hpp"
-#include "bench/svg_chart.hpp"
+#include "bench_engine/cost_format.hpp"
+#include "bench_engine/report.hpp"
+#include "bench_engine/svg_chart.hpp"
 #include "report/albedo_chart.hpp"
 #include "report/lut_images.hpp"
 

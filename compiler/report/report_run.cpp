@@ -59,7 +59,7 @@ std::vector<std::string> slotsOf(const ShaderLibrary& lib, const std::vector<std
 
 bench::CostOptions ReportOptions::quickCost() {
   bench::CostOptions c;
-  c.repeats = 6;  // the fewest paired repeats that give a 95 % interval (bench/cost_interval.hpp)
+  c.repeats = 6;  // the fewest paired repeats that give a 95 % interval (bench_engine/cost_interval.hpp)
   c.targetDispatchMs = 2;
   return c;
 }

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "core/progress_sink.hpp"
-#include "bench/cost.hpp"
-#include "bench/dfg_lut.hpp"
-#include "bench/error_summary.hpp"
+#include "bench_engine/cost.hpp"
+#include "bench_engine/dfg_lut.hpp"
+#include "bench_engine/error_summary.hpp"
 #include "library/shader_library.hpp"
 #include "emit/bench_probe.hpp"
 #include "load/material_desc.hpp"
@@ -35,7 +35,7 @@ struct BenchItem {
   std::string id;    // brick id, or permutation key
   std::string kind;  // "brick" or "permutation"
   CostMeasurement cost;
-  // bench/static_cost.hpp: one iteration of the optimized timed kernel's loop less its
+  // bench_engine/static_cost.hpp: one iteration of the optimized timed kernel's loop less its
   // counter, weighted by throughput (fp32 FMA issue slots). Deterministic, always > 0.
   double staticCost = 0;
   size_t spirvInstructions = 0;                // the probe's, after spirv-opt (as validate reports it)
@@ -45,7 +45,7 @@ struct BenchItem {
   ErrorStats vsReference;                      // GPU output against the brick's own reference (fp32 error)
   bool onFrontier = false;
   // Off the frontier only because its cost is not significantly different from this
-  // frontier item's, which is at least as accurate (bench/pareto.hpp); empty otherwise.
+  // frontier item's, which is at least as accurate (bench_engine/pareto.hpp); empty otherwise.
   std::string tiedWith;
 };
 
@@ -84,7 +84,7 @@ struct BenchCost {
   CostMeasurement measured;
   double staticCost = 0;  // BenchItem::staticCost
 };
-// The measured cost (bench/cost.hpp, calibrating the iterations by recompiling the kernels)
+// The measured cost (bench_engine/cost.hpp, calibrating the iterations by recompiling the kernels)
 // and the static cost of the final kernels, on the probe's layout and sample domain.
 BenchCost measureBenchCost(harness::VulkanHarness& gpu, const ProbeProgram& probe, const BenchKernelEmitter& emit,
                            const CostOptions& options);

@@ -2,8 +2,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "bench/cost_format.hpp"
-#include "bench/report.hpp"
+#include "bench_engine/cost_format.hpp"
+#include "bench_engine/report.hpp"
 
 namespace mb::bench {
 namespace {

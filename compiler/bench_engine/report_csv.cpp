@@ -1,7 +1,7 @@
 #include <sstream>
 
-#include "bench/cost_format.hpp"
-#include "bench/report.hpp"
+#include "bench_engine/cost_format.hpp"
+#include "bench_engine/report.hpp"
 
 namespace mb::bench {
 namespace {

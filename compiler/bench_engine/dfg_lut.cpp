@@ -1,10 +1,10 @@
-#include "bench/dfg_lut.hpp"
+#include "bench_engine/dfg_lut.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "bench/parallel.hpp"
+#include "bench_engine/parallel.hpp"
 #include "core/texel_axis.hpp"
 #include "common/ibl_reference.hpp"
 

@@ -1,4 +1,4 @@
-#include "bench/yardstick.hpp"
+#include "bench_engine/yardstick.hpp"
 
 #include <optional>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "bench/static_cost.hpp"
+#include "bench_engine/static_cost.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "bench/op_weights.hpp"
+#include "bench_engine/op_weights.hpp"
 
 #define SPV_ENABLE_UTILITY_CODE
 #include <spirv/unified1/spirv.hpp>

@@ -1,9 +1,9 @@
-#include "bench/cost.hpp"
+#include "bench_engine/cost.hpp"
 
 #include <algorithm>
 #include <chrono>
 
-#include "bench/cost_interval.hpp"
+#include "bench_engine/cost_interval.hpp"
 
 namespace mb::bench {
 namespace {

@@ -1,10 +1,10 @@
-// The IBL table: DFG LUTs of several sizes at fp16 and fp32 (bench/dfg_lut.hpp), their
+// The IBL table: DFG LUTs of several sizes at fp16 and fp32 (bench_engine/dfg_lut.hpp), their
 // error against the integrated split-sum on the same samples as the env_brdf bricks, so that
 // LUTs and the analytic env-BRDF bricks read against one yardstick.
 #pragma once
 #include <ostream>
 
-#include "bench/bench_runner.hpp"
+#include "bench_engine/bench_runner.hpp"
 
 namespace mb::bench {
 

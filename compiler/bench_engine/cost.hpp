@@ -1,7 +1,7 @@
 // Run time of a bench probe on the Vulkan device: timestamped dispatches (the harness's
 // gpuMs) of the timed kernel and of the empty loop (emit/bench_probe.hpp explains the two
 // kernels), paired repeat by repeat; the cost is the median of the paired differences per
-// evaluation, with a distribution-free confidence interval (bench/cost_interval.hpp).
+// evaluation, with a distribution-free confidence interval (bench_engine/cost_interval.hpp).
 //
 // Calibration (docs/accuracy.md "How cost is measured"): the records per dispatch first,
 // up to what fills the device (kMaxRecords) or the target dispatch time; then the
@@ -45,7 +45,7 @@ struct CostMeasurement {
   double nsPerEval = 0;
   double nsPerEvalLow = 0, nsPerEvalHigh = 0;
   double confidence = 0;        // exact coverage of [low, high]
-  bool resolved = false;        // bench/cost_interval.hpp separatedFromEmptyLoop
+  bool resolved = false;        // bench_engine/cost_interval.hpp separatedFromEmptyLoop
   double nsResolution = 0;      // the timer's resolution over one dispatch, per evaluation
   double nsBaselineSpread = 0;  // max - min of the empty loop's dispatches, per evaluation
   double nsRaw = 0;             // median timed dispatch / evaluations

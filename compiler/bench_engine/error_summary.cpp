@@ -1,4 +1,4 @@
-#include "bench/error_summary.hpp"
+#include "bench_engine/error_summary.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 #pragma once
 #include <string>
 
-#include "bench/cost.hpp"
+#include "bench_engine/cost.hpp"
 
 namespace mb::bench {
 

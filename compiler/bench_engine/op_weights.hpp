@@ -1,4 +1,4 @@
-// Per-operation weights of bench/static_cost.hpp (which documents the table they come from).
+// Per-operation weights of bench_engine/static_cost.hpp (which documents the table they come from).
 #pragma once
 #include <cstdint>
 

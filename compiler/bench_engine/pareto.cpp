@@ -1,8 +1,8 @@
-#include "bench/pareto.hpp"
+#include "bench_engine/pareto.hpp"
 
 #include <algorithm>
 
-#include "bench/cost_interval.hpp"
+#include "bench_engine/cost_interval.hpp"
 
 namespace mb::bench {
 namespace {

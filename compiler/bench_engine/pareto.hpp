@@ -4,7 +4,7 @@
 //
 // Costs are measured, so each carries a confidence interval; errors are computed on fixed
 // samples and compared exactly. A cost only counts as lower where its interval lies wholly
-// below the other's (bench/cost_interval.hpp significantlyCheaper); overlapping intervals
+// below the other's (bench_engine/cost_interval.hpp significantlyCheaper); overlapping intervals
 // are a tie in cost, which the more accurate point wins. So a point joins the frontier only
 // where its cost differs significantly from the points it would otherwise step past, and a
 // point the classic rule keeps but the tie removes is reported as tied with the frontier

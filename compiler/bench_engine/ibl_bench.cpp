@@ -1,8 +1,8 @@
-#include "bench/ibl_bench.hpp"
+#include "bench_engine/ibl_bench.hpp"
 
 #include <cstdio>
 
-#include "bench/parallel.hpp"
+#include "bench_engine/parallel.hpp"
 #include "common/ibl_reference.hpp"
 #include "emit/emitter.hpp"
 #include "validate/sampler.hpp"

@@ -4,7 +4,7 @@
 #pragma once
 #include <string>
 
-#include "bench/bench_runner.hpp"
+#include "bench_engine/bench_runner.hpp"
 
 namespace mb::bench {
 

@@ -1,4 +1,4 @@
-#include "bench/bench_runner.hpp"
+#include "bench_engine/bench_runner.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -6,11 +6,11 @@
 #include <cstdio>
 #include <functional>
 
-#include "bench/ibl_bench.hpp"
-#include "bench/parallel.hpp"
-#include "bench/pareto.hpp"
-#include "bench/static_cost.hpp"
-#include "bench/yardstick.hpp"
+#include "bench_engine/ibl_bench.hpp"
+#include "bench_engine/parallel.hpp"
+#include "bench_engine/pareto.hpp"
+#include "bench_engine/static_cost.hpp"
+#include "bench_engine/yardstick.hpp"
 #include "emit/bench_probe.hpp"
 #include "permute/permutation.hpp"
 #include "validate/probe_program.hpp"

@@ -1,4 +1,4 @@
-#include "bench/cost_interval.hpp"
+#include "bench_engine/cost_interval.hpp"
 
 #include <algorithm>
 #include <cmath>

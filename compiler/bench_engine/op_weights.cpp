@@ -1,4 +1,4 @@
-#include "bench/op_weights.hpp"
+#include "bench_engine/op_weights.hpp"
 
 #define SPV_ENABLE_UTILITY_CODE
 #include <spirv/unified1/GLSL.std.450.h>

@@ -1,4 +1,4 @@
-#include "bench/cost_format.hpp"
+#include "bench_engine/cost_format.hpp"
 
 #include <cmath>
 #include <cstdio>

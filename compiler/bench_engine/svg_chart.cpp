@@ -1,11 +1,11 @@
-#include "bench/svg_chart.hpp"
+#include "bench_engine/svg_chart.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "bench/cost_format.hpp"
-#include "bench/report.hpp"
+#include "bench_engine/cost_format.hpp"
+#include "bench_engine/report.hpp"
 
 namespace mb::bench {
 namespace {
