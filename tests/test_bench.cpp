@@ -12,18 +12,26 @@
 #include "bench_engine/cost_interval.hpp"
 #include "bench_engine/ibl_bench.hpp"
 #include "bench_engine/pareto.hpp"
-#include "bench_engine/static_cost.hpp"
 #include "bench_engine/report.hpp"
+#include "bench_engine/static_cost.hpp"
 #include "bench_engine/svg_chart.hpp"
 #include "emit/bench_probe.hpp"
+#include "library/value_type.hpp"
+#include "lut/dfg_lut.hpp"
 #include "permute/permutation.hpp"
 #include "support/harness_support.hpp"
 #include "support/pipeline_support.hpp"
-#include "library/value_type.hpp"
 #include "validate/validation.hpp"
 
 using namespace mb;
 using namespace mb::bench;
+using mb::lut::buildDfgLut;
+using mb::lut::DfgLut;
+using mb::lut::DfgSample;
+using mb::lut::LutFormat;
+using mb::lut::quantize;
+using mb::lut::roundToHalf;
+using mb::lut::sampleBilinear;
 
 namespace {
 

@@ -7,10 +7,10 @@
 #include <functional>
 
 #include "bench_engine/ibl_bench.hpp"
-#include "bench_engine/parallel.hpp"
 #include "bench_engine/pareto.hpp"
 #include "bench_engine/static_cost.hpp"
 #include "bench_engine/yardstick.hpp"
+#include "core/parallel.hpp"
 #include "emit/bench_probe.hpp"
 #include "permute/permutation.hpp"
 #include "validate/probe_program.hpp"

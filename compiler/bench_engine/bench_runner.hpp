@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "core/progress_sink.hpp"
 #include "bench_engine/cost.hpp"
-#include "bench_engine/dfg_lut.hpp"
 #include "bench_engine/error_summary.hpp"
-#include "library/shader_library.hpp"
+#include "core/progress_sink.hpp"
 #include "emit/bench_probe.hpp"
+#include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
+#include "lut/dfg_lut.hpp"
 #include "permute/permutation.hpp"
 #include "validate/error_metrics.hpp"
 #include "validate/probe_program.hpp"
@@ -57,7 +57,7 @@ struct BenchGroup {
 
 struct LutItem {
   uint32_t size = 0;
-  LutFormat format = LutFormat::Fp32;
+  lut::LutFormat format = lut::LutFormat::Fp32;
   uint64_t bytes = 0;
   ErrorSummary error;  // against the integrated split-sum, like the env_brdf bricks
 };

@@ -2,8 +2,8 @@
 
 #include <cstdio>
 
-#include "bench_engine/parallel.hpp"
 #include "common/ibl_reference.hpp"
+#include "core/parallel.hpp"
 #include "emit/emitter.hpp"
 #include "validate/sampler.hpp"
 
@@ -41,12 +41,12 @@ bool measureDfgLuts(const ShaderLibrary& lib, const BenchOptions& o, IblSection&
   out.samplesFrom = b.id;
   out.samples = o.samples;
   for (uint32_t size : o.lutSizes) {
-    DfgLut exact = buildDfgLut(size);
-    for (LutFormat format : {LutFormat::Fp16, LutFormat::Fp32}) {
-      DfgLut lut = quantize(exact, format);
-      LutItem item{size, format, lut.bytes(format), {}};
+    lut::DfgLut exact = lut::buildDfgLut(size);
+    for (lut::LutFormat format : {lut::LutFormat::Fp16, lut::LutFormat::Fp32}) {
+      lut::DfgLut table = lut::quantize(exact, format);
+      LutItem item{size, format, table.bytes(format), {}};
       for (const Point& p : points) {
-        DfgSample d = sampleBilinear(lut, p.NoV, p.roughness);
+        lut::DfgSample d = lut::sampleBilinear(table, p.NoV, p.roughness);
         // Split sum with Schlick's F: f0 Int Gv + (1 - f0) Int Gv Fc (ibl_reference.hpp).
         for (double f : p.f0) item.error.add(f * d.y + (1.0 - f) * d.x, f * p.truth.gv + (1.0 - f) * p.truth.gvFc);
       }

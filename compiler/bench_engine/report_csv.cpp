@@ -36,7 +36,7 @@ std::string toCsv(const BenchReport& r) {
         << (it.onFrontier ? 1 : 0) << "," << it.tiedWith << "\n";
   if (r.hasIbl)
     for (const auto& l : r.ibl.luts)
-      s << "ibl,dfg_lut_" << l.size << "_" << lutFormatName(l.format) << ",lut,,,,,,,,,,,," << l.bytes
+      s << "ibl,dfg_lut_" << l.size << "_" << lut::lutFormatName(l.format) << ",lut,,,,,,,,,,,," << l.bytes
         << ",ground_truth," << errorColumns(l.error) << ",,\n";
   return s.str();
 }

@@ -101,7 +101,7 @@ nlohmann::json toJson(const BenchReport& r) {
     nlohmann::json luts = nlohmann::json::array();
     for (const auto& l : r.ibl.luts)
       luts.push_back(
-          {{"size", l.size}, {"format", lutFormatName(l.format)}, {"bytes", l.bytes}, {"error", toJson(l.error)}});
+          {{"size", l.size}, {"format", lut::lutFormatName(l.format)}, {"bytes", l.bytes}, {"error", toJson(l.error)}});
     out["ibl"] = {
         {"samples_from", r.ibl.samplesFrom},
         {"samples", r.ibl.samples},

@@ -70,8 +70,8 @@ void writeIbl(std::ostringstream& s, const BenchReport& r) {
           << ") | " << formatCost(it.cost) << " / eval, static " << staticText(it.staticCost) << " | "
           << g3(it.error.maxScaled()) << " | " << g3(it.error.meanScaled()) << " |\n";
   for (const auto& l : r.ibl.luts)
-    s << "| DFG LUT " << l.size << "×" << l.size << " " << lutFormatName(l.format) << " | " << l.bytes << " bytes | "
-      << g3(l.error.maxScaled()) << " | " << g3(l.error.meanScaled()) << " |\n";
+    s << "| DFG LUT " << l.size << "×" << l.size << " " << lut::lutFormatName(l.format) << " | " << l.bytes
+      << " bytes | " << g3(l.error.maxScaled()) << " | " << g3(l.error.meanScaled()) << " |\n";
   s << "\n";
 }
 

@@ -110,7 +110,7 @@ void printTable(const bench::BenchReport& r) {
   if (r.hasIbl)
     for (const auto& l : r.ibl.luts)
       std::printf("%-18s dfg_lut %3ux%-3u %-32s %-17s %-26s %8s %7s %10.3g %10.3g  %-12s\n", "ibl", l.size, l.size,
-                  bench::lutFormatName(l.format).c_str(), "-", "-", "-", "-", l.error.maxScaled(), l.error.meanScaled(),
+                  lut::lutFormatName(l.format).c_str(), "-", "-", "-", "-", l.error.maxScaled(), l.error.meanScaled(),
                   "ground_truth");
 }
 

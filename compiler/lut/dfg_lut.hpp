@@ -9,6 +9,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace mb::lut {
@@ -39,5 +40,33 @@ struct LutTable {
 // The kernel's input records: (NoV, perceptual roughness) per texel in storage order, as the
 // fp32 values the GPU sees (the CPU check reads the same floats back).
 std::vector<float> texelInputs(uint32_t size);
+
+// The same table in double, as `bench` measures a LUT's error against the split-sum integral
+// (bench_engine/ibl_bench.hpp): channels 0 and 1 only (x = Int Gv Fc, y = Int Gv) from the
+// quadrature in shaderlib/common/ibl_reference.hpp, in two planes, rounded to the storage
+// format, and read with bilinear filtering and clamp-to-edge emulated in double from the
+// rounded texels (a GPU sampler additionally rounds the fractional position to 8 bits on most
+// hardware, which this leaves out).
+enum class LutFormat { Fp16, Fp32 };
+std::string lutFormatName(LutFormat f);  // "fp16" / "fp32"
+
+struct DfgLut {
+  uint32_t size = 0;
+  std::vector<double> x, y;  // texel (i = n.v, j = roughness) at [j * size + i]
+  uint64_t bytes(LutFormat f) const { return uint64_t{size} * size * 2 * (f == LutFormat::Fp16 ? 2 : 4); }
+};
+
+// In double, at texel centres.
+DfgLut buildDfgLut(uint32_t size);
+// Every texel rounded to the storage format (round to nearest even).
+DfgLut quantize(const DfgLut& lut, LutFormat format);
+// IEEE binary16 rounding (nearest even, subnormals kept, overflow to infinity), as a double.
+double roundToHalf(double value);
+
+struct DfgSample {
+  double x = 0, y = 0;
+};
+// Bilinear filtering with clamp-to-edge at (u, v) in [0, 1]^2.
+DfgSample sampleBilinear(const DfgLut& lut, double u, double v);
 
 }  // namespace mb::lut

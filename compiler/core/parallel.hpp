@@ -1,5 +1,5 @@
-// A minimal parallel loop for the CPU side of bench: ground-truth quadratures (the
-// split-sum DFG integral costs ~1 ms a call) and LUT texels. References are pure functions
+// A minimal parallel loop for CPU-side measurements: ground-truth quadratures (the split-sum
+// DFG integral costs ~1 ms a call) and LUT texels. References are pure functions
 // (their only mutable state, the conditioning skew, is thread_local), so records can be
 // evaluated concurrently; callers accumulate results in index order, keeping outputs
 // independent of the thread count.
@@ -12,7 +12,7 @@
 #include <thread>
 #include <vector>
 
-namespace mb::bench {
+namespace mb {
 
 template <class Fn>
 void parallelFor(size_t n, Fn fn) {
@@ -36,4 +36,4 @@ void parallelFor(size_t n, Fn fn) {
   if (error) std::rethrow_exception(error);
 }
 
-}  // namespace mb::bench
+}  // namespace mb
