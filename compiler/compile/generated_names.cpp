@@ -271,6 +271,6 @@ std::map<std::string, GeneratedName> generatedIdentifiers(const ShaderLibrary& l
 
 }  // namespace mb
 
-// mb_core's link options name this symbol as undefined, so the linker takes this object (and
+// mb_compiler's link options name this symbol as undefined, so the linker takes this object (and
 // the registration above) into every program, also where nothing calls generatedIdentifiers.
 extern "C" const int mb_generated_names_source_linked = 1;

@@ -17,7 +17,7 @@ std::map<std::string, GeneratedName> generatedNamesOf(const ShaderLibrary& lib, 
   if (!registeredSource)
     throw std::logic_error(
         "no generated-names source is linked in (compile/generated_names.cpp registers it; "
-        "link the program against mb_core)");
+        "link the program against mb_compiler)");
   return registeredSource(lib, material);
 }
 
