@@ -1,7 +1,7 @@
-// Buffers and memory for one run(): the choice of a host-visible memory type, the mapped
-// input and output buffer of each segment of the chunk plan (inputs copied in at creation),
-// and one descriptor set per chunk binding that chunk's sub-ranges. Everything made here
-// belongs to the run's RunResources (vulkan_internal.hpp), which releases it.
+// Buffers for one run(): the mapped input and output buffer (vulkan_resources.hpp) of each
+// segment of the chunk plan (inputs copied in at creation), and one descriptor set per chunk
+// binding that chunk's sub-ranges. Everything made here belongs to the run's RunResources
+// (vulkan_internal.hpp), which releases it.
 #include <cstring>
 
 #include "harness/chunk_plan.hpp"
@@ -10,53 +10,19 @@
 #include "harness/vulkan_internal.hpp"
 
 namespace mb::harness {
-namespace {
-
-// Host-visible and coherent, so no flushes or invalidates are needed; cached if possible
-// because the host reads every output back.
-uint32_t hostMemoryType(const DeviceContext& ctx, uint32_t allowedTypes) {
-  const VkMemoryPropertyFlags required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  for (VkMemoryPropertyFlags wanted : {required | VK_MEMORY_PROPERTY_HOST_CACHED_BIT, required}) {
-    for (uint32_t i = 0; i < ctx.memory.memoryTypeCount; ++i) {
-      if ((allowedTypes & (1u << i)) && (ctx.memory.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
-    }
-  }
-  throw HarnessError("the device has no host-visible, host-coherent memory for storage buffers");
-}
-
-}  // namespace
-
-void createMappedBuffer(const DeviceContext& ctx, uint64_t bytes, VkBufferUsageFlags usage, MappedBuffer& b) {
-  VkBufferCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
-  info.size = bytes;
-  info.usage = usage;
-  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  MB_VK_CHECK(vkCreateBuffer(ctx.device, &info, nullptr, &b.buffer));
-
-  VkMemoryRequirements req{};
-  vkGetBufferMemoryRequirements(ctx.device, b.buffer, &req);
-  VkMemoryAllocateInfo alloc{};
-  alloc.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
-  alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex = hostMemoryType(ctx, req.memoryTypeBits);
-  MB_VK_CHECK(vkAllocateMemory(ctx.device, &alloc, nullptr, &b.memory));
-  MB_VK_CHECK(vkBindBufferMemory(ctx.device, b.buffer, b.memory, 0));
-  MB_VK_CHECK(vkMapMemory(ctx.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
-}
 
 // One input and one output buffer per segment; inputs are copied in at once.
 void createBuffers(const DeviceContext& ctx, const ChunkPlan& plan, const std::vector<float>& inputs, uint32_t inStride,
                    RunResources& res) {
   for (const Segment& seg : plan.segments) {
     MappedBuffer& in = res.inBuffers.emplace_back();
-    createMappedBuffer(ctx, seg.inBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, in);
+    in.create(ctx, seg.inBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     std::memset(in.mapped, 0, seg.inBytes);  // stride-0 dummy bytes stay defined
     const size_t floats = seg.records * inStride;
     if (floats) {
       std::memcpy(in.mapped, inputs.data() + seg.firstRecord * inStride, floats * sizeof(float));
     }
-    createMappedBuffer(ctx, seg.outBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, res.outBuffers.emplace_back());
+    res.outBuffers.emplace_back().create(ctx, seg.outBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   }
 }
 
