@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include "core/descriptor_bindings.hpp"
+
 namespace mb {
 
 void GlslWriter::line(const std::string& text) {
@@ -21,6 +23,13 @@ void GlslWriter::include(const std::string& sourcePath, const std::string& text,
   }
   // The directive names the number of the line that follows it.
   line("#line " + std::to_string(lines_ + 2) + " \"" + displayName_ + "\"");
+}
+
+void writeKernelBuffers(GlslWriter& w, const std::string& precision) {
+  w.line("layout(std430, set = 0, binding = " + std::to_string(kKernelInputBinding) + ") readonly buffer MbIn { " +
+         precision + "float mbIn[]; };");
+  w.line("layout(std430, set = 0, binding = " + std::to_string(kKernelOutputBinding) + ") writeonly buffer MbOut { " +
+         precision + "float mbOut[]; };");
 }
 
 std::string oneLineText(const std::string& text) {

@@ -22,6 +22,10 @@ class GlslWriter {
   int lines_ = 0;  // lines written so far
 };
 
+// The record buffers of the harness's kernel contract (harness/vulkan_harness.hpp): MbIn and
+// MbOut at their bindings, their floats qualified by `precision` ("" or "highp ").
+void writeKernelBuffers(GlslWriter& w, const std::string& precision = "");
+
 // `text` as one line of a `//` comment or of a #line file name: a newline or carriage return
 // would end the comment and make the rest of a path code (any control character is written
 // \xNN, as is '"', which would end the #line string), and a trailing backslash would splice the

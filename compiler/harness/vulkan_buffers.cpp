@@ -4,6 +4,7 @@
 // (vulkan_internal.hpp), which releases it.
 #include <cstring>
 
+#include "core/descriptor_bindings.hpp"
 #include "harness/chunk_plan.hpp"
 #include "harness/gpu_texture.hpp"
 #include "harness/vulkan_check.hpp"
@@ -56,16 +57,17 @@ void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const 
     const Chunk& c = plan.chunks[i];
     infos[2 * i] = {res.inBuffers[c.segment].buffer, c.inOffset, c.inRange};
     infos[2 * i + 1] = {res.outBuffers[c.segment].buffer, c.outOffset, c.outRange};
-    for (uint32_t binding = 0; binding < 2; ++binding) {
-      VkWriteDescriptorSet& w = writes[2 * i + binding];
+    for (uint32_t j = 0; j < 2; ++j) {
+      VkWriteDescriptorSet& w = writes[2 * i + j];
       w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
       w.dstSet = res.sets[i];
-      w.dstBinding = binding;
+      w.dstBinding = j == 0 ? kKernelInputBinding : kKernelOutputBinding;
       w.descriptorCount = 1;
       w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-      w.pBufferInfo = &infos[2 * i + binding];
+      w.pBufferInfo = &infos[2 * i + j];
     }
-    for (uint32_t k = 0; k < textureCount; ++k) writes.push_back(textures[k]->descriptorWrite(res.sets[i], 2 + k));
+    for (uint32_t k = 0; k < textureCount; ++k)
+      writes.push_back(textures[k]->descriptorWrite(res.sets[i], kKernelFirstTextureBinding + k));
   }
   vkUpdateDescriptorSets(ctx.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <list>
 
+#include "core/descriptor_bindings.hpp"
 #include "harness/chunk_plan.hpp"
 #include "harness/vulkan_check.hpp"
 #include "harness/vulkan_internal.hpp"
@@ -33,10 +34,14 @@ void createShaderModule(Kernel& k, const std::vector<uint32_t>& spirv) {
 }
 
 void createLayouts(Kernel& k) {
-  std::vector<VkDescriptorSetLayoutBinding> bindings(2 + k.sampledTextures);
+  static_assert(kKernelInputBinding == 0 && kKernelOutputBinding == 1 && kKernelFirstTextureBinding == 2,
+                "the kernel's bindings are numbered consecutively: MbIn, MbOut, then the sampled textures");
+  constexpr uint32_t firstTexture{kKernelFirstTextureBinding};
+  std::vector<VkDescriptorSetLayoutBinding> bindings(firstTexture + k.sampledTextures);
   for (uint32_t i = 0; i < bindings.size(); ++i) {
-    bindings[i].binding = i;  // 0 = MbIn, 1 = MbOut, then the sampled textures
-    bindings[i].descriptorType = i < 2 ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    bindings[i].binding = i;
+    bindings[i].descriptorType =
+        i < firstTexture ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     bindings[i].descriptorCount = 1;
     bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
   }

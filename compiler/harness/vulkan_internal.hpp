@@ -107,7 +107,7 @@ class Kernel {
   VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
   VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  uint32_t sampledTextures = 0;  // combined image samplers at bindings 2, 3, ...
+  uint32_t sampledTextures = 0;  // combined image samplers from kKernelFirstTextureBinding
   // Set once the first (warm-up) dispatch has been submitted (RunResult::firstDispatchMs).
   std::atomic<bool> warmedUp{false};
   std::mutex warmUpMutex;
@@ -140,7 +140,8 @@ void createDevice(DeviceContext& ctx, const DeviceOptions& options);
 // --- vulkan_buffers.cpp -----------------------------------------------------------------
 void createBuffers(const DeviceContext& ctx, const ChunkPlan& plan, const std::vector<float>& inputs, uint32_t inStride,
                    RunResources& res);
-// Textures (gpu_texture.hpp) are written at bindings 2, 3, ... of every chunk's set.
+// Textures (gpu_texture.hpp) are written at kKernelFirstTextureBinding, ... of every
+// chunk's set.
 void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const ChunkPlan& plan,
                           const std::vector<const GpuTexture*>& textures, RunResources& res);
 
