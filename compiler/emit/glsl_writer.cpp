@@ -1,7 +1,5 @@
 #include "emit/glsl_writer.hpp"
 
-#include <charconv>
-
 #include "core/descriptor_bindings.hpp"
 
 namespace mb {
@@ -44,14 +42,6 @@ std::string oneLineText(const std::string& text) {
   }
   if (!out.empty() && out.back() == '\\') out += ' ';
   return out;
-}
-
-std::string glslFloat(double value) {
-  char buf[64];
-  auto res = std::to_chars(buf, buf + sizeof buf, static_cast<float>(value));
-  std::string s(buf, res.ptr);
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // "1" -> "1.0"
-  return s;
 }
 
 }  // namespace mb

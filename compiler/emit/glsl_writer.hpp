@@ -4,6 +4,8 @@
 #pragma once
 #include <string>
 
+#include "core/glsl_float.hpp"  // glslFloat, for the writers of generated GLSL
+
 namespace mb {
 
 class GlslWriter {
@@ -31,9 +33,5 @@ void writeKernelBuffers(GlslWriter& w, const std::string& precision = "");
 // \xNN, as is '"', which would end the #line string), and a trailing backslash would splice the
 // next line into the comment (GLSL 4.50 spec 3.1 line continuation): a space follows it.
 std::string oneLineText(const std::string& text);
-
-// A float literal that round-trips through fp32 and is always a valid GLSL float
-// ("1.0", "0.04", "1e-05").
-std::string glslFloat(double value);
 
 }  // namespace mb
