@@ -4,6 +4,7 @@
 #include <cctype>
 #include <set>
 
+#include "core/descriptor_bindings.hpp"
 #include "emit/fp16_rewrite.hpp"
 #include "emit/glsl_writer.hpp"
 #include "emit/probe_scene.hpp"
@@ -110,13 +111,13 @@ void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::vector<std:
   // Under a mediump default the buffers still hold fp32 values: say highp, so the loss of
   // precision happens after the load, as with the explicit fp16 conversions.
   const std::string fp32 = p == ShaderPrecision::Fp16Mediump ? "highp " : "";
-  w.line("layout(std430, set = 0, binding = 0) readonly buffer MbIn { " + fp32 + "float mbIn[]; };");
-  w.line("layout(std430, set = 0, binding = 1) writeonly buffer MbOut { " + fp32 + "float mbOut[]; };");
+  writeKernelBuffers(w, fp32);
   w.line("layout(push_constant) uniform MbPush { uint count; } mbPush;");
   if (!params.empty()) {
     // std140 (GLSL 4.50 spec 7.6.2.2): the C++ header's struct mirrors it, checked against
     // the SPIRV-Cross reflection of the compiled module (docs/package.md).
-    w.line("layout(std140, set = 0, binding = 2) uniform MaterialParamsBlock {");
+    w.line("layout(std140, set = 0, binding = " + std::to_string(kKernelParamsBinding) +
+           ") uniform MaterialParamsBlock {");
     for (const auto& prm : params) w.line("    " + fp32 + toString(prm.type) + " " + prm.name + ";");
     w.line("} mbParams;");
   }

@@ -5,15 +5,10 @@
 // (shaderlib/common/engine_frame.glsl) at binding 1, the environment samplers at 2 and 3 and
 // the material's textures from binding 4.
 #pragma once
+#include "core/descriptor_bindings.hpp"  // the fragment stage's bindings
 #include "emit/emitter.hpp"
 
 namespace mb {
-
-// Descriptor bindings of the fragment stage (all in set 0).
-inline constexpr int kFragmentParamsBinding = 0;
-inline constexpr int kFragmentFrameBinding = 1;
-inline constexpr int kFragmentPrefilteredBinding = 2;
-inline constexpr int kFragmentDfgBinding = 3;
 
 // GLSL 450 (Vulkan) fragment shader of `perm`; fileName "<key>.frag" ("<key>.mediump.frag"
 // with `mediump`, the fp16 form for targets without 16-bit types, as emitPermutation's).

@@ -5,11 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "core/descriptor_bindings.hpp"  // kFirstTextureBinding
 #include "load/material_desc.hpp"
 
 namespace mb {
-
-inline constexpr int kFirstTextureBinding = 4;
 
 struct FragmentTexture {
   std::string param;     // the parameter it feeds; "normalTexture" perturbs the shading normal

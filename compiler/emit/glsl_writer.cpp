@@ -1,6 +1,6 @@
 #include "emit/glsl_writer.hpp"
 
-#include <charconv>
+#include "core/descriptor_bindings.hpp"
 
 namespace mb {
 
@@ -23,6 +23,13 @@ void GlslWriter::include(const std::string& sourcePath, const std::string& text,
   line("#line " + std::to_string(lines_ + 2) + " \"" + displayName_ + "\"");
 }
 
+void writeKernelBuffers(GlslWriter& w, const std::string& precision) {
+  w.line("layout(std430, set = 0, binding = " + std::to_string(kKernelInputBinding) + ") readonly buffer MbIn { " +
+         precision + "float mbIn[]; };");
+  w.line("layout(std430, set = 0, binding = " + std::to_string(kKernelOutputBinding) + ") writeonly buffer MbOut { " +
+         precision + "float mbOut[]; };");
+}
+
 std::string oneLineText(const std::string& text) {
   static const char* const kHex = "0123456789abcdef";
   std::string out;
@@ -35,14 +42,6 @@ std::string oneLineText(const std::string& text) {
   }
   if (!out.empty() && out.back() == '\\') out += ' ';
   return out;
-}
-
-std::string glslFloat(double value) {
-  char buf[64];
-  auto res = std::to_chars(buf, buf + sizeof buf, static_cast<float>(value));
-  std::string s(buf, res.ptr);
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // "1" -> "1.0"
-  return s;
 }
 
 }  // namespace mb

@@ -4,6 +4,8 @@
 #pragma once
 #include <string>
 
+#include "core/glsl_float.hpp"  // glslFloat, for the writers of generated GLSL
+
 namespace mb {
 
 class GlslWriter {
@@ -22,14 +24,14 @@ class GlslWriter {
   int lines_ = 0;  // lines written so far
 };
 
+// The record buffers of the harness's kernel contract (harness/vulkan_harness.hpp): MbIn and
+// MbOut at their bindings, their floats qualified by `precision` ("" or "highp ").
+void writeKernelBuffers(GlslWriter& w, const std::string& precision = "");
+
 // `text` as one line of a `//` comment or of a #line file name: a newline or carriage return
 // would end the comment and make the rest of a path code (any control character is written
 // \xNN, as is '"', which would end the #line string), and a trailing backslash would splice the
 // next line into the comment (GLSL 4.50 spec 3.1 line continuation): a space follows it.
 std::string oneLineText(const std::string& text);
-
-// A float literal that round-trips through fp32 and is always a valid GLSL float
-// ("1.0", "0.04", "1e-05").
-std::string glslFloat(double value);
 
 }  // namespace mb

@@ -16,17 +16,6 @@ namespace {
 constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr uint32_t kTexelBytes = 16;
 
-// Device-local where the device has it (a discrete GPU), else any type the image allows
-// (lavapipe's one heap is both).
-uint32_t imageMemoryType(const DeviceContext& ctx, uint32_t allowedTypes) {
-  for (VkMemoryPropertyFlags wanted :
-       {VkMemoryPropertyFlags{VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT}, VkMemoryPropertyFlags{0}}) {
-    for (uint32_t i = 0; i < ctx.memory.memoryTypeCount; ++i)
-      if ((allowedTypes & (1u << i)) && (ctx.memory.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
-  }
-  throw HarnessError("the device has no memory type for a sampled image");
-}
-
 void checkLevels(bool cube, const std::vector<TextureLevel>& levels) {
   if (levels.empty()) throw HarnessError("uploadTexture: no mip levels");
   const uint32_t layers = cube ? 6 : 1;
@@ -72,12 +61,8 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, uint32_t mips, uint32_t la
 GpuTexture::GpuTexture(std::shared_ptr<DeviceContext> ctx) : ctx_(std::move(ctx)) {}
 
 GpuTexture::~GpuTexture() {
-  VkDevice device = ctx_->device;
-  if (sampler_) vkDestroySampler(device, sampler_, nullptr);
-  if (view_) vkDestroyImageView(device, view_, nullptr);
-  if (image_) vkDestroyImage(device, image_, nullptr);
-  if (memory_) vkFreeMemory(device, memory_, nullptr);
-}
+  if (sampler_) vkDestroySampler(ctx_->device, sampler_, nullptr);
+}  // then the image, before ctx_
 
 VkWriteDescriptorSet GpuTexture::descriptorWrite(VkDescriptorSet set, uint32_t binding) const {
   VkWriteDescriptorSet w{};
@@ -112,15 +97,8 @@ std::shared_ptr<GpuTexture> uploadTexture(VulkanHarness& gpu, bool cube, const s
   info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  MB_VK_CHECK(vkCreateImage(ctx->device, &info, nullptr, &t->image_));
-  VkMemoryRequirements req{};
-  vkGetImageMemoryRequirements(ctx->device, t->image_, &req);
-  VkMemoryAllocateInfo alloc{};
-  alloc.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
-  alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex = imageMemoryType(*ctx, req.memoryTypeBits);
-  MB_VK_CHECK(vkAllocateMemory(ctx->device, &alloc, nullptr, &t->memory_));
-  MB_VK_CHECK(vkBindImageMemory(ctx->device, t->image_, t->memory_, 0));
+  t->image_.create(*ctx, info, cube ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_ASPECT_COLOR_BIT);
+  const VkImage image = t->image_.image;
 
   // One staging buffer with every level back to back; each level's layers are consecutive
   // width x height slices, which is what vkCmdCopyBufferToImage reads for a layer range.
@@ -134,36 +112,26 @@ std::shared_ptr<GpuTexture> uploadTexture(VulkanHarness& gpu, bool cube, const s
     copies.push_back(c);
     total += levels[i].rgba.size() * sizeof(float);
   }
-  RunResources res(*ctx);
-  MappedBuffer& staging = res.inBuffers.emplace_back();
-  createMappedBuffer(*ctx, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
+  MappedBuffer staging;
+  staging.create(*ctx, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
   for (uint32_t i = 0; i < mips; ++i)
     std::memcpy(static_cast<char*>(staging.mapped) + copies[i].bufferOffset, levels[i].rgba.data(),
                 levels[i].rgba.size() * sizeof(float));
 
-  allocateCommandBuffer(*ctx, res);
-  VkCommandBufferBeginInfo begin{};
-  begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  MB_VK_CHECK(vkBeginCommandBuffer(res.cmd, &begin));
-  imageBarrier(res.cmd, t->image_, mips, layers, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-               VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-  vkCmdCopyBufferToImage(res.cmd, staging.buffer, t->image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                         static_cast<uint32_t>(copies.size()), copies.data());
-  // Readable by any shader stage afterwards: the preview's fragment shader and compute kernels.
-  imageBarrier(res.cmd, t->image_, mips, layers, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
-               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT);
-  MB_VK_CHECK(vkEndCommandBuffer(res.cmd));
-  submitAndWait(*ctx, res);
-
-  VkImageViewCreateInfo viewInfo{};
-  viewInfo.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
-  viewInfo.image = t->image_;
-  viewInfo.viewType = cube ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_2D;
-  viewInfo.format = kFormat;
-  viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, mips, 0, layers};
-  MB_VK_CHECK(vkCreateImageView(ctx->device, &viewInfo, nullptr, &t->view_));
+  {
+    // Released before the staging buffer, which the copy reads until it has finished.
+    OneShotCommands commands(*ctx);
+    const VkCommandBuffer cmd = commands.cmd();
+    imageBarrier(cmd, image, mips, layers, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+                 VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    vkCmdCopyBufferToImage(cmd, staging.buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           static_cast<uint32_t>(copies.size()), copies.data());
+    // Readable by any shader stage afterwards: the preview's fragment shader and compute kernels.
+    imageBarrier(cmd, image, mips, layers, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
+                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT);
+    commands.submitAndWait("the texture upload");
+  }
 
   VkSamplerCreateInfo s{};
   s.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
@@ -177,7 +145,7 @@ std::shared_ptr<GpuTexture> uploadTexture(VulkanHarness& gpu, bool cube, const s
   s.maxLod = static_cast<float>(mips - 1);
   s.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
   MB_VK_CHECK(vkCreateSampler(ctx->device, &s, nullptr, &t->sampler_));
-  t->info_ = {t->sampler_, t->view_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  t->info_ = {t->sampler_, t->image_.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   return t;
 }
 

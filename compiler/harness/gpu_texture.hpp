@@ -14,6 +14,8 @@
 #include <memory>
 #include <vector>
 
+#include "harness/vulkan_resources.hpp"
+
 namespace mb::harness {
 
 class VulkanHarness;
@@ -31,8 +33,8 @@ class GpuTexture {
   GpuTexture(const GpuTexture&) = delete;
   GpuTexture& operator=(const GpuTexture&) = delete;
 
-  VkImage image() const { return image_; }
-  VkImageView view() const { return view_; }
+  VkImage image() const { return image_.image; }
+  VkImageView view() const { return image_.view; }
   VkSampler sampler() const { return sampler_; }
   bool isCube() const { return cube_; }
   uint32_t mipLevels() const { return mips_; }
@@ -46,9 +48,7 @@ class GpuTexture {
   friend std::shared_ptr<GpuTexture> uploadTexture(VulkanHarness&, bool, const std::vector<TextureLevel>&);
   explicit GpuTexture(std::shared_ptr<DeviceContext> ctx);
   std::shared_ptr<DeviceContext> ctx_;  // keeps the device alive as long as the texture
-  VkImage image_ = VK_NULL_HANDLE;
-  VkDeviceMemory memory_ = VK_NULL_HANDLE;
-  VkImageView view_ = VK_NULL_HANDLE;
+  DeviceImage image_;
   VkSampler sampler_ = VK_NULL_HANDLE;
   VkDescriptorImageInfo info_{};
   bool cube_ = false;

@@ -1,10 +1,13 @@
 // The graphics path (vulkan_graphics.hpp): render pass, framebuffer, pipeline, buffers and
-// the one command buffer of a job, all owned by a GraphicsResources that releases them on
-// every exit path, as RunResources does for a compute run.
+// the one command buffer of a job (the buffers, images and command buffer are the harness's
+// shared types, vulkan_resources.hpp), all owned by a GraphicsResources that releases them
+// on every exit path, as RunResources does for a compute run.
 #include "harness/vulkan_graphics.hpp"
 
 #include <chrono>
 #include <cstring>
+#include <deque>
+#include <optional>
 
 #include "harness/vulkan_check.hpp"
 #include "harness/vulkan_internal.hpp"
@@ -14,36 +17,17 @@ namespace {
 
 constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-// A 512x512 preview takes well under a second on lavapipe; this only catches a hang.
-constexpr uint64_t kFenceTimeoutNs = uint64_t{300} * 1000 * 1000 * 1000;
 
 double msSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
-
-struct Buffer {
-  VkBuffer buffer = VK_NULL_HANDLE;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  void* mapped = nullptr;
-};
-
-struct Image {
-  VkImage image = VK_NULL_HANDLE;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  VkImageView view = VK_NULL_HANDLE;
-};
 
 struct GraphicsResources {
   explicit GraphicsResources(const DeviceContext& ctx) : ctx(ctx), device(ctx.device) {}
   GraphicsResources(const GraphicsResources&) = delete;
   GraphicsResources& operator=(const GraphicsResources&) = delete;
   ~GraphicsResources() {
-    if (inFlight) {
-      std::lock_guard lock(ctx.queueMutex);
-      vkDeviceWaitIdle(device);
-    }
-    if (fence) vkDestroyFence(device, fence, nullptr);
-    if (commandPool) vkDestroyCommandPool(device, commandPool, nullptr);
+    commands.reset();  // first: it waits for a submit that we did not see finish
     if (descriptorPool) vkDestroyDescriptorPool(device, descriptorPool, nullptr);
     if (pipeline) vkDestroyPipeline(device, pipeline, nullptr);
     if (pipelineLayout) vkDestroyPipelineLayout(device, pipelineLayout, nullptr);
@@ -51,21 +35,12 @@ struct GraphicsResources {
     for (VkShaderModule m : modules) vkDestroyShaderModule(device, m, nullptr);
     if (framebuffer) vkDestroyFramebuffer(device, framebuffer, nullptr);
     if (renderPass) vkDestroyRenderPass(device, renderPass, nullptr);
-    for (Image& i : images) {
-      if (i.view) vkDestroyImageView(device, i.view, nullptr);
-      if (i.image) vkDestroyImage(device, i.image, nullptr);
-      if (i.memory) vkFreeMemory(device, i.memory, nullptr);
-    }
-    for (Buffer& b : buffers) {
-      if (b.buffer) vkDestroyBuffer(device, b.buffer, nullptr);
-      if (b.memory) vkFreeMemory(device, b.memory, nullptr);
-    }
-  }
+  }  // the images (after the framebuffer that views them) and buffers release themselves
 
   const DeviceContext& ctx;
   VkDevice device;
-  std::vector<Buffer> buffers;  // vertices, indices, uniforms, read-back (in that order)
-  std::vector<Image> images;    // colour targets, then depth
+  std::deque<MappedBuffer> buffers;  // vertices, indices, uniforms, read-back (in that order)
+  std::deque<DeviceImage> images;    // colour targets, then depth
   VkRenderPass renderPass = VK_NULL_HANDLE;
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
   std::vector<VkShaderModule> modules;
@@ -74,45 +49,19 @@ struct GraphicsResources {
   VkPipeline pipeline = VK_NULL_HANDLE;
   VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
   std::vector<VkDescriptorSet> sets;
-  VkCommandPool commandPool = VK_NULL_HANDLE;
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
-  VkFence fence = VK_NULL_HANDLE;
-  bool inFlight = false;
+  std::optional<OneShotCommands> commands;
 };
 
-uint32_t memoryType(const DeviceContext& ctx, uint32_t allowed, VkMemoryPropertyFlags wanted, const char* what) {
-  for (uint32_t i = 0; i < ctx.memory.memoryTypeCount; ++i)
-    if ((allowed & (1u << i)) && (ctx.memory.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
-  throw HarnessError(std::string("the device has no suitable memory for ") + what);
-}
-
-// Host-visible, coherent and mapped, filled with `bytes` when given.
-Buffer& createBuffer(GraphicsResources& res, uint64_t size, VkBufferUsageFlags usage, const void* bytes) {
-  Buffer& b = res.buffers.emplace_back();
-  VkBufferCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
-  info.size = size;
-  info.usage = usage;
-  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  MB_VK_CHECK(vkCreateBuffer(res.device, &info, nullptr, &b.buffer));
-  VkMemoryRequirements req{};
-  vkGetBufferMemoryRequirements(res.device, b.buffer, &req);
-  VkMemoryAllocateInfo alloc{};
-  alloc.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
-  alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex =
-      memoryType(res.ctx, req.memoryTypeBits,
-                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "graphics buffers");
-  MB_VK_CHECK(vkAllocateMemory(res.device, &alloc, nullptr, &b.memory));
-  MB_VK_CHECK(vkBindBufferMemory(res.device, b.buffer, b.memory, 0));
-  MB_VK_CHECK(vkMapMemory(res.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
+// Host-visible, coherent and mapped (vulkan_resources.hpp), filled with `bytes` when given.
+MappedBuffer& createBuffer(GraphicsResources& res, uint64_t size, VkBufferUsageFlags usage, const void* bytes) {
+  MappedBuffer& b = res.buffers.emplace_back();
+  b.create(res.ctx, size, usage);
   if (bytes) std::memcpy(b.mapped, bytes, size);
   return b;
 }
 
 void createImage(GraphicsResources& res, const GraphicsJob& job, VkFormat format, VkImageUsageFlags usage,
                  VkImageAspectFlags aspect) {
-  Image& i = res.images.emplace_back();
   VkImageCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
   info.imageType = VK_IMAGE_TYPE_2D;
@@ -124,22 +73,7 @@ void createImage(GraphicsResources& res, const GraphicsJob& job, VkFormat format
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  MB_VK_CHECK(vkCreateImage(res.device, &info, nullptr, &i.image));
-  VkMemoryRequirements req{};
-  vkGetImageMemoryRequirements(res.device, i.image, &req);
-  VkMemoryAllocateInfo alloc{};
-  alloc.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
-  alloc.allocationSize = req.size;
-  alloc.memoryTypeIndex = memoryType(res.ctx, req.memoryTypeBits, 0, "render targets");
-  MB_VK_CHECK(vkAllocateMemory(res.device, &alloc, nullptr, &i.memory));
-  MB_VK_CHECK(vkBindImageMemory(res.device, i.image, i.memory, 0));
-  VkImageViewCreateInfo view{};
-  view.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
-  view.image = i.image;
-  view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-  view.format = format;
-  view.subresourceRange = {aspect, 0, 1, 0, 1};
-  MB_VK_CHECK(vkCreateImageView(res.device, &view, nullptr, &i.view));
+  res.images.emplace_back().create(res.ctx, info, VK_IMAGE_VIEW_TYPE_2D, aspect);
 }
 
 // Colour targets end in TRANSFER_SRC for the copy to the read-back buffer; depth is not kept.
@@ -184,7 +118,7 @@ void createRenderPass(GraphicsResources& res, const GraphicsJob& job) {
   MB_VK_CHECK(vkCreateRenderPass(res.device, &info, nullptr, &res.renderPass));
 
   std::vector<VkImageView> views;
-  for (const Image& i : res.images) views.push_back(i.view);
+  for (const DeviceImage& i : res.images) views.push_back(i.view);
   VkFramebufferCreateInfo fb{};
   fb.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
   fb.renderPass = res.renderPass;
@@ -353,7 +287,7 @@ void createDescriptorSets(GraphicsResources& res, const GraphicsJob& job) {
     std::vector<VkWriteDescriptorSet> writes;
     for (size_t u = 0; u < draw.uniforms.size(); ++u) {
       const auto& bytes = draw.uniforms[u].bytes;
-      Buffer& b = createBuffer(res, bytes.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, bytes.data());
+      const MappedBuffer& b = createBuffer(res, bytes.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, bytes.data());
       bufferInfos[u] = {b.buffer, 0, bytes.size()};
       VkWriteDescriptorSet& w = writes.emplace_back();
       w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
@@ -380,22 +314,7 @@ void createDescriptorSets(GraphicsResources& res, const GraphicsJob& job) {
 
 void recordCommands(GraphicsResources& res, const GraphicsJob& job, VkBuffer vertices, VkBuffer indices,
                     VkBuffer readBack) {
-  VkCommandPoolCreateInfo poolInfo{};
-  poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-  poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-  poolInfo.queueFamilyIndex = res.ctx.queueFamily;
-  MB_VK_CHECK(vkCreateCommandPool(res.device, &poolInfo, nullptr, &res.commandPool));
-  VkCommandBufferAllocateInfo alloc{};
-  alloc.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-  alloc.commandPool = res.commandPool;
-  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  alloc.commandBufferCount = 1;
-  MB_VK_CHECK(vkAllocateCommandBuffers(res.device, &alloc, &res.cmd));
-
-  VkCommandBufferBeginInfo begin{};
-  begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  MB_VK_CHECK(vkBeginCommandBuffer(res.cmd, &begin));
+  const VkCommandBuffer cmd = res.commands.emplace(res.ctx).cmd();
 
   std::vector<VkClearValue> clears(job.colorTargets + 1);
   for (uint32_t i = 0; i < job.colorTargets; ++i) {
@@ -410,14 +329,13 @@ void recordCommands(GraphicsResources& res, const GraphicsJob& job, VkBuffer ver
   pass.renderArea = {{0, 0}, {job.width, job.height}};
   pass.clearValueCount = static_cast<uint32_t>(clears.size());
   pass.pClearValues = clears.data();
-  vkCmdBeginRenderPass(res.cmd, &pass, VK_SUBPASS_CONTENTS_INLINE);
-  vkCmdBindPipeline(res.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, res.pipeline);
+  vkCmdBeginRenderPass(cmd, &pass, VK_SUBPASS_CONTENTS_INLINE);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, res.pipeline);
   const VkDeviceSize zero = 0;
-  vkCmdBindVertexBuffers(res.cmd, 0, 1, &vertices, &zero);
-  vkCmdBindIndexBuffer(res.cmd, indices, 0, VK_INDEX_TYPE_UINT32);
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &zero);
+  vkCmdBindIndexBuffer(cmd, indices, 0, VK_INDEX_TYPE_UINT32);
   for (size_t d = 0; d < job.draws.size(); ++d) {
-    vkCmdBindDescriptorSets(res.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, res.pipelineLayout, 0, 1, &res.sets[d], 0,
-                            nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, res.pipelineLayout, 0, 1, &res.sets[d], 0, nullptr);
     const auto& area = job.draws[d].viewport;
     const VkRect2D scissor =
         area[2] ? VkRect2D{{static_cast<int32_t>(area[0]), static_cast<int32_t>(area[1])}, {area[2], area[3]}}
@@ -428,15 +346,15 @@ void recordCommands(GraphicsResources& res, const GraphicsJob& job, VkBuffer ver
                               static_cast<float>(scissor.extent.height),
                               0.0f,
                               1.0f};
-    vkCmdSetViewport(res.cmd, 0, 1, &viewport);
-    vkCmdSetScissor(res.cmd, 0, 1, &scissor);
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
     const auto& push = job.draws[d].pushConstants;
     if (!push.empty())
-      vkCmdPushConstants(res.cmd, res.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, static_cast<uint32_t>(push.size()),
+      vkCmdPushConstants(cmd, res.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, static_cast<uint32_t>(push.size()),
                          push.data());
-    vkCmdDrawIndexed(res.cmd, static_cast<uint32_t>(job.mesh.indices.size()), 1, 0, 0, 0);
+    vkCmdDrawIndexed(cmd, static_cast<uint32_t>(job.mesh.indices.size()), 1, 0, 0, 0);
   }
-  vkCmdEndRenderPass(res.cmd);
+  vkCmdEndRenderPass(cmd);
 
   const VkDeviceSize targetBytes = VkDeviceSize{job.width} * job.height * 4 * sizeof(float);
   for (uint32_t i = 0; i < job.colorTargets; ++i) {
@@ -444,34 +362,14 @@ void recordCommands(GraphicsResources& res, const GraphicsJob& job, VkBuffer ver
     copy.bufferOffset = targetBytes * i;
     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     copy.imageExtent = {job.width, job.height, 1};
-    vkCmdCopyImageToBuffer(res.cmd, res.images[i].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readBack, 1, &copy);
+    vkCmdCopyImageToBuffer(cmd, res.images[i].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readBack, 1, &copy);
   }
   VkMemoryBarrier toHost{};
   toHost.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
   toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
   toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(res.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr,
-                       0, nullptr);
-  MB_VK_CHECK(vkEndCommandBuffer(res.cmd));
-}
-
-void submitAndWait(GraphicsResources& res) {
-  VkFenceCreateInfo fenceInfo{};
-  fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-  MB_VK_CHECK(vkCreateFence(res.device, &fenceInfo, nullptr, &res.fence));
-  VkSubmitInfo submit{};
-  submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &res.cmd;
-  {
-    std::lock_guard lock(res.ctx.queueMutex);
-    MB_VK_CHECK(vkQueueSubmit(res.ctx.queue, 1, &submit, res.fence));
-  }
-  res.inFlight = true;
-  const VkResult waited = vkWaitForFences(res.device, 1, &res.fence, VK_TRUE, kFenceTimeoutNs);
-  if (waited == VK_TIMEOUT) throw HarnessError("render: the draws did not finish within 300 s");
-  MB_VK_CHECK(waited);
-  res.inFlight = false;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0,
+                       nullptr);
 }
 
 void checkJob(const DeviceContext& ctx, const GraphicsJob& job) {
@@ -506,21 +404,19 @@ GraphicsResult render(VulkanHarness& gpu, const GraphicsJob& job) {
   createPipeline(res, job);
   result.pipelineMs = msSince(t0);
 
-  const Buffer& vertices = createBuffer(res, job.mesh.vertices.size() * sizeof(float),
-                                        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, job.mesh.vertices.data());
-  const VkBuffer vertexBuffer = vertices.buffer;  // the vector may grow below
+  const VkBuffer vertexBuffer = createBuffer(res, job.mesh.vertices.size() * sizeof(float),
+                                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, job.mesh.vertices.data())
+                                    .buffer;
   const VkBuffer indexBuffer = createBuffer(res, job.mesh.indices.size() * sizeof(uint32_t),
                                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT, job.mesh.indices.data())
                                    .buffer;
   createDescriptorSets(res, job);
   const size_t targetFloats = size_t{job.width} * job.height * 4;
-  createBuffer(res, targetFloats * sizeof(float) * job.colorTargets, VK_BUFFER_USAGE_TRANSFER_DST_BIT, nullptr);
-  const Buffer readBack = res.buffers.back();
+  const MappedBuffer& readBack =
+      createBuffer(res, targetFloats * sizeof(float) * job.colorTargets, VK_BUFFER_USAGE_TRANSFER_DST_BIT, nullptr);
   recordCommands(res, job, vertexBuffer, indexBuffer, readBack.buffer);
 
-  const auto t1 = std::chrono::steady_clock::now();
-  submitAndWait(res);
-  result.renderMs = msSince(t1);
+  result.renderMs = res.commands->submitAndWait("render: the draws");
   const auto* pixels = static_cast<const float*>(readBack.mapped);
   for (uint32_t i = 0; i < job.colorTargets; ++i)
     result.targets.emplace_back(pixels + targetFloats * i, pixels + targetFloats * (i + 1));

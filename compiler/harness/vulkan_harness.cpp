@@ -1,9 +1,9 @@
 // The Vulkan compute harness (see vulkan_harness.hpp for the kernel contract).
 //
 // This file owns the pipelines and the dispatch: a Kernel's shader module, layouts and
-// compute pipeline; per run the timestamp query pool, the command buffer with every
-// chunk's dispatch, the submit and wait, the GPU time from the timestamps and the copy of
-// the outputs; and the VulkanHarness methods that tie these to the device
+// compute pipeline; per run the timestamp query pool, the one-shot command buffer
+// (vulkan_resources.hpp) with every chunk's dispatch, the GPU time from the timestamps and
+// the copy of the outputs; and the VulkanHarness methods that tie these to the device
 // (vulkan_device.cpp) and the buffers (vulkan_buffers.cpp). The objects they share are in
 // vulkan_internal.hpp.
 #include "harness/vulkan_harness.hpp"
@@ -12,16 +12,13 @@
 #include <cstring>
 #include <list>
 
+#include "core/descriptor_bindings.hpp"
 #include "harness/chunk_plan.hpp"
 #include "harness/vulkan_check.hpp"
 #include "harness/vulkan_internal.hpp"
 
 namespace mb::harness {
 namespace {
-
-// A probe run takes well under a second on lavapipe and a big stress run seconds; five
-// minutes means the kernel hung, and a clear error beats a test that never ends.
-constexpr uint64_t kFenceTimeoutSeconds = 300;
 
 constexpr uint32_t kSpirvMagic = 0x07230203;
 
@@ -37,10 +34,14 @@ void createShaderModule(Kernel& k, const std::vector<uint32_t>& spirv) {
 }
 
 void createLayouts(Kernel& k) {
-  std::vector<VkDescriptorSetLayoutBinding> bindings(2 + k.sampledTextures);
+  static_assert(kKernelInputBinding == 0 && kKernelOutputBinding == 1 && kKernelFirstTextureBinding == 2,
+                "the kernel's bindings are numbered consecutively: MbIn, MbOut, then the sampled textures");
+  constexpr uint32_t firstTexture{kKernelFirstTextureBinding};
+  std::vector<VkDescriptorSetLayoutBinding> bindings(firstTexture + k.sampledTextures);
   for (uint32_t i = 0; i < bindings.size(); ++i) {
-    bindings[i].binding = i;  // 0 = MbIn, 1 = MbOut, then the sampled textures
-    bindings[i].descriptorType = i < 2 ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    bindings[i].binding = i;
+    bindings[i].descriptorType =
+        i < firstTexture ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     bindings[i].descriptorCount = 1;
     bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
   }
@@ -83,84 +84,30 @@ void createQueryPool(const DeviceContext& ctx, uint32_t chunkCount, RunResources
   MB_VK_CHECK(vkCreateQueryPool(ctx.device, &info, nullptr, &res.queryPool));
 }
 
-}  // namespace
-
-void allocateCommandBuffer(const DeviceContext& ctx, RunResources& res) {
-  VkCommandPoolCreateInfo poolInfo{};
-  poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-  poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-  poolInfo.queueFamilyIndex = ctx.queueFamily;
-  MB_VK_CHECK(vkCreateCommandPool(ctx.device, &poolInfo, nullptr, &res.commandPool));
-
-  VkCommandBufferAllocateInfo alloc{};
-  alloc.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-  alloc.commandPool = res.commandPool;
-  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  alloc.commandBufferCount = 1;
-  MB_VK_CHECK(vkAllocateCommandBuffers(ctx.device, &alloc, &res.cmd));
-}
-
-namespace {
-
 // All chunks in one command buffer. Chunks touch disjoint ranges, so no barriers between
 // dispatches; one barrier at the end makes the shader writes visible to the host.
 void recordCommands(const Kernel& kernel, const ChunkPlan& plan, RunResources& res) {
-  VkCommandBufferBeginInfo begin{};
-  begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  MB_VK_CHECK(vkBeginCommandBuffer(res.cmd, &begin));
-
+  const VkCommandBuffer cmd = res.commands->cmd();
   const auto chunkCount = static_cast<uint32_t>(plan.chunks.size());
-  if (res.queryPool) vkCmdResetQueryPool(res.cmd, res.queryPool, 0, 2 * chunkCount);
-  vkCmdBindPipeline(res.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernel.pipeline);
+  if (res.queryPool) vkCmdResetQueryPool(cmd, res.queryPool, 0, 2 * chunkCount);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernel.pipeline);
   for (uint32_t i = 0; i < chunkCount; ++i) {
     const uint32_t count = plan.chunks[i].records;
-    vkCmdBindDescriptorSets(res.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernel.pipelineLayout, 0, 1, &res.sets[i], 0,
-                            nullptr);
-    vkCmdPushConstants(res.cmd, kernel.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(count), &count);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernel.pipelineLayout, 0, 1, &res.sets[i], 0, nullptr);
+    vkCmdPushConstants(cmd, kernel.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(count), &count);
     // Both stamps at the compute stage: the first waits for the previous chunk's shaders,
     // so chunk intervals do not overlap and their sum does not count time twice.
-    if (res.queryPool) vkCmdWriteTimestamp(res.cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, res.queryPool, 2 * i);
-    vkCmdDispatch(res.cmd, (count + kLocalSizeX - 1) / kLocalSizeX, 1, 1);
-    if (res.queryPool) vkCmdWriteTimestamp(res.cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, res.queryPool, 2 * i + 1);
+    if (res.queryPool) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, res.queryPool, 2 * i);
+    vkCmdDispatch(cmd, (count + kLocalSizeX - 1) / kLocalSizeX, 1, 1);
+    if (res.queryPool) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, res.queryPool, 2 * i + 1);
   }
   VkMemoryBarrier toHost{};
   toHost.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
   toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(res.cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0,
-                       nullptr, 0, nullptr);
-  MB_VK_CHECK(vkEndCommandBuffer(res.cmd));
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr,
+                       0, nullptr);
 }
-
-}  // namespace
-
-double submitAndWait(const DeviceContext& ctx, RunResources& res) {
-  VkFenceCreateInfo fenceInfo{};
-  fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-  MB_VK_CHECK(vkCreateFence(ctx.device, &fenceInfo, nullptr, &res.fence));
-
-  VkSubmitInfo submit{};
-  submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &res.cmd;
-  const auto start = std::chrono::steady_clock::now();
-  {
-    std::lock_guard lock(ctx.queueMutex);
-    MB_VK_CHECK(vkQueueSubmit(ctx.queue, 1, &submit, res.fence));
-  }
-  res.inFlight = true;
-  const VkResult waited =
-      vkWaitForFences(ctx.device, 1, &res.fence, VK_TRUE, kFenceTimeoutSeconds * 1000 * 1000 * 1000);
-  if (waited == VK_TIMEOUT) {
-    throw HarnessError("the kernel did not finish within " + std::to_string(kFenceTimeoutSeconds) + " s");
-  }
-  MB_VK_CHECK(waited);
-  res.inFlight = false;
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-namespace {
 
 // Sum over chunks of (end - begin) ticks, converted with timestampPeriod (ns per tick).
 double timestampMs(const DeviceContext& ctx, uint32_t chunkCount, const RunResources& res) {
@@ -251,9 +198,9 @@ RunResult VulkanHarness::Impl::runOnce(Kernel& kernel, const std::vector<float>&
   createBuffers(ctx, plan, inputs, inStride, res);
   createDescriptorSets(ctx, kernel, plan, textures, res);
   createQueryPool(ctx, chunkCount, res);
-  allocateCommandBuffer(ctx, res);
+  res.commands.emplace(ctx);
   recordCommands(kernel, plan, res);
-  const double wallMs = submitAndWait(ctx, res);
+  const double wallMs = res.commands->submitAndWait("the kernel");
 
   result.chunks = chunkCount;
   result.gpuTimestamps = res.queryPool != VK_NULL_HANDLE;

@@ -1,5 +1,6 @@
 // Internal to compiler/harness: the objects the harness's files share, and the steps one
 // file performs for another. vulkan_device.cpp makes the instance and the device,
+// vulkan_resources.cpp the buffers, images and one-shot command buffers of every path,
 // vulkan_buffers.cpp a run's buffers and descriptor sets, vulkan_harness.cpp the pipelines,
 // the dispatch and the VulkanHarness methods. Not part of the harness's interface:
 // everything else includes vulkan_harness.hpp.
@@ -13,12 +14,15 @@
 
 #include <atomic>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "harness/vulkan_harness.hpp"
+#include "harness/vulkan_resources.hpp"
 
 namespace mb::harness {
 
@@ -103,51 +107,29 @@ class Kernel {
   VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
   VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  uint32_t sampledTextures = 0;  // combined image samplers at bindings 2, 3, ...
+  uint32_t sampledTextures = 0;  // combined image samplers from kKernelFirstTextureBinding
   // Set once the first (warm-up) dispatch has been submitted (RunResult::firstDispatchMs).
   std::atomic<bool> warmedUp{false};
   std::mutex warmUpMutex;
 };
 
-struct MappedBuffer {
-  VkBuffer buffer = VK_NULL_HANDLE;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  void* mapped = nullptr;
-};
-
 // Everything one run() creates. The destructor releases it on success and on throw.
 struct RunResources {
-  explicit RunResources(const DeviceContext& ctx) : ctx(ctx), device(ctx.device) {}
+  explicit RunResources(const DeviceContext& ctx) : ctx(ctx) {}
   RunResources(const RunResources&) = delete;
   RunResources& operator=(const RunResources&) = delete;
   ~RunResources() {
-    // A submit that we did not see finish may still use these objects.
-    if (inFlight) {
-      std::lock_guard lock(ctx.queueMutex);
-      vkDeviceWaitIdle(device);
-    }
-    if (fence) vkDestroyFence(device, fence, nullptr);
-    if (commandPool) vkDestroyCommandPool(device, commandPool, nullptr);  // frees the cb
-    if (queryPool) vkDestroyQueryPool(device, queryPool, nullptr);
-    if (descriptorPool) vkDestroyDescriptorPool(device, descriptorPool, nullptr);  // and sets
-    for (auto* list : {&inBuffers, &outBuffers}) {
-      for (MappedBuffer& b : *list) {
-        if (b.buffer) vkDestroyBuffer(device, b.buffer, nullptr);
-        if (b.memory) vkFreeMemory(device, b.memory, nullptr);  // unmaps implicitly
-      }
-    }
-  }
+    commands.reset();  // first: it waits for a submit that we did not see finish
+    if (queryPool) vkDestroyQueryPool(ctx.device, queryPool, nullptr);
+    if (descriptorPool) vkDestroyDescriptorPool(ctx.device, descriptorPool, nullptr);  // and sets
+  }                                                                                    // the buffers release themselves
 
   const DeviceContext& ctx;
-  VkDevice device;
-  std::vector<MappedBuffer> inBuffers, outBuffers;  // one pair per plan segment
+  std::deque<MappedBuffer> inBuffers, outBuffers;  // one pair per plan segment
   VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
   std::vector<VkDescriptorSet> sets;  // one per chunk
   VkQueryPool queryPool = VK_NULL_HANDLE;
-  VkCommandPool commandPool = VK_NULL_HANDLE;
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
-  VkFence fence = VK_NULL_HANDLE;
-  bool inFlight = false;
+  std::optional<OneShotCommands> commands;
 };
 
 // --- vulkan_device.cpp ------------------------------------------------------------------
@@ -158,16 +140,9 @@ void createDevice(DeviceContext& ctx, const DeviceOptions& options);
 // --- vulkan_buffers.cpp -----------------------------------------------------------------
 void createBuffers(const DeviceContext& ctx, const ChunkPlan& plan, const std::vector<float>& inputs, uint32_t inStride,
                    RunResources& res);
-// Textures (gpu_texture.hpp) are written at bindings 2, 3, ... of every chunk's set.
+// Textures (gpu_texture.hpp) are written at kKernelFirstTextureBinding, ... of every
+// chunk's set.
 void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const ChunkPlan& plan,
                           const std::vector<const GpuTexture*>& textures, RunResources& res);
-// A host-visible, coherent buffer, mapped (storage buffers of a run, staging for an upload).
-void createMappedBuffer(const DeviceContext& ctx, uint64_t bytes, VkBufferUsageFlags usage, MappedBuffer& b);
-
-// --- vulkan_harness.cpp -----------------------------------------------------------------
-// res.commandPool and res.cmd, on the harness's queue family.
-void allocateCommandBuffer(const DeviceContext& ctx, RunResources& res);
-// Submits res.cmd once and waits; returns the host-measured submit-to-signal time in ms.
-double submitAndWait(const DeviceContext& ctx, RunResources& res);
 
 }  // namespace mb::harness

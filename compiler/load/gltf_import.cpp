@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <set>
 
+#include "core/glsl_float.hpp"
 #include "load/gltf_container.hpp"
 #include "load/gltf_mapping.hpp"
 #include "load/material_resolve.hpp"
@@ -68,7 +69,7 @@ std::string describeTexture(const GltfTextureInput& t) {
   if (t.srgb) s += ", sRGB";
   s += ", TEXCOORD_" + std::to_string(t.texCoord);
   if (t.transform) s += ", KHR_texture_transform";
-  if (t.scale != 1.0) s += ", scale " + gltf::glslFloat(t.scale);
+  if (t.scale != 1.0) s += ", scale " + glslFloat(t.scale, FloatDigits::Nine);
   return s;
 }
 

@@ -5,9 +5,9 @@
 // surface code applies the combination the glTF spec defines for it.
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 #include <optional>
 
+#include "core/glsl_float.hpp"
 #include "load/gltf_mapping.hpp"
 #include "load/material_resolve.hpp"  // clipped
 
@@ -33,7 +33,8 @@ const std::vector<std::pair<std::string, std::string>> kRequiredBricks = {{"roug
                                                                           {"fresnel", "f_schlick"}};
 
 std::string vec3Literal(const std::vector<double>& v) {
-  return "vec3(" + glslFloat(v[0]) + ", " + glslFloat(v[1]) + ", " + glslFloat(v[2]) + ")";
+  return "vec3(" + glslFloat(v[0], FloatDigits::Nine) + ", " + glslFloat(v[1], FloatDigits::Nine) + ", " +
+         glslFloat(v[2], FloatDigits::Nine) + ")";
 }
 
 class MaterialMapper {
@@ -273,8 +274,8 @@ class MaterialMapper {
     // Metalness in B, roughness in G (glTF 2.0 spec, metallicRoughnessTexture).
     tex = texture(at(pbr, "metallicRoughnessTexture"), "metallicRoughnessTexture", "rgb", false);
     if (!tex.empty()) {
-      line("m.metallic = " + glslFloat(metallic) + " * " + tex + ".b;");
-      line("m.roughness = " + glslFloat(roughness) + " * " + tex + ".g;");
+      line("m.metallic = " + glslFloat(metallic, FloatDigits::Nine) + " * " + tex + ".b;");
+      line("m.roughness = " + glslFloat(roughness, FloatDigits::Nine) + " * " + tex + ".g;");
     }
   }
 
@@ -283,7 +284,8 @@ class MaterialMapper {
     std::string tex = texture(occ, "occlusionTexture", "r", false);
     // occluded = 1 + strength * (texel - 1) (glTF 2.0 spec, occlusionTextureInfo.strength).
     if (!tex.empty())
-      line("m.ambientOcclusion = 1.0 + " + glslFloat(out_.textures.back().scale) + " * (" + tex + " - 1.0);");
+      line("m.ambientOcclusion = 1.0 + " + glslFloat(out_.textures.back().scale, FloatDigits::Nine) + " * (" + tex +
+           " - 1.0);");
     // The normal map perturbs the shading frame's n, which the engine passes in.
     texture(at(ptr_, "normalTexture"), "", "rgb", false);
   }
@@ -322,7 +324,8 @@ class MaterialMapper {
     } else if (mode != "OPAQUE" || alpha_ != 1.0) {
       warn("W-GLTF-NOT-SHADED",
            whereOf(mode != "OPAQUE" ? modePtr : at(at(ptr_, "pbrMetallicRoughness"), "baseColorFactor")),
-           label() + " has alpha (alphaMode " + mode + ", baseColorFactor alpha " + glslFloat(alpha_) +
+           label() + " has alpha (alphaMode " + mode + ", baseColorFactor alpha " +
+               glslFloat(alpha_, FloatDigits::Nine) +
                "): opacity and transmission are not shaded; the engine blends or masks");
     }
   }
@@ -356,7 +359,7 @@ class MaterialMapper {
         vec ? numbers(ptr, 3, r.gltfDefault) : std::vector<double>{number(ptr, r.gltfDefault[0])};
     constant(r.input, value, whereOf(ptr), vec ? ptr : "");
     std::string tex = texture(at(object, r.texture), r.texture, r.channels, r.srgb, r.swizzle);
-    std::string literal = vec ? vec3Literal(value) : glslFloat(value[0]);
+    std::string literal = vec ? vec3Literal(value) : glslFloat(value[0], FloatDigits::Nine);
     if (!tex.empty()) line(std::string("m.") + r.input + " = " + literal + " * " + tex + ";");
   }
 
@@ -377,7 +380,7 @@ class MaterialMapper {
     // clearCoatNormal (Filament's), which the model normalizes about the geometric normal.
     std::string normal = texture(at(e, "clearcoatNormalTexture"), "clearcoatNormalTexture", "rgb", false);
     if (!normal.empty()) {
-      std::string s = glslFloat(out_.textures.back().scale);
+      std::string s = glslFloat(out_.textures.back().scale, FloatDigits::Nine);
       line("m.clearCoatNormal = (" + normal + " * 2.0 - 1.0) * vec3(" + s + ", " + s + ", 1.0);");
     }
   }
@@ -403,7 +406,7 @@ class MaterialMapper {
     out_.anisotropyRotation = rotation;
     if (rotation != 0.0)
       warn("W-GLTF-NOT-SHADED", f_.valueAt(rotPtr),
-           label() + " has anisotropyRotation " + glslFloat(rotation) +
+           label() + " has anisotropyRotation " + glslFloat(rotation, FloatDigits::Nine) +
                " rad: the model takes the anisotropy direction from the frame's tangent, so the "
                "engine must rotate the tangent by it (counter-clockwise about n)");
   }
@@ -415,7 +418,7 @@ class MaterialMapper {
     double ior = has(kIor) ? number(iorPtr, 1.5) : 1.5;
     if (ior != 0.0 && !(ior >= 1.0)) {
       f_.error("E-PARAM-RANGE", f_.valueAt(iorPtr),
-               "'" + JsonFields::describe(iorPtr) + "' is " + glslFloat(ior) +
+               "'" + JsonFields::describe(iorPtr) + "' is " + glslFloat(ior, FloatDigits::Nine) +
                    ": KHR_materials_ior expects 0 or a value >= 1");
       return;
     }
@@ -440,7 +443,7 @@ class MaterialMapper {
     }
     if (!colourTex.empty() || !strengthTex.empty()) {
       std::string c = vec3Literal(scaled) + (colourTex.empty() ? "" : " * " + colourTex);
-      std::string s = glslFloat(specular) + (strengthTex.empty() ? "" : " * " + strengthTex);
+      std::string s = glslFloat(specular, FloatDigits::Nine) + (strengthTex.empty() ? "" : " * " + strengthTex);
       line("m.f0Dielectric = min(" + c + ", vec3(1.0)) * (" + s + ");");
     }
     if (specular != 1.0 || !strengthTex.empty())
@@ -530,14 +533,6 @@ std::string identifierFrom(const std::string& name) {
   if (out.empty() || out == "_") return "";
   if (std::isdigit(static_cast<unsigned char>(out[0])) || out.rfind("gl_", 0) == 0) out = "material_" + out;
   return out;
-}
-
-std::string glslFloat(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  std::string s = buf;
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-  return s;
 }
 
 }  // namespace mb::gltf

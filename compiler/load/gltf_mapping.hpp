@@ -37,7 +37,4 @@ GltfMaterial mapMaterial(JsonFields& f, const FileContext& ctx, size_t index, st
 // digit or reserved GLSL prefix ("gl_") gets a "material_" prefix; empty stays empty.
 std::string identifierFrom(const std::string& name);
 
-// A GLSL float literal that round-trips the double's float value ("1.0", "0.04", "1e-06").
-std::string glslFloat(double v);
-
 }  // namespace mb::gltf

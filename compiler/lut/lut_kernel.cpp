@@ -50,8 +50,7 @@ void writeKernelHead(GlslWriter& w, const ShaderLibrary& lib, const std::vector<
   std::set<std::string> done;
   for (const auto& id : bricks) includeOnce(lib, id, done, w);
   w.line("layout(local_size_x = 64) in;");
-  w.line("layout(std430, set = 0, binding = 0) readonly buffer MbIn { float mbIn[]; };");
-  w.line("layout(std430, set = 0, binding = 1) writeonly buffer MbOut { float mbOut[]; };");
+  writeKernelBuffers(w);
   w.line("layout(push_constant) uniform MbPush { uint count; } mbPush;");
 }
 

@@ -54,8 +54,7 @@ std::string prefilterKernelGlsl(const ShaderLibrary& lib, const std::string& nam
   w.include(ShaderLibrary::displayPath(ggx.file), lib.source(ggx.file));
   writeRadianceGlsl(w, lib, name);
   w.line("layout(local_size_x = 64) in;");
-  w.line("layout(std430, set = 0, binding = 0) readonly buffer MbIn { float mbIn[]; };");
-  w.line("layout(std430, set = 0, binding = 1) writeonly buffer MbOut { float mbOut[]; };");
+  writeKernelBuffers(w);
   w.line("layout(push_constant) uniform MbPush { uint count; } mbPush;");
   w.line("const uint kSamples = " + std::to_string(samples) + "u;");
   w.line("const uint kPeakSamples = " + std::to_string(peakSamples(samples)) + "u;");

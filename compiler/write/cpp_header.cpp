@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/descriptor_bindings.hpp"
 #include "core/diagnostics.hpp"
 #include "emit/fragment_textures.hpp"
 #include "write/package_parts.hpp"
@@ -141,7 +142,7 @@ constexpr std::uint32_t recordOffset(const Permutation& p, std::string_view inpu
 const nlohmann::json* materialParamsBlock(const nlohmann::json& reflection) {
   if (!reflection.is_object() || !reflection.contains("uniform_buffers")) return nullptr;
   for (const auto& u : reflection["uniform_buffers"])
-    if (u.value("set", -1) == 0 && u.value("binding", -1) == 2) return &u;
+    if (u.value("set", -1) == 0 && u.value("binding", -1) == kKernelParamsBinding) return &u;
   return nullptr;
 }
 
@@ -165,8 +166,8 @@ void HeaderWriter::add(const PackagedPermutation& p) {
       auto [first, fresh] = byLayout_.emplace(layout, structName);
       std::ostringstream decl;
       if (fresh)
-        decl << "// std140 block MaterialParamsBlock (set 0, binding 2) of material '" << p.perm->material->name
-             << "'.\nstruct alignas(16) " << structName << " {\n"
+        decl << "// std140 block MaterialParamsBlock (set 0, binding " << kKernelParamsBinding << ") of material '"
+             << p.perm->material->name << "'.\nstruct alignas(16) " << structName << " {\n"
              << b.members << "};\n"
              << replaceName(b.asserts, structName) << "\n";
       else

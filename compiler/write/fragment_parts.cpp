@@ -1,9 +1,11 @@
 // write: the fragment stage's part of the package (docs/fragment-stage.md, docs/package.md
 // "Fragment shaders"): file paths, the manifest's per-permutation `fragment` object and
 // top-level interface, and the C++ header's MbFrameBlock with its binding constants.
+#include <algorithm>
 #include <sstream>
 
 #include "compile/targets.hpp"
+#include "core/descriptor_bindings.hpp"
 #include "core/diagnostics.hpp"
 #include "emit/fragment_shader.hpp"
 #include "emit/fragment_textures.hpp"
@@ -31,16 +33,8 @@ const std::vector<std::pair<std::string, std::string>>& frameMembers() {
   return m;
 }
 
-const char* kFrameTypes =
-    R"(// The fragment stage's interface, version 1 (docs/fragment-stage.md), all in descriptor set 0.
-inline constexpr std::uint32_t kFragmentInterfaceVersion = 1;
-inline constexpr std::uint32_t kFragmentParamsBinding = 0;          // the material's <material>_Params
-inline constexpr std::uint32_t kFragmentFrameBinding = 1;           // MbFrameBlock
-inline constexpr std::uint32_t kFragmentPrefilteredEnvBinding = 2;  // samplerCube, ibl_* environments
-inline constexpr std::uint32_t kFragmentDfgLutBinding = 3;          // sampler2D, ibl_lut
-inline constexpr std::uint32_t kFragmentFirstTextureBinding = 4;    // sampler2D per texture record
-inline constexpr std::uint32_t kMaxLightsPerType = 4;               // MB_MAX_LIGHTS
-
+const char* kFrameRecords =
+    R"(
 // shaderlib/common/engine_frame.glsl's records and std140 block (world space).
 struct MbDirectionalLightGpu {
   float direction[4];    // xyz: unit, towards the light
@@ -55,6 +49,28 @@ struct MbLocalLightGpu {
 };
 
 )";
+
+// One constant of the C++ header, its comment in the column the block aligns to.
+std::string headerConstant(const std::string& name, int value, const std::string& comment = "") {
+  constexpr size_t kCommentColumn = 68;
+  std::string line = "inline constexpr std::uint32_t " + name + " = " + std::to_string(value) + ";";
+  if (!comment.empty()) line += std::string(std::max<size_t>(2, kCommentColumn - line.size()), ' ') + "// " + comment;
+  return line + "\n";
+}
+
+// The interface's binding numbers come from descriptor_bindings.hpp, the compiler's own, so
+// that the engine's header cannot disagree with the shaders.
+std::string frameTypes() {
+  return "// The fragment stage's interface, version 1 (docs/fragment-stage.md), all in descriptor set 0.\n" +
+         headerConstant("kFragmentInterfaceVersion", 1) +
+         headerConstant("kFragmentParamsBinding", kFragmentParamsBinding, "the material's <material>_Params") +
+         headerConstant("kFragmentFrameBinding", kFragmentFrameBinding, "MbFrameBlock") +
+         headerConstant("kFragmentPrefilteredEnvBinding", kFragmentPrefilteredBinding,
+                        "samplerCube, ibl_* environments") +
+         headerConstant("kFragmentDfgLutBinding", kFragmentDfgBinding, "sampler2D, ibl_lut") +
+         headerConstant("kFragmentFirstTextureBinding", kFirstTextureBinding, "sampler2D per texture record") +
+         headerConstant("kMaxLightsPerType", 4, "MB_MAX_LIGHTS") + kFrameRecords;
+}
 
 }  // namespace
 
@@ -104,7 +120,7 @@ const nlohmann::json* fragmentFrameBlock(const nlohmann::json& reflection) {
 
 std::string frameBlockHeader(const nlohmann::json* reflected, const std::string& key) {
   std::ostringstream out;
-  out << kFrameTypes;
+  out << frameTypes();
   if (!reflected) return out.str();
   const nlohmann::json& members = reflected->at("members");
   const auto& expected = frameMembers();
