@@ -18,10 +18,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Small but complete: one material, one light and environment, one slot, a 16x16 LUT.
+// Small but complete: one material, one light and environment, one slot, a 16x16 LUT, 16-pixel
+// previews (their double reference is per pixel, and the test reads only that they decode).
 const char* kQuickOptions =
     " --lights dir --environment none --slot fresnel --samples 256 --repeats 1 --target-ms 0.5"
-    " --lut-size 16";
+    " --lut-size 16 --preview-size 16";
 
 size_t count(const std::string& text, const std::string& what) {
   size_t n = 0;
@@ -91,7 +92,7 @@ TEST_CASE("report writes index.html and every image it references, from this run
   // Written again over its own output: replaced as a whole.
   auto again = test::runCli("report " + test::materialPath("filament_plastic.json") +
                             " --lights dir --environment none --samples 256 --repeats 1 --target-ms 0.5 --lut-size 8"
-                            " --no-slots --no-energy -o " +
+                            " --preview-size 16 --no-slots --no-energy -o " +
                             out.string());
   INFO(again.output);
   CHECK(again.exitCode == 0);

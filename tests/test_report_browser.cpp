@@ -30,14 +30,15 @@ std::string chromiumOrFail() {
 }
 
 // One report for the whole test process: two materials (two shading models), one slot chart,
-// the albedo charts of their lobes and a small LUT.
+// the albedo charts of their lobes, a small LUT and 16-pixel previews (the page loads them as
+// it loads any image; their double reference costs per pixel).
 const fs::path& generatedReport() {
   static const fs::path out = [] {
     fs::path dir = test::freshTempDir("report", "browser") / "report";
     auto r = test::runCli("report " + test::materialPath("filament_plastic.json") + " " +
                           test::materialPath("velvet_green.json") +
                           " --lights dir --environment none --slot fresnel --samples 256 --repeats 1 --target-ms 0.5"
-                          " --lut-size 16 -o " +
+                          " --lut-size 16 --preview-size 16 -o " +
                           dir.string());
     INFO(r.output);
     REQUIRE(r.exitCode == 0);
