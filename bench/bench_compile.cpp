@@ -9,8 +9,9 @@
 //      the features' inputs as constants and as run-time inputs (compiler/bench_engine/cost.hpp, as
 //      `matbricks bench`), and the three SPIR-V instruction counts;
 //   e. (--breakdown) where one permutation's time goes, stage by stage, on one thread;
-//   f. (--recipes=FILE) spirv-opt recipes against RegisterPerformancePasses: time, instructions.
-// Usage: mb_bench_compile REPEATS MAX_SIZE OUT_DIR SCENE [--breakdown] [--recipes=FILE]
+//   f. (--recipes=FILE) spirv-opt recipes against RegisterPerformancePasses: time, instructions;
+//   g. (--levels) the optimization levels -O0/-O1/-O2: compile time, where it goes, run time.
+// Usage: mb_bench_compile REPEATS MAX_SIZE OUT_DIR SCENE [--breakdown] [--recipes=FILE] [--levels]
 //        [--sections=LETTERS]  (writes OUT_DIR/compile.{json,md}).
 // Medians of REPEATS runs (fewer for the largest sizes; the JSON records how many).
 #include <sys/resource.h>
@@ -400,10 +401,10 @@ json benchBreakdown(const ShaderLibrary& lib, const std::vector<Permutation>& pe
     for (const auto& p : perms) {
       EmittedShader s = clock.time("emit GLSL", [&] { return emitPermutation(lib, p, false, EmitMode::Engine); });
       const CacheIdentity key = clock.time("cache key (XXH3 over GLSL, brick hashes, versions)", [&] {
-        return ShaderCache::identity(buildCacheKey(lib, s, true, {"spirv"}), {s.glsl, "", "", ""});
+        return ShaderCache::identity(buildCacheKey(lib, s, OptimizationLevel::O2, {"spirv"}), {s.glsl, "", "", ""});
       });
       CompileOptions lean;
-      lean.optimize = p.precision == "fp32";
+      lean.optimization = p.precision == "fp32" ? OptimizationLevel::O2 : OptimizationLevel::O0;
       CompileResult c = compileComputeGlsl(s.glsl, s.fileName, lean);
       clock.add("glslang parse", c.stages.parseMs);
       clock.add("glslang link", c.stages.linkMs);
@@ -441,9 +442,10 @@ json benchBreakdown(const ShaderLibrary& lib, const std::vector<Permutation>& pe
       }
 
       // spirv-opt pass by pass, summed per pass name over its occurrences in the recipe.
-      if (lean.optimize) {
+      if (lean.optimization != OptimizationLevel::O0) {
         CompileOptions raw;
-        raw.optimize = raw.validate = false;
+        raw.optimization = OptimizationLevel::O0;
+        raw.validate = false;
         std::vector<uint32_t> m = compileComputeGlsl(s.glsl, s.fileName, raw).spirv;
         passClock.time("no pass (parse to IR, write back)", [&] { return runPasses(m, {}); });
         for (const auto& pass : passes) m = passClock.time(pass, [&] { return runPasses(m, {"--" + pass}); });
@@ -504,6 +506,13 @@ std::string fmt(double v, int digits = 3) {
   return b;
 }
 
+// A ratioOf() result as a table cell.
+std::string ratioText(const json& q) {
+  if (!q["resolved"].get<bool>()) return std::string("n/a (below resolution)");
+  return fmt(q["median"]) + "x (" + fmt(q["low"]) + " to " + fmt(q["high"]) + ")" +
+         (q["significant"].get<bool>() ? ", significant" : ", not significant");
+}
+
 // f (opt-in, --recipes=FILE): spirv-opt recipes against RegisterPerformancePasses on the
 // glslang output of every permutation of the list: optimizer time (one thread, median over
 // REPEATS of the total) and SPIR-V instruction counts. FILE: one recipe per line,
@@ -523,7 +532,7 @@ json benchRecipes(const ShaderLibrary& lib, const std::vector<Permutation>& perm
   for (const auto& p : perms) {
     EmittedShader s = emitPermutation(lib, p, false, EmitMode::Engine);
     CompileOptions raw;
-    raw.optimize = false;
+    raw.optimization = OptimizationLevel::O0;
     inputs.push_back(compileComputeGlsl(s.glsl, s.fileName, raw).spirv);
   }
   // Repeats interleaved across the recipes, so that a change of load hits all of them.
@@ -564,6 +573,111 @@ json benchRecipes(const ShaderLibrary& lib, const std::vector<Permutation>& perm
               << fewer << " fewer, worst +" << worst << "\n";
   }
   return rows;
+}
+
+// g (opt-in, --levels): the optimization levels (`compile -O`, docs/performance-compile.md
+// "Levels") on the throughput list, repeats interleaved across levels so that a change of load
+// hits all three: cold builds without a cache at -j1 and -j2 with the package's settings (kernel
+// and fragment shader, SPIR-V); the kernels' compile stages on one thread (glslang, spirv-val,
+// spirv-opt), which says where the remaining time goes; SPIR-V instructions; and the run-time
+// cost of three materials' bench kernels compiled at each level, as `bench -O` measures it.
+json benchLevels(const ShaderLibrary& lib, const std::vector<MaterialDesc>& materials,
+                 const std::vector<Permutation>& perms, int repeats) {
+  const OptimizationLevel levels[] = {OptimizationLevel::O0, OptimizationLevel::O1, OptimizationLevel::O2};
+  std::vector<EmittedShader> kernels;
+  for (const auto& p : perms) kernels.push_back(emitPermutation(lib, p, false, EmitMode::Engine));
+  std::map<std::string, std::map<std::string, std::vector<double>>> ms;  // level -> measure -> repeats
+  std::map<std::string, size_t> instructions;
+  for (int r = 0; r < repeats; ++r)
+    for (OptimizationLevel level : levels) {
+      const std::string name = optimizationLevelName(level);
+      for (unsigned jobs : {1u, 2u}) {
+        BuildOptions o = options(jobs);
+        o.optimization = level;
+        const auto t0 = Clock::now();
+        const std::vector<BuiltPermutation> built = buildPermutations(lib, perms, o);
+        ms[name]["build_j" + std::to_string(jobs)].push_back(msSince(t0));
+        size_t total = 0;
+        for (const auto& b : built) total += b.spirvInstructions;
+        instructions[name] = total;
+      }
+      CompileStageTimes sum;
+      CompileOptions co;
+      co.optimization = level;
+      for (const auto& k : kernels) {
+        const CompileStageTimes t = compileComputeGlsl(k.glsl, k.fileName, co).stages;
+        sum.parseMs += t.parseMs + t.linkMs + t.codegenMs;
+        sum.validateMs += t.validateMs + t.validateOptimizedMs;
+        sum.optimizeMs += t.optimizeMs;
+      }
+      ms[name]["kernel_glslang"].push_back(sum.parseMs);
+      ms[name]["kernel_spirv_val"].push_back(sum.validateMs);
+      ms[name]["kernel_spirv_opt"].push_back(sum.optimizeMs);
+    }
+  json compile = json::array();
+  for (OptimizationLevel level : levels) {
+    const std::string name = optimizationLevelName(level);
+    json row{{"level", name}, {"spirv_instructions_total", instructions[name]}};
+    for (const auto& [measure, values] : ms[name]) {
+      const double perPermutation = bench::median(values) / double(perms.size());
+      row[measure + "_ms_per_permutation"] = perPermutation;
+      if (measure.rfind("build_j", 0) == 0) row[measure + "_permutations_per_s"] = 1000.0 / perPermutation;
+    }
+    compile.push_back(row);
+    std::cerr << "  " << name << ": -j2 " << row["build_j2_permutations_per_s"].get<double>() << " permutations/s\n";
+  }
+
+  harness::VulkanHarness gpu;
+  bench::CostOptions o;
+  o.repeats = std::max<uint32_t>(9, static_cast<uint32_t>(repeats));
+  json runtime = json::array();
+  for (const std::string material : {"filament_plastic", "clearcoat_metal", "satin_sheen"}) {
+    Permutation p;
+    p.material = &byName(materials, material);
+    std::map<std::string, json> byLevel;
+    for (OptimizationLevel level : levels) {
+      o.optimization = level;
+      byLevel[optimizationLevelName(level)] = costOf(gpu, lib, p, o);
+    }
+    runtime.push_back({{"material", material},
+                       {"O0", byLevel["O0"]},
+                       {"O1", byLevel["O1"]},
+                       {"O2", byLevel["O2"]},
+                       {"ratio_O0_over_O2", ratioOf(byLevel["O0"], byLevel["O2"])},
+                       {"ratio_O1_over_O2", ratioOf(byLevel["O1"], byLevel["O2"])}});
+    std::cerr << "  levels run time: " << material << " done\n";
+  }
+  return json{{"permutations", perms.size()},
+              {"repeats", repeats},
+              {"o1_passes", o1PassFlags()},
+              {"compile", compile},
+              {"device", gpu.deviceName()},
+              {"runtime_repeats", o.repeats},
+              {"runtime", runtime}};
+}
+
+std::string markdownLevels(const json& g) {
+  std::string s = "## g. Optimization levels (" + std::to_string(g["permutations"].get<size_t>()) +
+                  " permutations, SPIR-V with fragment shaders, no cache, median of " +
+                  std::to_string(g["repeats"].get<int>()) +
+                  " repeats interleaved across levels)\n\n"
+                  "| level | perm/s -j1 | perm/s -j2 | ms/perm -j2 | kernel glslang ms | kernel spirv-val ms | kernel "
+                  "spirv-opt ms | SPIR-V instructions |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const auto& row : g["compile"])
+    s += "| " + row["level"].get<std::string>() + " | " + fmt(row["build_j1_permutations_per_s"]) + " | " +
+         fmt(row["build_j2_permutations_per_s"]) + " | " + fmt(row["build_j2_ms_per_permutation"]) + " | " +
+         fmt(row["kernel_glslang_ms_per_permutation"]) + " | " + fmt(row["kernel_spirv_val_ms_per_permutation"]) +
+         " | " + fmt(row["kernel_spirv_opt_ms_per_permutation"]) + " | " +
+         std::to_string(row["spirv_instructions_total"].get<size_t>()) + " |\n";
+  s += "\nRun time of the bench kernel compiled at each level on " + g["device"].get<std::string>() +
+       " (cost per evaluation, median of " + std::to_string(g["runtime_repeats"].get<int>()) +
+       " paired repeats with its 95 % interval; ratio to O2 with bounds from the intervals' ends):\n\n"
+       "| material | O0 | O1 | O2 | O0 / O2 | O1 / O2 |\n|---|---|---|---|---|---|\n";
+  for (const auto& row : g["runtime"])
+    s += "| " + row["material"].get<std::string>() + " | " + row["O0"]["text"].get<std::string>() + " | " +
+         row["O1"]["text"].get<std::string>() + " | " + row["O2"]["text"].get<std::string>() + " | " +
+         ratioText(row["ratio_O0_over_O2"]) + " | " + ratioText(row["ratio_O1_over_O2"]) + " |\n";
+  return s;
 }
 
 std::string markdownBreakdown(const json& b) {
@@ -640,11 +754,6 @@ std::string markdown(const json& r) {
          "the record, as a uniform-driven uber shader.\n\n"
          "| material | form | cost / eval (95 % interval) | ratio to specialized | static cost | static ratio | "
          "SPIR-V instr. |\n|---|---|---|---|---:|---:|---:|\n";
-    auto ratioText = [](const json& q) {
-      if (!q["resolved"].get<bool>()) return std::string("n/a (below resolution)");
-      return fmt(q["median"]) + "x (" + fmt(q["low"]) + " to " + fmt(q["high"]) + ")" +
-             (q["significant"].get<bool>() ? ", significant" : ", not significant");
-    };
     for (const auto& row : r["runtime"]["rows"])
       for (const auto& [key, label, ratio] :
            {std::tuple{"specialized", "specialized", ""},
@@ -658,6 +767,7 @@ std::string markdown(const json& r) {
       }
   }
   if (r.contains("breakdown")) s += "\n" + markdownBreakdown(r["breakdown"]);
+  if (r.contains("levels")) s += "\n" + markdownLevels(r["levels"]);
   if (r.contains("recipes")) {
     s += "\n## f. spirv-opt recipes against RegisterPerformancePasses (one thread, median)\n\n"
          "| recipe | passes | spirv-opt ms per permutation | instructions, all permutations | permutations with more | "
@@ -688,6 +798,8 @@ int main(int argc, char** argv) {
     extra += " " + a;
     if (a == "--breakdown")
       sections += "e";
+    else if (a == "--levels")
+      sections += "g";
     else if (a.rfind("--recipes=", 0) == 0)
       sections += "f", recipesFile = a.substr(10);
     else if (a.rfind("--sections=", 0) == 0)
@@ -738,6 +850,10 @@ int main(int argc, char** argv) {
     if (want('d')) {
       std::cerr << "d. run time\n";
       r["runtime"] = benchRuntime(lib, materials, repeats);
+    }
+    if (want('g')) {
+      std::cerr << "g. optimization levels\n";
+      r["levels"] = benchLevels(lib, materials, perms, repeats);
     }
     fs::remove_all(tmp);
     fs::create_directories(outDir);

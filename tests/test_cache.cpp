@@ -305,16 +305,19 @@ TEST_CASE("compile with two entries of its cache directory swapped warns once an
 TEST_CASE("the cache key changes with a brick source, an option or the target list", "[cache]") {
   test::ScratchDir root("cache_key_lib");
   fs::copy(test::sourceDir() / "shaderlib", test::rootOf(root), fs::copy_options::recursive);
-  auto keyOf = [](const ShaderLibrary& lib, bool optimize, const std::vector<std::string>& targets) {
+  auto keyOf = [](const ShaderLibrary& lib, OptimizationLevel level, const std::vector<std::string>& targets) {
     auto perms = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir"}, "none");
-    return buildCacheKey(lib, emitPermutation(lib, perms[0], false, EmitMode::Engine), optimize, targets);
+    return buildCacheKey(lib, emitPermutation(lib, perms[0], false, EmitMode::Engine), level, targets);
   };
   ShaderLibrary lib = ShaderLibrary::load(test::rootOf(root));
-  const std::string base = keyOf(lib, true, {"spirv"});
-  CHECK(base == keyOf(lib, true, {"spirv"}));
-  CHECK(base != keyOf(lib, false, {"spirv"}));
-  CHECK(base != keyOf(lib, true, {"spirv", "hlsl"}));
-  CHECK(keyOf(lib, true, {"spirv", "hlsl", "msl"}) == keyOf(lib, true, {"msl", "hlsl"}));  // spirv always built
+  const auto O0 = OptimizationLevel::O0, O1 = OptimizationLevel::O1, O2 = OptimizationLevel::O2;
+  const std::string base = keyOf(lib, O2, {"spirv"});
+  CHECK(base == keyOf(lib, O2, {"spirv"}));
+  CHECK(base != keyOf(lib, O0, {"spirv"}));
+  CHECK(base != keyOf(lib, O1, {"spirv"}));
+  CHECK(keyOf(lib, O0, {"spirv"}) != keyOf(lib, O1, {"spirv"}));
+  CHECK(base != keyOf(lib, O2, {"spirv", "hlsl"}));
+  CHECK(keyOf(lib, O2, {"spirv", "hlsl", "msl"}) == keyOf(lib, O2, {"msl", "hlsl"}));  // spirv always built
 
   // A brick the permutation includes changes: a new key, even for a comment-only edit.
   const Brick* brick = lib.findBrick(
@@ -323,5 +326,5 @@ TEST_CASE("the cache key changes with a brick source, an option or the target li
   REQUIRE(brick);
   { std::ofstream(test::rootOf(root) / brick->file, std::ios::app) << "// edited\n"; }
   ShaderLibrary edited = ShaderLibrary::load(test::rootOf(root));
-  CHECK(keyOf(edited, true, {"spirv"}) != base);
+  CHECK(keyOf(edited, O2, {"spirv"}) != base);
 }

@@ -50,7 +50,7 @@ struct Outputs {
 
 Outputs runArithmetic(harness::VulkanHarness& gpu, const std::vector<float>& xy) {
   CompileOptions options;
-  options.optimize = false;
+  options.optimization = OptimizationLevel::O0;
   std::vector<uint32_t> half = compileComputeGlsl(kArithmeticKernel, "fp16_arithmetic.comp", options).spirv;
   Outputs o;
   for (Denormals d : {Denormals::Flush, Denormals::Keep}) {
@@ -141,7 +141,7 @@ TEST_CASE("the emulated kernel needs no shaderFloat16 and counts what it rewrote
   const ShaderLibrary& lib = test::shippedLibrary();
   EmittedShader s = emitBrickProbe(lib, *lib.findBrick("d_beckmann"), false, ShaderPrecision::Fp16);
   CompileOptions options;
-  options.optimize = false;
+  options.optimization = OptimizationLevel::O0;
   std::vector<uint32_t> half = compileComputeGlsl(s.glsl, s.fileName, options).spirv;
   Fp16EmulationStats stats;
   std::vector<uint32_t> out = emulateWorstCaseFp16(half, s.fileName, Denormals::Flush, stats);

@@ -44,7 +44,8 @@ std::vector<Permutation> withPrecisions(const std::vector<Permutation>& perms) {
 CompileOptions fragmentOptions(const Permutation& perm) {
   CompileOptions o;
   o.stage = ShaderStage::Fragment;
-  o.optimize = perm.precision == "fp32";  // as the package builds (build.cpp unitFor)
+  o.optimization = perm.precision == "fp32" ? OptimizationLevel::O2
+                                            : OptimizationLevel::O0;  // as the package builds (build.cpp unitFor)
   return o;
 }
 

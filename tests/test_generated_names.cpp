@@ -182,7 +182,7 @@ void compilesWithEveryFreeName(MaterialDesc base) {
       perm.precision = precision;
       EmittedShader s = emitPermutation(lib, perm);
       INFO(s.key);
-      CHECK_NOTHROW(compileComputeGlsl(s.glsl, s.fileName, {ShaderStage::Compute, false, false}));
+      CHECK_NOTHROW(compileComputeGlsl(s.glsl, s.fileName, {ShaderStage::Compute, OptimizationLevel::O0, false}));
     }
   }
 }
@@ -240,7 +240,7 @@ TEST_CASE("surface code may not declare a name the generated code uses", "[names
     for (Permutation perm : validationPermutationsFor(m, lib)) {
       EmittedShader s = emitPermutation(lib, perm);
       INFO(s.key);
-      CHECK_NOTHROW(compileComputeGlsl(s.glsl, s.fileName, {ShaderStage::Compute, false, false}));
+      CHECK_NOTHROW(compileComputeGlsl(s.glsl, s.fileName, {ShaderStage::Compute, OptimizationLevel::O0, false}));
     }
   }
 }

@@ -217,7 +217,7 @@ TEST_CASE("a material path with a newline compiles: comments and #line carry it 
   for (Permutation perm : validationPermutationsFor(ms[0], test::shippedLibrary())) {
     EmittedShader s = emitPermutation(test::shippedLibrary(), perm);
     INFO(s.key);
-    CHECK_NOTHROW(compileComputeGlsl(s.glsl, s.fileName, {ShaderStage::Compute, false, false}));
+    CHECK_NOTHROW(compileComputeGlsl(s.glsl, s.fileName, {ShaderStage::Compute, OptimizationLevel::O0, false}));
     CHECK_THAT(s.glsl, Catch::Contains("worn\\x0apaint\\x22.mat"));
   }
   auto r = test::runCli("compile -q --no-cache '" + file.string() + "' -o '" + (dir / "pkg").string() + "'");

@@ -83,7 +83,7 @@ TEST_CASE("SPIR-V of every permutation and brick probe passes spirv-val", "[pipe
     CompileOptions raw;
     raw.validate = false;  // validate here, independently of the compiler's own checks
     CompileOptions rawUnoptimized = raw;
-    rawUnoptimized.optimize = false;
+    rawUnoptimized.optimization = OptimizationLevel::O0;
     auto unoptimized = compileComputeGlsl(s.glsl, s.fileName, rawUnoptimized);
     auto optimized = compileComputeGlsl(s.glsl, s.fileName, raw);
     CHECK(tools.Validate(unoptimized.spirv));

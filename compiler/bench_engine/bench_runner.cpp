@@ -62,8 +62,10 @@ BenchCost measureBenchCost(harness::VulkanHarness& gpu, const ProbeProgram& prob
       gpu,
       [&](uint32_t iterations) {
         EmittedShader timed = emit({iterations, false}), base = emit({iterations, true});
-        last = {compileComputeGlsl(timed.glsl, timed.fileName).spirv,
-                compileComputeGlsl(base.glsl, base.fileName).spirv};
+        CompileOptions level;
+        level.optimization = options.optimization;
+        last = {compileComputeGlsl(timed.glsl, timed.fileName, level).spirv,
+                compileComputeGlsl(base.glsl, base.fileName, level).spirv};
         return last;
       },
       probe.shader.layout, probe.domain, options);

@@ -31,6 +31,9 @@ struct CostOptions {
   // (0: 10 x targetDispatchMs); what is then not resolved is reported as such.
   double maxDispatchMs = 0;
   uint64_t seed = 1;
+  // spirv-opt's level for the timed kernels (`bench -O`, as `compile -O`): what a level costs
+  // at run time. The probe that measures the error is validate's, at O2.
+  OptimizationLevel optimization = OptimizationLevel::O2;
 };
 
 inline constexpr uint32_t kStartIterations = 64;

@@ -85,6 +85,7 @@ nlohmann::json toJson(const BenchReport& r) {
                        {"iterations", o.cost.iterations},
                        {"target_dispatch_ms", o.cost.targetDispatchMs},
                        {"max_dispatch_ms", o.cost.maxDispatchMs},
+                       {"optimization", optimizationLevelName(o.cost.optimization)},
                        {"lut_sizes", o.lutSizes}}},
                      {"error_metric", "|x - truth| / max(1, |truth|) over every output value of every sample"},
                      {"cost_method", kCostMethod},

@@ -29,6 +29,7 @@ struct BenchArgs {
   std::vector<uint32_t> lutSizes{16, 32, 64, 128};
   bench::BenchOptions options;
   std::string json, csv, outDir, markdown;
+  std::string optimization = "2";  // -O, as compile's
   bool quiet = false;
 };
 
@@ -118,6 +119,7 @@ int runBench(const BenchArgs& a, const GlobalOptions& g) {
   ShaderLibrary lib = loadLibrary(g);
   std::vector<std::string> materialPaths;
   bench::BenchOptions o = resolveScope(a, lib, materialPaths);
+  parseOptimizationLevel(a.optimization, o.cost.optimization);  // checked by CLI11
   std::vector<MaterialDesc> materials = loadMaterials(materialPaths, lib, g);
   if (a.materials.empty()) {
     // The shipped materials, not named by the user: skip those bench cannot measure (user
@@ -187,6 +189,10 @@ Command addBenchCommand(CLI::App& app, GlobalOptions& g) {
                   "Longest dispatch the iteration calibration may reach (0: 10 x --target-ms)")
       ->check(CLI::Range(0.0, 100000.0));
   cmd->add_option("--seed", a->options.seed, "Sampler seed");
+  cmd->add_option("-O,--optimization", a->optimization,
+                  "spirv-opt level of the timed kernels, as compile's -O0/-O1/-O2 (default 2): what a level costs at "
+                  "run time")
+      ->check(CLI::IsMember({"0", "1", "2", "O0", "O1", "O2"}));
   cmd->add_option("--json", a->json, "Write the full results as JSON");
   cmd->add_option("--csv", a->csv, "Write one CSV row per brick, permutation and LUT");
   cmd->add_option(

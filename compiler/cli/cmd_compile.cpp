@@ -100,10 +100,10 @@ std::string remoteSummary(const BuildStats& s, const RemoteCache* remote) {
 }  // namespace
 
 nlohmann::json compileCommandJson(const CompileArgs& a, const GlobalOptions& g) {
-  return {{"materials", a.materials},     {"scene", a.scene},         {"lights", a.lights},
-          {"environment", a.environment}, {"precision", a.precision}, {"quality", a.quality},
-          {"targets", a.targets},         {"header", a.headerName},   {"namespace", a.cppNamespace},
-          {"shaderlib", g.shaderlib}};
+  return {{"materials", a.materials},       {"scene", a.scene},         {"lights", a.lights},
+          {"environment", a.environment},   {"precision", a.precision}, {"quality", a.quality},
+          {"targets", a.targets},           {"header", a.headerName},   {"namespace", a.cppNamespace},
+          {"optimization", a.optimization}, {"shaderlib", g.shaderlib}};
 }
 
 void compileArgsFromJson(const nlohmann::json& c, const std::string& file, CompileArgs& a, GlobalOptions& g) {
@@ -115,6 +115,7 @@ void compileArgsFromJson(const nlohmann::json& c, const std::string& file, Compi
     a.precision = c.at("precision").get<std::string>();
     a.quality = c.at("quality").get<std::string>();
     a.targets = c.at("targets").get<std::vector<std::string>>();
+    a.optimization = c.at("optimization").get<std::string>();
     a.headerName = c.at("header").get<std::string>();
     a.cppNamespace = c.at("namespace").get<std::string>();
     g.shaderlib = c.at("shaderlib").get<std::string>();
@@ -181,10 +182,13 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
     refuseDuplicateKeys(plan.required, sources);
   }
   if (targets.empty()) targets = {"spirv"};
+  OptimizationLevel optimization = scene.optimization;                                // O2 without a scene
+  if (!a.optimization.empty()) parseOptimizationLevel(a.optimization, optimization);  // checked by CLI11
 
   BuildOptions options;
   options.jobs = a.jobs;
   options.targets = targets;
+  options.optimization = optimization;
   options.shard = shard;
   options.mergeFrom = mergeFrom;
   if (!mergeFrom)
@@ -202,6 +206,7 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
   in.lib = &lib;
   in.plan = &plan;
   in.targets = targets;
+  in.optimization = optimization;
   in.sceneFile = a.scene;
   in.headerName = a.headerName;
   in.cppNamespace = a.cppNamespace;
@@ -296,6 +301,10 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
              }())
       ->delimiter(',')
       ->check(CLI::IsMember(allTargets()));
+  cmd->add_option("-O,--optimization", args->optimization,
+                  "spirv-opt level of fp32 units: -O0 none, -O1 per-function clean-up without inlining, -O2 the "
+                  "performance recipe (default: the scene's, else 2; docs/performance-compile.md \"Levels\")")
+      ->check(CLI::IsMember({"0", "1", "2", "O0", "O1", "O2"}));
   cmd->add_option("-j,--jobs", args->jobs,
                   "Parallel compile jobs (default: every core); output is identical at every -j");
   cmd->add_option(

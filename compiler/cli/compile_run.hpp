@@ -24,6 +24,7 @@ struct CompileArgs {
   std::string precision = "fp32";
   std::string quality = "high";
   std::vector<std::string> targets;  // empty: the scene's, else spirv
+  std::string optimization;          // -O: "0".."2" or "O0".."O2"; empty: the scene's, else O2
   unsigned jobs = 0;
   std::string cacheDir;
   bool noCache = false;

@@ -44,6 +44,9 @@ struct CompileUnit {
   // essl310; empty when the build makes none (BuildOptions::fragment, Engine mode only).
   std::string fragmentGlsl, fragmentDisplayName, fragmentMediumpGlsl, fragmentMediumpDisplayName;
   CompileOptions compile;
+  // The build's level (BuildOptions::optimization). compile.optimization is O0 for fp16
+  // kernels whatever it is; their mediump form for essl310 is compiled at this level.
+  OptimizationLevel level = OptimizationLevel::O2;
   std::string cacheKey;
   CacheIdentity identity;  // cacheKey and the digest of the GLSL texts above
   // Results, written by one worker only.
@@ -69,14 +72,17 @@ std::vector<std::string> crossTargets(const std::vector<std::string>& requested)
 
 // Everything that affects a unit's output (shader_cache.hpp).
 std::string unitKey(const ShaderLibrary& lib, const EmittedShader& shader, const CompileOptions& co,
-                    const std::vector<std::string>& targets, const std::string& mediumpGlsl = "",
-                    const CompileUnit* fragment = nullptr) {
+                    OptimizationLevel level, const std::vector<std::string>& targets,
+                    const std::string& mediumpGlsl = "", const CompileUnit* fragment = nullptr) {
   std::vector<std::string> parts{ShaderCache::kFormatVersion,
                                  MB_VERSION,
                                  toolchainVersion(),
                                  spirvCrossVersion(),
-                                 co.optimize ? "optimize" : "no-optimize",
+                                 optimizationCacheToken(co.optimization),
                                  co.validate ? "validate" : "no-validate"};
+  // The build's level decides the mediump forms of fp16 units too (compiled at it, while the
+  // kernel itself runs at O0). O2 adds no part, so keys from before levels stay valid.
+  if (level != OptimizationLevel::O2) parts.push_back(std::string("level ") + optimizationLevelName(level));
   for (const auto& t : crossTargets(targets)) parts.push_back(t + ": " + targetOptions(t));
   parts.push_back(shader.glsl);
   parts.push_back(mediumpGlsl);
@@ -133,7 +139,7 @@ void loadFromShards(CompileUnit& u, size_t index, const ShardSet& shards) {
 // when there is one), reflection.
 StageArtifacts compileStage(const std::string& glsl, const std::string& displayName, const std::string& mediumpGlsl,
                             const std::string& mediumpDisplayName, const CompileOptions& options,
-                            const std::vector<std::string>& targets) {
+                            OptimizationLevel mediumpLevel, const std::vector<std::string>& targets) {
   StageArtifacts a;
   a.spirv = compileComputeGlsl(glsl, displayName, options).spirv;
   for (const auto& t : targets) {
@@ -142,6 +148,7 @@ StageArtifacts compileStage(const std::string& glsl, const std::string& displayN
       CompileOptions relaxed;
       relaxed.stage = options.stage;
       relaxed.pipeline = options.pipeline;
+      relaxed.optimization = mediumpLevel;
       a.targets[t] =
           crossCompile(compileComputeGlsl(mediumpGlsl, mediumpDisplayName, relaxed).spirv, t, mediumpDisplayName);
     } else {
@@ -157,12 +164,12 @@ CompiledArtifacts compileUnit(CompileUnit& u, const std::vector<std::string>& ta
   auto t0 = Clock::now();
   CompiledArtifacts a;
   static_cast<StageArtifacts&>(a) =
-      compileStage(u.glsl, u.displayName, u.mediumpGlsl, u.mediumpDisplayName, u.compile, targets);
+      compileStage(u.glsl, u.displayName, u.mediumpGlsl, u.mediumpDisplayName, u.compile, u.level, targets);
   if (!u.fragmentGlsl.empty()) {
     CompileOptions fragment = u.compile;
     fragment.stage = ShaderStage::Fragment;
     a.fragment = compileStage(u.fragmentGlsl, u.fragmentDisplayName, u.fragmentMediumpGlsl,
-                              u.fragmentMediumpDisplayName, fragment, targets);
+                              u.fragmentMediumpDisplayName, fragment, u.level, targets);
   }
   a.includes = crossCompileIncludes(u.glsl, targets, u.displayName);
   u.compileMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
@@ -235,11 +242,11 @@ void runPool(std::vector<CompileUnit>& units, unsigned jobs, const std::vector<s
 
 }  // namespace
 
-std::string buildCacheKey(const ShaderLibrary& lib, const EmittedShader& shader, bool optimize,
+std::string buildCacheKey(const ShaderLibrary& lib, const EmittedShader& shader, OptimizationLevel optimization,
                           const std::vector<std::string>& targets) {
   CompileOptions co;
-  co.optimize = optimize;
-  return unitKey(lib, shader, co, targets);
+  co.optimization = optimization;
+  return unitKey(lib, shader, co, optimization, targets);
 }
 
 namespace {
@@ -358,7 +365,8 @@ class StreamingBuild {
     CompileUnit u;
     // fp16 skips spirv-opt: SPIRV-Tools v2023.1's constant folding emits invalid 16-bit
     // constants (spirv-val then rejects the module), so fp16 ships glslang's SPIR-V as is.
-    u.compile.optimize = perm.precision == "fp32";
+    u.compile.optimization = perm.precision == "fp32" ? options_.optimization : OptimizationLevel::O0;
+    u.level = options_.optimization;
     u.compile.pipeline = options_.pipeline;
     u.glsl = shader.glsl;
     u.displayName = shader.fileName;
@@ -375,7 +383,7 @@ class StreamingBuild {
     } catch (const DiagnosticError& e) {
       errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
     }
-    u.cacheKey = unitKey(lib_, shader, u.compile, targets_, u.mediumpGlsl, fragment ? &u : nullptr);
+    u.cacheKey = unitKey(lib_, shader, u.compile, u.level, targets_, u.mediumpGlsl, fragment ? &u : nullptr);
     u.identity = ShaderCache::identity(u.cacheKey, {u.glsl, u.mediumpGlsl, u.fragmentGlsl, u.fragmentMediumpGlsl});
     return u;
   }

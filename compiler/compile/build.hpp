@@ -26,6 +26,9 @@ struct BuildOptions {
   // Engine mode: every compile unit also builds the permutation's fragment shader
   // (emit/fragment_shader.hpp) to the same targets, cached with the kernel in one entry.
   bool fragment = true;
+  // spirv-opt's level for fp32 units (glsl_compiler.hpp OptimizationLevel; fp16 kernels are
+  // always O0, their essl310 mediump forms at this level). Part of every unit's cache key.
+  OptimizationLevel optimization = OptimizationLevel::O2;
   // Same outputs either way (glsl_compiler.hpp); Legacy only for the benchmark's comparison.
   CompilePipeline pipeline = CompilePipeline::Lean;
   RemoteCache* remote = nullptr;  // behind the local cache (remote_cache.hpp); null: none
@@ -78,9 +81,9 @@ struct BuildStats {
 };
 
 // The cache key of one emitted shader (shader_cache.hpp): format version, MB_VERSION, the
-// glslang/SPIRV-Tools/SPIRV-Cross versions, optimize/validate, the non-spirv targets with
+// glslang/SPIRV-Tools/SPIRV-Cross versions, the optimization level, validate, the non-spirv targets with
 // their options (targets.hpp targetOptions), the GLSL, and each included brick's file hash.
-std::string buildCacheKey(const ShaderLibrary& lib, const EmittedShader& shader, bool optimize,
+std::string buildCacheKey(const ShaderLibrary& lib, const EmittedShader& shader, OptimizationLevel optimization,
                           const std::vector<std::string>& targets);
 
 // Called for every permutation in input order, after its window is built; it may move from

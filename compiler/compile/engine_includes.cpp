@@ -160,7 +160,7 @@ std::map<std::string, std::string> crossCompileIncludes(const std::string& glsl,
   const bool msl = std::find(targets.begin(), targets.end(), "msl") != targets.end();
   if (!hlsl && !msl) return out;
   CompileOptions noInlining;
-  noInlining.optimize = false;
+  noInlining.optimization = OptimizationLevel::O0;
   const std::string shellName = displayName + " (include shell)";
   const std::vector<uint32_t> spirv = compileComputeGlsl(includeShell(glsl), shellName, noInlining).spirv;
   for (const auto& [target, lang] :

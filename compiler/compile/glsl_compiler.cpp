@@ -5,6 +5,7 @@
 #include <mutex>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
@@ -162,7 +163,11 @@ std::vector<uint32_t> optimizeSpirv(const std::vector<uint32_t>& spirv, const st
   optimizer.SetMessageConsumer([&](spv_message_level_t level, const char*, const spv_position_t&, const char* msg) {
     if (level <= SPV_MSG_ERROR) messages += std::string(msg) + "; ";
   });
-  optimizer.RegisterPerformancePasses();
+  if (options.optimization == OptimizationLevel::O2) {
+    optimizer.RegisterPerformancePasses();
+  } else if (!optimizer.RegisterPassesFromFlags(o1PassFlags())) {
+    throw std::logic_error("spirv-opt does not know an O1 flag: " + messages);
+  }
   std::vector<uint32_t> optimized;
   bool ok = false;
   if (options.pipeline == CompilePipeline::Legacy) {
@@ -207,7 +212,7 @@ CompileResult compileComputeGlsl(const std::string& source, const std::string& d
     validateSpirv(spirv, displayName, "after glslang", options.pipeline);
     times.validateMs = msSince(t1);
   }
-  if (options.optimize) {
+  if (options.optimization != OptimizationLevel::O0) {
     auto t2 = Clock::now();
     spirv = optimizeSpirv(spirv, displayName, options);
     times.optimizeMs = msSince(t2);
@@ -233,6 +238,32 @@ std::string spirvValidationErrors(const std::vector<uint32_t>& spirv, int env, C
   // Lean: validity does not depend on the names, only the messages do.
   if (!legacy) spirvValid(spirv, target, true, &messages, firstOnly);
   return messages.empty() ? "invalid module" : messages;
+}
+
+const std::vector<std::string>& o1PassFlags() {
+  // No inlining: inlining every call and then cleaning the inlined module up is where the
+  // performance recipe's time goes (docs/performance-compile.md, breakdown and recipes), and
+  // every driver inlines on its own. Within each function: drop unreachable functions, turn
+  // local variables into SSA values and remove what is then dead.
+  static const std::vector<std::string> flags{"--eliminate-dead-functions", "--eliminate-local-single-block",
+                                              "--eliminate-local-single-store", "--ssa-rewrite",
+                                              "--eliminate-dead-code-aggressive"};
+  return flags;
+}
+
+std::string optimizationCacheToken(OptimizationLevel level) {
+  switch (level) {
+    case OptimizationLevel::O0:
+      return "no-optimize";
+    case OptimizationLevel::O1: {
+      std::string token = "optimize-O1";
+      for (const auto& f : o1PassFlags()) token += " " + f;
+      return token;
+    }
+    case OptimizationLevel::O2:
+      break;
+  }
+  return "optimize";
 }
 
 std::string toolchainVersion() {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/diagnostics.hpp"
+#include "core/optimization_level.hpp"
 
 namespace mb {
 
@@ -27,9 +28,16 @@ enum class CompilePipeline {
 // Vertex: the fragment stage's reference vertex shader, which the preview draws with.
 enum class ShaderStage { Compute, Fragment, Vertex };
 
+// The spirv-opt flags of O1, as `spirv-opt` takes them.
+const std::vector<std::string>& o1PassFlags();
+// The level as a cache key part: O2 and O0 keep the words the keys had before levels existed
+// ("optimize", "no-optimize"), so existing cache entries stay valid; O1 names its passes, so
+// that changing them changes the key.
+std::string optimizationCacheToken(OptimizationLevel level);
+
 struct CompileOptions {
   ShaderStage stage = ShaderStage::Compute;
-  bool optimize = true;  // spirv-opt performance passes (RegisterPerformancePasses)
+  OptimizationLevel optimization = OptimizationLevel::O2;
   bool validate = true;  // spirv-val before and after optimization
   CompilePipeline pipeline = CompilePipeline::Lean;
 };

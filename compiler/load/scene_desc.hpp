@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/diagnostics.hpp"
+#include "core/optimization_level.hpp"
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
 
@@ -41,6 +42,8 @@ struct SceneDesc {
   std::vector<std::string> precisions{"fp32"};
   std::vector<std::string> qualities{"high"};
   std::vector<std::string> targets{"spirv"};  // see compile/targets.hpp
+  // "optimization": "O0" | "O1" | "O2"; `compile -O` overrides it (docs/scenes.md).
+  OptimizationLevel optimization = OptimizationLevel::O2;
   std::vector<SceneMaterial> materials;
   std::vector<Diagnostic> warnings;
   SourceLocation lightsWhere, environmentWhere, precisionWhere, qualityWhere, targetsWhere;

@@ -61,10 +61,10 @@ class SceneJsonReader {
   SceneDesc run() {
     scene_.file = doc_.file();
     scene_.name = std::filesystem::path(doc_.file()).stem().string();
-    if (!f_.object(
-            "", {},
-            {"name", "description", "lights", "environment", "precision", "quality", "targets", "gltf", "materials"},
-            "scene"))
+    if (!f_.object("", {},
+                   {"name", "description", "lights", "environment", "precision", "quality", "targets", "optimization",
+                    "gltf", "materials"},
+                   "scene"))
       return scene_;
     if (auto n = f_.string("/name")) scene_.name = *n;
     f_.string("/description");
@@ -73,6 +73,9 @@ class SceneJsonReader {
     readAxis("/precision", allPrecisions(), "precision", scene_.precisions, scene_.precisionWhere);
     readAxis("/quality", allQualityLevels(), "quality level", scene_.qualities, scene_.qualityWhere);
     readAxis("/targets", allTargets(), "target", scene_.targets, scene_.targetsWhere, "E-SCENE-TARGET");
+    if (auto level = f_.string("/optimization"))
+      if (isOneOf(*level, {"O0", "O1", "O2"}, "optimization level", "/optimization", "E-SCENE-OPTIMIZATION"))
+        parseOptimizationLevel(*level, scene_.optimization);
     if (f_.find("/gltf")) readGltfPart();
     if (f_.find("/materials") && f_.isArray("/materials"))
       for (size_t i = 0; i < f_.find("/materials")->size(); ++i) readMaterial(JsonFields::element("/materials", i));

@@ -47,12 +47,12 @@ void compileInto(ProbeProgram& p) {
   // emits 16-bit OpConstants with a 32-bit word count that spirv-val rejects (measured on
   // ue4_metal at fp16), and folding half arithmetic at compile time need not round as half.
   CompileOptions options;
-  options.optimize = p.precision == ShaderPrecision::Fp32;
+  options.optimization = p.precision == ShaderPrecision::Fp32 ? OptimizationLevel::O2 : OptimizationLevel::O0;
   ShaderCache cache(probeCacheDir());
   CacheIdentity key;
   if (cache.enabled()) {
     key = ShaderCache::identity(ShaderCache::key({ShaderCache::kFormatVersion, MB_VERSION, toolchainVersion(),
-                                                  "validate-probe", options.optimize ? "optimize" : "no-optimize",
+                                                  "validate-probe", optimizationCacheToken(options.optimization),
                                                   options.validate ? "validate" : "no-validate", p.shader.glsl}),
                                 {p.shader.glsl});
     CompiledArtifacts hit;

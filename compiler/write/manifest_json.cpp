@@ -98,6 +98,7 @@ void ManifestWriter::write(std::ostream& out) const {
                           {"header", in_.headerName},
                           {"namespace", in_.cppNamespace},
                           {"targets", std::move(targets)},
+                          {"optimization", optimizationLevelName(in_.optimization)},
                           {"counts", {{"required", count_}, {"unique_spirv", hashes_.size()}}},
                           {"kernel",
                            {{"records", {{"set", 0}, {"binding", 0}}},

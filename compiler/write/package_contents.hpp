@@ -26,7 +26,8 @@ struct PackageInputs {
   const ScenePlan* plan = nullptr;
   const std::vector<BuiltPermutation>* built = nullptr;  // same order as plan->required
   std::vector<std::string> targets{"spirv"};
-  std::string sceneFile;  // empty for `compile MATERIAL...`
+  OptimizationLevel optimization = OptimizationLevel::O2;  // the build's (BuildOptions::optimization)
+  std::string sceneFile;                                   // empty for `compile MATERIAL...`
   std::string headerName = "matbricks_materials.hpp";
   std::string cppNamespace = "matbricks_materials";
 };
