@@ -229,6 +229,13 @@ class DavServer {
     for (const auto& [what, count] : requests()) n += count;
     return n;
   }
+  // requests() once the log holds `made` lines, the requests the clients made so far (for up to
+  // 5 s). nginx writes a request's log line after sending its answer, so a client that has its
+  // answer can be ahead of the log (seen under load).
+  std::map<std::string, int> requestsOnceLogged(int made) const {
+    for (int i = 0; i < 500 && total() < made; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    return requests();
+  }
 
  private:
   void start(int port) {
