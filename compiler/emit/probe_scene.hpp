@@ -1,6 +1,6 @@
 // The validation probe's scene (docs/models.md "Validation probe"): which record inputs
 // describe the shading frame, one light of each type present and the environment, and the
-// GLSL that builds them. compiler/validate/probe_scene.cpp mirrors the construction in double
+// GLSL that builds them. compiler/validate/probe_scene_reference.cpp mirrors the construction in double
 // for the reference; both read the same fp32 record.
 #pragma once
 #include <string>
