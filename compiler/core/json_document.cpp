@@ -125,34 +125,6 @@ class PositionScanner {
   }
 
  public:
-  // From the start of a valid value to just past it.
-  static size_t skipValue(const std::string& t, size_t i) {
-    int depth = 0;
-    do {
-      const char c = t[i];
-      if (c == '"') {
-        ++i;
-        while (i < t.size() && t[i] != '"') i += t[i] == '\\' ? 2 : 1;
-        ++i;
-      } else if (c == '{' || c == '[') {
-        ++depth;
-        ++i;
-      } else if (c == '}' || c == ']') {
-        --depth;
-        ++i;
-      } else if (depth == 0) {
-        while (i < t.size() && std::string_view(",]} \t\r\n").find(t[i]) == std::string_view::npos) ++i;
-      } else {
-        ++i;
-      }
-    } while (depth > 0 && i < t.size());
-    return i;
-  }
-  static size_t skipSpace(const std::string& t, size_t i) {
-    while (i < t.size() && (t[i] == ' ' || t[i] == '\t' || t[i] == '\n' || t[i] == '\r')) ++i;
-    return i;
-  }
-
  private:
   const std::string& t_;
   std::vector<JsonDocument::Position>& out_;
@@ -325,10 +297,10 @@ const JsonDocument::Position* JsonDocument::positionOf(const json* node) const {
 }
 
 uint32_t JsonDocument::elementOffset(uint32_t array, size_t index) const {
-  size_t i = PositionScanner::skipSpace(text_, array + 1);
+  size_t i = skipJsonSpace(text_, array + 1);
   for (size_t k = 0; k < index && i < text_.size(); ++k) {
-    i = PositionScanner::skipSpace(text_, PositionScanner::skipValue(text_, i));
-    i = PositionScanner::skipSpace(text_, i + 1);  // past ','
+    i = skipJsonSpace(text_, skipJsonValue(text_, i));
+    i = skipJsonSpace(text_, i + 1);  // past ','
   }
   return static_cast<uint32_t>(i);
 }
@@ -381,6 +353,31 @@ SourceLocation JsonDocument::valueAt(const std::string& pointer) const { return 
 SourceLocation JsonDocument::keyAt(const std::string& pointer) const {
   const Found found = find(pointer);
   return locationOf(found.whole && found.key != kNoOffset ? found.key : found.value);
+}
+
+size_t skipJsonSpace(const std::string& t, size_t i) {
+  while (i < t.size() && (t[i] == ' ' || t[i] == '\t' || t[i] == '\n' || t[i] == '\r')) ++i;
+  return i;
+}
+
+size_t skipJsonValue(const std::string& t, size_t i) {
+  int depth = 0;
+  do {
+    const char c = t[i];
+    if (c == '"') {
+      for (++i; i < t.size() && t[i] != '"';) i += t[i] == '\\' ? 2 : 1;
+      ++i;
+    } else if (c == '{' || c == '[') {
+      ++depth, ++i;
+    } else if (c == '}' || c == ']') {
+      --depth, ++i;
+    } else if (depth == 0) {
+      while (i < t.size() && std::string_view(",]} \t\r\n").find(t[i]) == std::string_view::npos) ++i;
+    } else {
+      ++i;
+    }
+  } while (depth > 0 && i < t.size());
+  return i;
 }
 
 }  // namespace mb

@@ -81,4 +81,9 @@ class JsonDocument {
 // Converts a byte offset into 1-based line and column.
 SourceLocation locationOfOffset(const std::string& text, size_t offset, const std::string& file);
 
+// Scanning valid JSON text without parsing it (the position scan above, the glTF container's
+// filtering): past whitespace from i, and from the start of a value to just past it.
+size_t skipJsonSpace(const std::string& text, size_t i);
+size_t skipJsonValue(const std::string& text, size_t i);
+
 }  // namespace mb

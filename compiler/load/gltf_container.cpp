@@ -6,6 +6,7 @@
 #include "load/gltf_container.hpp"
 
 #include "core/input_file.hpp"
+#include "core/json_document.hpp"
 #include "load/project_files.hpp"
 
 #include <algorithm>
@@ -110,32 +111,6 @@ std::string magicText(ByteSource& bytes) {
   return out;
 }
 
-size_t skipSpace(const std::string& t, size_t i) {
-  while (i < t.size() && (t[i] == ' ' || t[i] == '\t' || t[i] == '\n' || t[i] == '\r')) ++i;
-  return i;
-}
-
-// From the start of a value of valid JSON to just past it.
-size_t skipValue(const std::string& t, size_t i) {
-  int depth = 0;
-  do {
-    const char c = t[i];
-    if (c == '"') {
-      for (++i; i < t.size() && t[i] != '"';) i += t[i] == '\\' ? 2 : 1;
-      ++i;
-    } else if (c == '{' || c == '[') {
-      ++depth, ++i;
-    } else if (c == '}' || c == ']') {
-      --depth, ++i;
-    } else if (depth == 0) {
-      while (i < t.size() && std::string_view(",]} \t\r\n").find(t[i]) == std::string_view::npos) ++i;
-    } else {
-      ++i;
-    }
-  } while (depth > 0 && i < t.size());
-  return i;
-}
-
 // Which parts of a glTF's JSON a reader builds a tree of (loadGltf).
 enum class GltfReader { kAll, kMaterials, kScene };
 
@@ -158,15 +133,15 @@ bool mayRead(const std::set<std::string>& read, const std::string& key) {
 // (`member` may blank [value, end)); returns where the object's '}' is.
 template <class Member>
 size_t forEachMember(std::string& text, size_t open, Member&& member) {
-  size_t i = skipSpace(text, open + 1);
+  size_t i = skipJsonSpace(text, open + 1);
   while (i < text.size() && text[i] == '"') {
-    const size_t keyEnd = skipValue(text, i);
-    const std::string key = text.substr(i + 1, keyEnd - i - 2);         // as written: escapes not decoded
-    const size_t value = skipSpace(text, skipSpace(text, keyEnd) + 1);  // past ':'
-    const size_t end = skipValue(text, value);
+    const size_t keyEnd = skipJsonValue(text, i);
+    const std::string key = text.substr(i + 1, keyEnd - i - 2);                 // as written: escapes not decoded
+    const size_t value = skipJsonSpace(text, skipJsonSpace(text, keyEnd) + 1);  // past ':'
+    const size_t end = skipJsonValue(text, value);
     member(key, value, end);
-    i = skipSpace(text, end);
-    if (i < text.size() && text[i] == ',') i = skipSpace(text, i + 1);
+    i = skipJsonSpace(text, end);
+    if (i < text.size() && text[i] == ',') i = skipJsonSpace(text, i + 1);
   }
   return i;
 }
@@ -177,9 +152,9 @@ size_t forEachMember(std::string& text, size_t open, Member&& member) {
 // says the same about it); the others keep them and blank the rest.
 void blankUnreadNodeMembers(std::string& text, size_t array) {
   static const std::set<std::string> kRead = {"children", "extensions", "mesh"};
-  size_t i = skipSpace(text, array + 1);
+  size_t i = skipJsonSpace(text, array + 1);
   while (i < text.size() && text[i] != ']') {
-    const size_t end = skipValue(text, i);
+    const size_t end = skipJsonValue(text, i);
     if (text[i] == '{') {
       std::vector<std::pair<size_t, size_t>> unread;
       bool readsAny = false;
@@ -192,8 +167,8 @@ void blankUnreadNodeMembers(std::string& text, size_t array) {
       if (!readsAny) blankValue(text, i, end, true);
       for (size_t k = 0; readsAny && k < unread.size(); ++k) blankValue(text, unread[k].first, unread[k].second, false);
     }
-    i = skipSpace(text, end);
-    if (i < text.size() && text[i] == ',') i = skipSpace(text, i + 1);
+    i = skipJsonSpace(text, end);
+    if (i < text.size() && text[i] == ',') i = skipJsonSpace(text, i + 1);
   }
 }
 
@@ -207,7 +182,7 @@ void blankUnreadMembers(std::string& text, GltfReader reader) {
                                                        "textures"};
   static const std::set<std::string> kSceneReads = {"meshes", "nodes", "scene", "scenes"};
   if (reader == GltfReader::kAll || !nlohmann::json::accept(text)) return;
-  const size_t i = skipSpace(text, 0);
+  const size_t i = skipJsonSpace(text, 0);
   if (i >= text.size() || text[i] != '{') return;
   forEachMember(text, i, [&](const std::string& key, size_t value, size_t end) {
     const bool scene = reader == GltfReader::kScene && mayRead(kSceneReads, key);
