@@ -578,9 +578,10 @@ json benchRecipes(const ShaderLibrary& lib, const std::vector<Permutation>& perm
 // g (opt-in, --levels): the optimization levels (`compile -O`, docs/performance-compile.md
 // "Levels") on the throughput list, repeats interleaved across levels so that a change of load
 // hits all three: cold builds without a cache at -j1 and -j2 with the package's settings (kernel
-// and fragment shader, SPIR-V); the kernels' compile stages on one thread (glslang, spirv-val,
-// spirv-opt), which says where the remaining time goes; SPIR-V instructions; and the run-time
-// cost of three materials' bench kernels compiled at each level, as `bench -O` measures it.
+// and fragment shader, SPIR-V), and at -j2 with one stage (`compile --stages fragment`, then
+// `kernel`); the kernels' compile stages on one thread (glslang, spirv-val, spirv-opt), which
+// says where the remaining time goes; SPIR-V instructions; and the run-time cost of three
+// materials' bench kernels compiled at each level, as `bench -O` measures it.
 json benchLevels(const ShaderLibrary& lib, const std::vector<MaterialDesc>& materials,
                  const std::vector<Permutation>& perms, int repeats) {
   const OptimizationLevel levels[] = {OptimizationLevel::O0, OptimizationLevel::O1, OptimizationLevel::O2};
@@ -600,6 +601,14 @@ json benchLevels(const ShaderLibrary& lib, const std::vector<MaterialDesc>& mate
         size_t total = 0;
         for (const auto& b : built) total += b.spirvInstructions;
         instructions[name] = total;
+      }
+      for (const PackageStages stages : {PackageStages{false, true}, PackageStages{true, false}}) {
+        BuildOptions o = options(2);
+        o.optimization = level;
+        o.stages = stages;
+        const auto t0 = Clock::now();
+        buildPermutations(lib, perms, o);
+        ms[name][stages.kernel ? "build_j2_kernel_only" : "build_j2_fragment_only"].push_back(msSince(t0));
       }
       CompileStageTimes sum;
       CompileOptions co;
@@ -621,7 +630,7 @@ json benchLevels(const ShaderLibrary& lib, const std::vector<MaterialDesc>& mate
     for (const auto& [measure, values] : ms[name]) {
       const double perPermutation = bench::median(values) / double(perms.size());
       row[measure + "_ms_per_permutation"] = perPermutation;
-      if (measure.rfind("build_j", 0) == 0) row[measure + "_permutations_per_s"] = 1000.0 / perPermutation;
+      if (measure.rfind("build_", 0) == 0) row[measure + "_permutations_per_s"] = 1000.0 / perPermutation;
     }
     compile.push_back(row);
     std::cerr << "  " << name << ": -j2 " << row["build_j2_permutations_per_s"].get<double>() << " permutations/s\n";
@@ -661,14 +670,16 @@ std::string markdownLevels(const json& g) {
                   " permutations, SPIR-V with fragment shaders, no cache, median of " +
                   std::to_string(g["repeats"].get<int>()) +
                   " repeats interleaved across levels)\n\n"
-                  "| level | perm/s -j1 | perm/s -j2 | ms/perm -j2 | kernel glslang ms | kernel spirv-val ms | kernel "
-                  "spirv-opt ms | SPIR-V instructions |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+                  "| level | perm/s -j1 | perm/s -j2 | perm/s -j2 fragment only | perm/s -j2 kernel only | ms/perm "
+                  "-j2 | kernel glslang ms | kernel spirv-val ms | kernel spirv-opt ms | SPIR-V instructions "
+                  "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const auto& row : g["compile"])
     s += "| " + row["level"].get<std::string>() + " | " + fmt(row["build_j1_permutations_per_s"]) + " | " +
-         fmt(row["build_j2_permutations_per_s"]) + " | " + fmt(row["build_j2_ms_per_permutation"]) + " | " +
-         fmt(row["kernel_glslang_ms_per_permutation"]) + " | " + fmt(row["kernel_spirv_val_ms_per_permutation"]) +
-         " | " + fmt(row["kernel_spirv_opt_ms_per_permutation"]) + " | " +
-         std::to_string(row["spirv_instructions_total"].get<size_t>()) + " |\n";
+         fmt(row["build_j2_permutations_per_s"]) + " | " + fmt(row["build_j2_fragment_only_permutations_per_s"]) +
+         " | " + fmt(row["build_j2_kernel_only_permutations_per_s"]) + " | " + fmt(row["build_j2_ms_per_permutation"]) +
+         " | " + fmt(row["kernel_glslang_ms_per_permutation"]) + " | " +
+         fmt(row["kernel_spirv_val_ms_per_permutation"]) + " | " + fmt(row["kernel_spirv_opt_ms_per_permutation"]) +
+         " | " + std::to_string(row["spirv_instructions_total"].get<size_t>()) + " |\n";
   s += "\nRun time of the bench kernel compiled at each level on " + g["device"].get<std::string>() +
        " (cost per evaluation, median of " + std::to_string(g["runtime_repeats"].get<int>()) +
        " paired repeats with its 95 % interval; ratio to O2 with bounds from the intervals' ends):\n\n"

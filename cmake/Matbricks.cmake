@@ -5,10 +5,12 @@
 #                           [SCENE file] [MATERIALS files...]
 #                           [OUTPUT_DIR dir] [TARGETS spirv;glsl450;...]
 #                           [NAMESPACE ns] [HEADER name.hpp] [OPTIMIZATION O0|O1|O2]
-#                           [COMPILE_ARGS args...])
+#                           [STAGES kernel;fragment] [COMPILE_ARGS args...])
 #
 # OPTIMIZATION: spirv-opt's level (`compile -O`; default: the scene's, else O2). -O0 compiles
 # fastest, for iteration; docs/performance-compile.md "Levels" gives what each costs at run time.
+# STAGES: the shader stages the package holds (`compile --stages`; default both): an engine that
+# draws with fragment shaders only gives STAGES fragment and does not pay for the kernels.
 # Needs MATBRICKS_EXECUTABLE (the matbricks command-line tool). The package is rebuilt when the
 # scene, a material, the tool, or any file the last compile read changes: `compile --depfile`
 # lists them (scene, glTF, materials, surface code, the shader library's manifest, slots,
@@ -16,7 +18,7 @@
 # `tgt` gets the package directory on its include path (#include "<HEADER>") and the compile
 # definition MATBRICKS_PACKAGE_DIR="<dir>" to load the SPIR-V from.
 function(matbricks_add_materials)
-  cmake_parse_arguments(PARSE_ARGV 0 MB "" "TARGET;SCENE;OUTPUT_DIR;NAMESPACE;HEADER;OPTIMIZATION" "MATERIALS;TARGETS;COMPILE_ARGS")
+  cmake_parse_arguments(PARSE_ARGV 0 MB "" "TARGET;SCENE;OUTPUT_DIR;NAMESPACE;HEADER;OPTIMIZATION" "MATERIALS;TARGETS;STAGES;COMPILE_ARGS")
   if(MB_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "matbricks_add_materials: unknown arguments: ${MB_UNPARSED_ARGUMENTS}")
   endif()
@@ -67,11 +69,22 @@ function(matbricks_add_materials)
     set(level_args "-${MB_OPTIMIZATION}")
   endif()
 
+  set(stage_args "")
+  if(MB_STAGES)
+    foreach(stage IN LISTS MB_STAGES)
+      if(NOT stage MATCHES "^(kernel|fragment)$")
+        message(FATAL_ERROR "matbricks_add_materials: STAGES takes kernel and fragment (got '${stage}')")
+      endif()
+    endforeach()
+    list(JOIN MB_STAGES "," joined)
+    set(stage_args --stages "${joined}")
+  endif()
+
   set(depfile "${CMAKE_CURRENT_BINARY_DIR}/matbricks/${MB_TARGET}.d")
   set(outputs "${MB_OUTPUT_DIR}/manifest.json" "${MB_OUTPUT_DIR}/${MB_HEADER}")
   add_custom_command(
     OUTPUT ${outputs}
-    COMMAND "${MATBRICKS_EXECUTABLE}" compile -q ${input_args} ${target_args} ${level_args} -o "${MB_OUTPUT_DIR}"
+    COMMAND "${MATBRICKS_EXECUTABLE}" compile -q ${input_args} ${target_args} ${level_args} ${stage_args} -o "${MB_OUTPUT_DIR}"
             --header "${MB_HEADER}" --namespace "${MB_NAMESPACE}" --depfile "${depfile}" ${MB_COMPILE_ARGS}
     DEPENDS ${inputs} "${MATBRICKS_EXECUTABLE}"
     DEPFILE "${depfile}"

@@ -179,7 +179,7 @@ TEST_CASE("the fragment shader is cached with its kernel: a warm build compiles 
     CHECK(first[i].artifacts.fragment.reflection.dump() == second[i].artifacts.fragment.reflection.dump());
   }
   // Without the fragment stage the unit is another one: its key changes, nothing is shared.
-  o.fragment = false;
+  o.stages.fragment = false;
   BuildStats kernelOnly;
   const auto third = buildPermutations(lib, perms, o, &kernelOnly);
   CHECK(kernelOnly.cacheHits == 0);
@@ -187,4 +187,20 @@ TEST_CASE("the fragment shader is cached with its kernel: a warm build compiles 
     CHECK(b.fragmentHash.empty());
     CHECK(b.artifacts.fragment.spirv.empty());
   }
+  // Without the kernel (compile --stages fragment) likewise; the fragment shaders are those
+  // of the build with both, and a second such build takes every unit from the cache.
+  o.stages = {false, true};
+  BuildStats fragmentOnly, again;
+  const auto fourth = buildPermutations(lib, perms, o, &fragmentOnly);
+  CHECK(fragmentOnly.cacheHits == 0);
+  REQUIRE(fourth.size() == first.size());
+  for (size_t i = 0; i < fourth.size(); ++i) {
+    CHECK(fourth[i].spirvHash.empty());
+    CHECK(fourth[i].artifacts.spirv.empty());
+    CHECK(fourth[i].artifacts.fragment.spirv == first[i].artifacts.fragment.spirv);
+    CHECK(fourth[i].artifacts.fragment.targets == first[i].artifacts.fragment.targets);
+  }
+  buildPermutations(lib, perms, o, &again);
+  CHECK(again.cacheHits == again.shardUnits);
+  CHECK(again.compiled == 0);
 }

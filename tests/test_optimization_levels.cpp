@@ -19,21 +19,9 @@ namespace {
 
 const char* const kLevels[] = {"-O0", "-O1", "-O2"};
 
-struct Package {
-  nlohmann::json manifest;
-  std::map<std::string, std::string> files;  // relative path -> bytes
-};
+using Package = test::CompiledPackage;
 
-Package compileTo(const std::string& args, const fs::path& out) {
-  auto r = test::runCli("compile -q " + args + " -o " + out.string());
-  INFO(r.output);
-  REQUIRE(r.exitCode == 0);
-  Package p;
-  p.manifest = nlohmann::json::parse(test::readFile(out / "manifest.json"));
-  for (const auto& e : fs::recursive_directory_iterator(out))
-    if (e.is_regular_file()) p.files[fs::relative(e.path(), out).generic_string()] = test::readFile(e.path());
-  return p;
-}
+Package compileTo(const std::string& args, const fs::path& out) { return test::compilePackage(args, out); }
 
 // Sum of spirv_instructions over the permutations of one precision.
 size_t instructions(const nlohmann::json& manifest, const std::string& precision) {
@@ -119,9 +107,14 @@ TEST_CASE("the compile cache keeps the levels apart", "[cli][levels][cache]") {
   CHECK(test::readFile(dir / "b/manifest.json") == test::readFile(dir / "d/manifest.json"));
 }
 
-TEST_CASE("compile -O refuses a level that does not exist", "[cli][levels]") {
+TEST_CASE("compile -O and bench -O refuse a level that does not exist", "[cli][levels]") {
   const fs::path dir = test::freshTempDir("levels", "bad");
   auto r = test::runCli("compile -O3 " + test::materialPath("ue4_metal.json") + " -o " + (dir / "p").string());
   CHECK(r.exitCode == 2);
   CHECK_FALSE(fs::exists(dir / "p"));
+  auto bench = test::runCli("bench -O3 " + test::materialPath("ue4_metal.json") + " -o " + (dir / "b").string());
+  INFO(bench.output);
+  CHECK(bench.exitCode == 2);
+  CHECK_THAT(bench.output, Catch::Contains("--optimization"));
+  CHECK_FALSE(fs::exists(dir / "b"));
 }

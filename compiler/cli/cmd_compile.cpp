@@ -15,6 +15,7 @@
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
 #include "core/cpp_identifiers.hpp"
+#include "core/package_stages.hpp"
 #include "load/scene_desc.hpp"
 #include "permute/scene_plan.hpp"
 #include "write/depfile.hpp"
@@ -103,7 +104,7 @@ nlohmann::json compileCommandJson(const CompileArgs& a, const GlobalOptions& g) 
   return {{"materials", a.materials},       {"scene", a.scene},         {"lights", a.lights},
           {"environment", a.environment},   {"precision", a.precision}, {"quality", a.quality},
           {"targets", a.targets},           {"header", a.headerName},   {"namespace", a.cppNamespace},
-          {"optimization", a.optimization}, {"shaderlib", g.shaderlib}};
+          {"optimization", a.optimization}, {"stages", a.stages},       {"shaderlib", g.shaderlib}};
 }
 
 void compileArgsFromJson(const nlohmann::json& c, const std::string& file, CompileArgs& a, GlobalOptions& g) {
@@ -116,6 +117,7 @@ void compileArgsFromJson(const nlohmann::json& c, const std::string& file, Compi
     a.quality = c.at("quality").get<std::string>();
     a.targets = c.at("targets").get<std::vector<std::string>>();
     a.optimization = c.at("optimization").get<std::string>();
+    a.stages = c.at("stages").get<std::string>();
     a.headerName = c.at("header").get<std::string>();
     a.cppNamespace = c.at("namespace").get<std::string>();
     g.shaderlib = c.at("shaderlib").get<std::string>();
@@ -184,11 +186,15 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
   if (targets.empty()) targets = {"spirv"};
   OptimizationLevel optimization = scene.optimization;                                // O2 without a scene
   if (!a.optimization.empty()) parseOptimizationLevel(a.optimization, optimization);  // checked by CLI11
+  PackageStages stages;
+  if (std::string why; !a.stages.empty() && !parsePackageStages(a.stages, stages, why))
+    throw CLI::ValidationError("--stages: " + why);  // a shard.json's; the command line's CLI11 checked
 
   BuildOptions options;
   options.jobs = a.jobs;
   options.targets = targets;
   options.optimization = optimization;
+  options.stages = stages;
   options.shard = shard;
   options.mergeFrom = mergeFrom;
   if (!mergeFrom)
@@ -207,6 +213,7 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
   in.plan = &plan;
   in.targets = targets;
   in.optimization = optimization;
+  in.stages = stages;
   in.sceneFile = a.scene;
   in.headerName = a.headerName;
   in.cppNamespace = a.cppNamespace;
@@ -223,10 +230,14 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
       lib, plan.required, options,
       [&](size_t i, BuiltPermutation& b) {
         if (!b.inShard) return;
-        if (!a.quiet && !a.explain)
+        if (!a.quiet && !a.explain) {
+          // The kernel's module, else (fragment only) the fragment shader's.
+          const bool kernel = !b.spirvHash.empty();
           std::printf("compiled %-52s %7.2f ms  %5zu instructions  %s%s\n", b.shader.key.c_str(), b.compileMs,
-                      b.spirvInstructions, b.spirvHash.c_str(),
+                      kernel ? b.spirvInstructions : b.fragmentInstructions,
+                      (kernel ? b.spirvHash : b.fragmentHash).c_str(),
                       b.fromCache ? (mergeFrom ? "  (from its shard)" : "  (cached)") : "");
+        }
         if (package) package->add(plan.required[i], b);
         if (shardWriter) shardWriter->add(b.unit, b.artifacts, b.shader.key);
         if (!a.depfile.empty()) addGlslInputs(lib, b.shader.glsl, glslInputs);
@@ -305,6 +316,16 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
                   "spirv-opt level of fp32 units: -O0 none, -O1 per-function clean-up without inlining, -O2 the "
                   "performance recipe (default: the scene's, else 2; docs/performance-compile.md \"Levels\")")
       ->check(CLI::IsMember({"0", "1", "2", "O0", "O1", "O2"}));
+  cmd->add_option("--stages", args->stages,
+                  "Shader stages the package holds: kernel, fragment or kernel,fragment (default: both; "
+                  "docs/package.md \"Stages\")")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            PackageStages stages;
+            std::string why;
+            return parsePackageStages(text, stages, why) ? std::string() : why;
+          },
+          "kernel,fragment"));
   cmd->add_option("-j,--jobs", args->jobs,
                   "Parallel compile jobs (default: every core); output is identical at every -j");
   cmd->add_option(

@@ -25,6 +25,7 @@ struct CompileArgs {
   std::string quality = "high";
   std::vector<std::string> targets;  // empty: the scene's, else spirv
   std::string optimization;          // -O: "0".."2" or "O0".."O2"; empty: the scene's, else O2
+  std::string stages;                // --stages: "kernel", "fragment" or both; empty: both
   unsigned jobs = 0;
   std::string cacheDir;
   bool noCache = false;

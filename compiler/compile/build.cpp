@@ -41,8 +41,11 @@ struct CompileUnit {
   std::string mediumpDisplayName;
   std::string displayName;  // of the first permutation that emitted it
   // The fragment shader (docs/fragment-stage.md) and, like the kernel's, its mediump form for
-  // essl310; empty when the build makes none (BuildOptions::fragment, Engine mode only).
+  // essl310; empty when the build makes none (BuildOptions::stages, Engine mode only).
   std::string fragmentGlsl, fragmentDisplayName, fragmentMediumpGlsl, fragmentMediumpDisplayName;
+  // False: only the fragment shader is built (its text comes from the kernel's, `glsl`, which
+  // also gives the include files).
+  bool kernel = true;
   CompileOptions compile;
   // The build's level (BuildOptions::optimization). compile.optimization is O0 for fp16
   // kernels whatever it is; their mediump form for essl310 is compiled at this level.
@@ -73,7 +76,7 @@ std::vector<std::string> crossTargets(const std::vector<std::string>& requested)
 // Everything that affects a unit's output (shader_cache.hpp).
 std::string unitKey(const ShaderLibrary& lib, const EmittedShader& shader, const CompileOptions& co,
                     OptimizationLevel level, const std::vector<std::string>& targets,
-                    const std::string& mediumpGlsl = "", const CompileUnit* fragment = nullptr) {
+                    const std::string& mediumpGlsl = "", const CompileUnit* fragment = nullptr, bool kernel = true) {
   std::vector<std::string> parts{ShaderCache::kFormatVersion,
                                  MB_VERSION,
                                  toolchainVersion(),
@@ -84,6 +87,8 @@ std::string unitKey(const ShaderLibrary& lib, const EmittedShader& shader, const
   // kernel itself runs at O0). O2 adds no part, so keys from before levels stay valid.
   if (level != OptimizationLevel::O2) parts.push_back(std::string("level ") + optimizationLevelName(level));
   for (const auto& t : crossTargets(targets)) parts.push_back(t + ": " + targetOptions(t));
+  // Both stages add no part, so keys from before stage selection stay valid.
+  if (!kernel) parts.push_back("no kernel");
   parts.push_back(shader.glsl);
   parts.push_back(mediumpGlsl);
   if (fragment) {
@@ -163,8 +168,9 @@ StageArtifacts compileStage(const std::string& glsl, const std::string& displayN
 CompiledArtifacts compileUnit(CompileUnit& u, const std::vector<std::string>& targets) {
   auto t0 = Clock::now();
   CompiledArtifacts a;
-  static_cast<StageArtifacts&>(a) =
-      compileStage(u.glsl, u.displayName, u.mediumpGlsl, u.mediumpDisplayName, u.compile, u.level, targets);
+  if (u.kernel)
+    static_cast<StageArtifacts&>(a) =
+        compileStage(u.glsl, u.displayName, u.mediumpGlsl, u.mediumpDisplayName, u.compile, u.level, targets);
   if (!u.fragmentGlsl.empty()) {
     CompileOptions fragment = u.compile;
     fragment.stage = ShaderStage::Fragment;
@@ -324,7 +330,7 @@ class StreamingBuild {
           b.artifacts = fresh[slot->second].artifacts;
           b.compileMs = unit.reported || unit.lookup == ShaderCache::Lookup::Hit ? 0 : fresh[slot->second].compileMs;
         } else {
-          b.artifacts.reflection = *unit.kernel.reflection;
+          if (unit.kernel.reflection) b.artifacts.reflection = *unit.kernel.reflection;
           for (const auto& t : unit.kernel.targets) b.artifacts.targets[t];
           if (unit.fragment.reflection) b.artifacts.fragment.reflection = *unit.fragment.reflection;
           for (const auto& t : unit.fragment.targets) b.artifacts.fragment.targets[t];
@@ -335,7 +341,7 @@ class StreamingBuild {
         b.fragmentHash = unit.fragment.spirvHash;
         b.fragmentInstructions = unit.fragment.instructions;
         b.fromCache = unit.lookup == ShaderCache::Lookup::Hit;
-        hashes_.insert(b.spirvHash);
+        hashes_.insert(b.spirvHash.empty() ? b.fragmentHash : b.spirvHash);
       }
       sink(i, b);
     }
@@ -370,20 +376,24 @@ class StreamingBuild {
     u.compile.pipeline = options_.pipeline;
     u.glsl = shader.glsl;
     u.displayName = shader.fileName;
-    const bool fragment = options_.fragment && options_.mode == EmitMode::Engine;
+    const bool engine = options_.mode == EmitMode::Engine;
+    const bool fragment = options_.stages.fragment && engine;
+    u.kernel = options_.stages.kernel || !engine;
     try {
       // The fragment shader (docs/fragment-stage.md) comes from the kernel's emitted text.
       if (fragment) setFragment(u, fragmentShaderOf(lib_, perm, shader, false), false);
       if (perm.precision == "fp16" && std::find(targets_.begin(), targets_.end(), "essl310") != targets_.end()) {
         EmittedShader relaxed = emitPermutation(lib_, perm, false, options_.mode, true);
         if (fragment) setFragment(u, fragmentShaderOf(lib_, perm, relaxed, true), true);
-        u.mediumpGlsl = std::move(relaxed.glsl);
-        u.mediumpDisplayName = relaxed.fileName;
+        if (u.kernel) {
+          u.mediumpGlsl = std::move(relaxed.glsl);
+          u.mediumpDisplayName = relaxed.fileName;
+        }
       }
     } catch (const DiagnosticError& e) {
       errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
     }
-    u.cacheKey = unitKey(lib_, shader, u.compile, u.level, targets_, u.mediumpGlsl, fragment ? &u : nullptr);
+    u.cacheKey = unitKey(lib_, shader, u.compile, u.level, targets_, u.mediumpGlsl, fragment ? &u : nullptr, u.kernel);
     u.identity = ShaderCache::identity(u.cacheKey, {u.glsl, u.mediumpGlsl, u.fragmentGlsl, u.fragmentMediumpGlsl});
     return u;
   }

@@ -12,6 +12,7 @@
 #include "compile/shader_cache.hpp"
 #include "compile/shard.hpp"
 #include "core/diagnostics.hpp"
+#include "core/package_stages.hpp"
 #include "emit/emitter.hpp"
 #include "library/shader_library.hpp"
 #include "permute/permutation.hpp"
@@ -23,9 +24,10 @@ struct BuildOptions {
   std::vector<std::string> targets{"spirv"};  // subset of allTargets(); spirv always built
   std::filesystem::path cacheDir;             // empty: no cache
   EmitMode mode = EmitMode::Engine;           // what the package ships (emit/emitter.hpp)
-  // Engine mode: every compile unit also builds the permutation's fragment shader
-  // (emit/fragment_shader.hpp) to the same targets, cached with the kernel in one entry.
-  bool fragment = true;
+  // Engine mode: which stages every compile unit builds, to the same targets and cached in
+  // one entry: the kernel and the permutation's fragment shader (emit/fragment_shader.hpp).
+  // Probe mode always builds the kernel alone (validate, stress and bench run kernels).
+  PackageStages stages;
   // spirv-opt's level for fp32 units (glsl_compiler.hpp OptimizationLevel; fp16 kernels are
   // always O0, their essl310 mediump forms at this level). Part of every unit's cache key.
   OptimizationLevel optimization = OptimizationLevel::O2;
@@ -45,7 +47,9 @@ struct BuildOptions {
 struct BuiltPermutation {
   EmittedShader shader;  // key, GLSL, layout, bricks
   CompiledArtifacts artifacts;
-  std::string spirvHash;  // contentHash() of the SPIR-V words (16 hex digits)
+  // The kernel's: contentHash() of the SPIR-V words (16 hex digits); "" and 0 when the
+  // build made no kernel (BuildOptions::stages).
+  std::string spirvHash;
   size_t spirvInstructions = 0;
   // The fragment shader's, "" and 0 when none was built (its code: artifacts.fragment).
   std::string fragmentHash;
@@ -64,7 +68,7 @@ struct BuildStats {
   size_t cacheCorrupt = 0;     // entries found corrupt and rebuilt
   size_t cacheMismatch = 0;    // intact entries of another unit at a unit's path (evicted, rebuilt)
   size_t cacheUnreadable = 0;  // entries that are no regular file or cannot be read (evicted, rebuilt)
-  size_t uniqueSpirv = 0;      // distinct SPIR-V hashes
+  size_t uniqueSpirv = 0;      // distinct kernels' SPIR-V hashes (fragment shaders' without kernels)
   size_t units = 0;            // compile units (distinct emitted GLSL) of the whole build
   size_t shardUnits = 0;       // of them, built here (all but under --shard)
   size_t remoteHits = 0;       // units the remote cache supplied

@@ -101,10 +101,10 @@ struct RecordInput {
 struct Permutation {
   std::string_view key;
   std::string_view material;
-  std::string_view spirv;         // relative to the package directory
+  std::string_view spirv;         // the kernel, relative to the package directory; "" when none
   std::string_view include;       // the GLSL include, relative to the package directory
   std::string_view paramsStruct;  // the parameter struct's name, empty when there is no block
-  std::size_t paramsSize;         // bytes of the std140 block at set 0, binding 2 (0: none)
+  std::size_t paramsSize;         // bytes of the std140 parameter block (0: none)
   std::uint32_t recordStride;     // floats per shading record (binding 0)
   std::uint32_t resultStride;     // floats per result (binding 1)
   const RecordInput* inputs;
@@ -139,17 +139,22 @@ constexpr std::uint32_t recordOffset(const Permutation& p, std::string_view inpu
 
 }  // namespace
 
-const nlohmann::json* materialParamsBlock(const nlohmann::json& reflection) {
+const nlohmann::json* materialParamsBlock(const nlohmann::json& reflection, int binding) {
   if (!reflection.is_object() || !reflection.contains("uniform_buffers")) return nullptr;
   for (const auto& u : reflection["uniform_buffers"])
-    if (u.value("set", -1) == 0 && u.value("binding", -1) == kKernelParamsBinding) return &u;
+    if (u.value("set", -1) == 0 && u.value("binding", -1) == binding) return &u;
   return nullptr;
 }
 
 HeaderWriter::HeaderWriter(const PackageInputs& in) : in_(in) {}
 
 void HeaderWriter::add(const PackagedPermutation& p) {
-  const nlohmann::json* reflected = materialParamsBlock(p.built->artifacts.reflection);
+  // The kernel's block; in a package without kernels the fragment shader's, which declares the
+  // same members in the same std140 layout (docs/fragment-stage.md).
+  const bool kernel = !p.built->spirvHash.empty();
+  const nlohmann::json* reflected =
+      kernel ? materialParamsBlock(p.built->artifacts.reflection, kKernelParamsBinding)
+             : materialParamsBlock(p.built->artifacts.fragment.reflection, kFragmentParamsBinding);
   // No block although the material has run-time parameters: none of them reaches this
   // permutation's output (an occlusion texture without an environment to occlude, every
   // texture of an emission-only permutation), so the optimizer removed the block. The module
@@ -166,8 +171,9 @@ void HeaderWriter::add(const PackagedPermutation& p) {
       auto [first, fresh] = byLayout_.emplace(layout, structName);
       std::ostringstream decl;
       if (fresh)
-        decl << "// std140 block MaterialParamsBlock (set 0, binding " << kKernelParamsBinding << ") of material '"
-             << p.perm->material->name << "'.\nstruct alignas(16) " << structName << " {\n"
+        decl << "// std140 block " << (kernel ? "MaterialParamsBlock" : "MbMaterialParams") << " (set 0, binding "
+             << (kernel ? kKernelParamsBinding : kFragmentParamsBinding) << ") of material '" << p.perm->material->name
+             << "'.\nstruct alignas(16) " << structName << " {\n"
              << b.members << "};\n"
              << replaceName(b.asserts, structName) << "\n";
       else
@@ -198,7 +204,7 @@ void HeaderWriter::add(const PackagedPermutation& p) {
   inputs << "};\n";
   inputs_.append(inputs.str());
   row << "    {" << quoted(p.built->shader.key) << ", " << quoted(p.perm->material->name) << ", "
-      << quoted(p.files.at("spirv")) << ", " << quoted(p.include) << ", " << quoted(structName) << ", "
+      << quoted(kernel ? p.files.at("spirv") : "") << ", " << quoted(p.include) << ", " << quoted(structName) << ", "
       << (reflected ? reflected->at("size").get<uint64_t>() : 0) << "u, " << l.inStride << "u, " << l.outStride
       << "u, kInputs" << i << ", " << l.inputs.size() << "u, "
       << quoted(fragment == p.fragmentFiles.end() ? "" : fragment->second) << ", "

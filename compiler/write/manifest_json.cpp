@@ -4,6 +4,7 @@
 
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
+#include "core/descriptor_bindings.hpp"
 #include "emit/emitter.hpp"
 #include "write/package_parts.hpp"
 
@@ -27,29 +28,31 @@ nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutatio
   const Permutation& perm = *p.perm;
   const BuiltPermutation& b = *p.built;
   const MaterialDesc& m = *perm.material;
-  nlohmann::json entry{
-      {"key", b.shader.key},
-      {"material", m.name},
-      {"source", m.sourceFile},
-      {"model", m.model},
-      {"description", m.description},
-      {"features", m.features},
-      {"folded_features", perm.folded},
-      {"lights", perm.lights},
-      {"environment", perm.environment},
-      {"precision", perm.precision},
-      {"quality", perm.quality},
-      {"bricks", nlohmann::json::object()},
-      {"bricks_included", b.shader.bricks},
-      {"parameters", nlohmann::json::array()},
-      {"spirv_hash_xxh64", b.spirvHash},
-      {"spirv_instructions", b.spirvInstructions},
-      {"files", p.files},
-      {"include", p.include},
-      {"includes", p.includes},
-      {"needs_fetch_hooks", needsFetchHooks(perm)},
-      {"record_layout", recordLayoutJson(b.shader.layout)},
-      {"reflection", b.artifacts.reflection.is_null() ? nlohmann::json::object() : b.artifacts.reflection}};
+  nlohmann::json entry{{"key", b.shader.key},
+                       {"material", m.name},
+                       {"source", m.sourceFile},
+                       {"model", m.model},
+                       {"description", m.description},
+                       {"features", m.features},
+                       {"folded_features", perm.folded},
+                       {"lights", perm.lights},
+                       {"environment", perm.environment},
+                       {"precision", perm.precision},
+                       {"quality", perm.quality},
+                       {"bricks", nlohmann::json::object()},
+                       {"bricks_included", b.shader.bricks},
+                       {"parameters", nlohmann::json::array()},
+                       {"include", p.include},
+                       {"includes", p.includes},
+                       {"needs_fetch_hooks", needsFetchHooks(perm)},
+                       {"record_layout", recordLayoutJson(b.shader.layout)}};
+  // The kernel's module (docs/package.md "Stages": absent from a fragment-only package).
+  if (!b.spirvHash.empty()) {
+    entry["spirv_hash_xxh64"] = b.spirvHash;
+    entry["spirv_instructions"] = b.spirvInstructions;
+    entry["files"] = p.files;
+    entry["reflection"] = b.artifacts.reflection.is_null() ? nlohmann::json::object() : b.artifacts.reflection;
+  }
   for (const auto& [role, id] : boundRoles(*in.lib, perm)) entry["bricks"][role] = id;
   for (const auto& prm : m.params) entry["parameters"].push_back(paramJson(prm));
   if (!m.engineData.empty()) entry["engine"] = nlohmann::json::parse(m.engineData);
@@ -73,7 +76,7 @@ nlohmann::json recordLayoutJson(const ProbeLayout& layout) {
 ManifestWriter::ManifestWriter(const PackageInputs& in) : in_(in) {}
 
 void ManifestWriter::add(const PackagedPermutation& p) {
-  hashes_.insert(p.built->spirvHash);
+  hashes_.insert(p.built->spirvHash.empty() ? p.built->fragmentHash : p.built->spirvHash);
   // The entry as dump(2) prints it two levels deep (an element of the top-level array).
   std::string text = permutationJson(in_, p).dump(2);
   std::string indented = count_ ? ",\n    " : "    ";
@@ -99,14 +102,15 @@ void ManifestWriter::write(std::ostream& out) const {
                           {"namespace", in_.cppNamespace},
                           {"targets", std::move(targets)},
                           {"optimization", optimizationLevelName(in_.optimization)},
+                          {"stages", packageStageNames(in_.stages)},
                           {"counts", {{"required", count_}, {"unique_spirv", hashes_.size()}}},
-                          {"kernel",
-                           {{"records", {{"set", 0}, {"binding", 0}}},
-                            {"results", {{"set", 0}, {"binding", 1}}},
-                            {"material_params", {{"set", 0}, {"binding", 2}, {"layout", "std140"}}},
-                            {"push_constant", "uint count"}}},
-                          {"fragment", fragmentInterfaceJson()},
                           {"permutations", placeholder}};
+  if (in_.stages.kernel)
+    manifest["kernel"] = {{"records", {{"set", 0}, {"binding", kKernelInputBinding}}},
+                          {"results", {{"set", 0}, {"binding", kKernelOutputBinding}}},
+                          {"material_params", {{"set", 0}, {"binding", kKernelParamsBinding}, {"layout", "std140"}}},
+                          {"push_constant", "uint count"}};
+  if (in_.stages.fragment) manifest["fragment"] = fragmentInterfaceJson();
   if (!in_.sceneFile.empty()) {
     manifest["scene"] = {{"file", in_.sceneFile},
                          {"possible", in_.plan->possible},

@@ -45,9 +45,12 @@ void PackageStream::add(const Permutation& perm, const BuiltPermutation& built) 
   p.perm = &perm;
   p.built = &built;
   const std::string& hash = built.spirvHash;
-  const bool fresh = written_.insert(hash).second;
-  addStageFiles(
-      pkg_, built.artifacts, fresh, [&](const std::string& t) { return t + "/" + hash + targetExtension(t); }, p.files);
+  if (!hash.empty()) {
+    const bool fresh = written_.insert(hash).second;
+    addStageFiles(
+        pkg_, built.artifacts, fresh, [&](const std::string& t) { return t + "/" + hash + targetExtension(t); },
+        p.files);
+  }
   // The fragment shader (docs/fragment-stage.md), deduplicated by its own hash.
   if (!built.fragmentHash.empty()) {
     const bool freshFragment = written_.insert("fragment/" + built.fragmentHash).second;

@@ -27,6 +27,7 @@ struct PackageInputs {
   const std::vector<BuiltPermutation>* built = nullptr;  // same order as plan->required
   std::vector<std::string> targets{"spirv"};
   OptimizationLevel optimization = OptimizationLevel::O2;  // the build's (BuildOptions::optimization)
+  PackageStages stages;                                    // the build's (BuildOptions::stages)
   std::string sceneFile;                                   // empty for `compile MATERIAL...`
   std::string headerName = "matbricks_materials.hpp";
   std::string cppNamespace = "matbricks_materials";

@@ -93,7 +93,8 @@ class HeaderWriter {
   SpillFile inputs_, rows_;
 };
 
-// The material parameter block (set 0, binding 2) in a module's reflection, or null.
-const nlohmann::json* materialParamsBlock(const nlohmann::json& reflection);
+// The material parameter block at set 0, `binding` (the kernel's kKernelParamsBinding, the
+// fragment shader's kFragmentParamsBinding) in a module's reflection, or null.
+const nlohmann::json* materialParamsBlock(const nlohmann::json& reflection, int binding);
 
 }  // namespace mb
