@@ -8,7 +8,9 @@
 #include "compile/targets.hpp"
 #include "emit/emitter.hpp"
 #include "support/build_support.hpp"
+#include "support/cli_support.hpp"
 
+namespace fs = std::filesystem;
 using namespace mb;
 
 namespace {
@@ -142,6 +144,33 @@ TEST_CASE("each target's check rejects a broken output", "[targets]") {
   std::string wrongIndex = msl;
   wrongIndex.replace(wrongIndex.find("[[buffer(0)]]"), 13, "[[buffer(7)]]");
   CHECK(checkMsl(wrongIndex, m).find("[[buffer(0)]]") != std::string::npos);
+}
+
+TEST_CASE("MSL: a block the entry point never reads needs no argument", "[targets]") {
+  // Unoptimized modules (fp16 units, -O0) keep a parameter block whose members are all fed
+  // by textures instead; SPIRV-Cross's MSL declares only the resources main0 uses.
+  const std::string glsl = R"(#version 450
+layout(local_size_x = 64) in;
+layout(std140, set = 0, binding = 2) uniform Params { vec3 unused; } params;
+layout(std430, set = 0, binding = 1) writeonly buffer Out { float result[]; } outBuf;
+void main() { outBuf.result[gl_GlobalInvocationID.x] = 1.0; }
+)";
+  CompileOptions co;
+  co.optimization = OptimizationLevel::O0;
+  const auto spirv = compileComputeGlsl(glsl, "unused_block.comp", co).spirv;
+  REQUIRE(reflectSpirv(spirv)["uniform_buffers"].size() == 1);  // still in the module
+  const std::string msl = crossCompile(spirv, "msl", "unused_block.comp");
+  CHECK(msl.find("& params [[") == std::string::npos);             // no argument for the block
+  CHECK(msl.find("& outBuf [[buffer(0)]]") != std::string::npos);  // the buffer that is used
+}
+
+TEST_CASE("textured glTF materials at fp16 cross-compile to MSL", "[targets][fp16][cli]") {
+  const fs::path dir = test::freshTempDir("targets", "msl_fp16");
+  auto r = test::runCli("compile -q --no-cache " + (test::sourceDir() / "examples/gltf/textured_props.gltf").string() +
+                        " --precision fp16 --targets spirv,msl -o " + (dir / "pkg").string());
+  INFO(r.output);
+  CHECK(r.exitCode == 0);
+  CHECK(r.output.find("E-TARGET-FAILED") == std::string::npos);
 }
 
 TEST_CASE("reflection gives exact std140 offsets of a uniform block, and the buffers of a permutation",

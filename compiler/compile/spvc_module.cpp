@@ -27,12 +27,29 @@ std::string SpvcModule::error() const {
   return e ? e : "";
 }
 
-std::vector<spvc_reflected_resource> SpvcModule::resources(spvc_resource_type type) const {
+namespace {
+
+std::vector<spvc_reflected_resource> listOf(spvc_resources resources, spvc_resource_type type) {
   const spvc_reflected_resource* list = nullptr;
   size_t count = 0;
-  if (!resources_ || spvc_resources_get_resource_list_for_type(resources_, type, &list, &count) != SPVC_SUCCESS)
+  if (!resources || spvc_resources_get_resource_list_for_type(resources, type, &list, &count) != SPVC_SUCCESS)
     return {};
   return {list, list + count};
+}
+
+}  // namespace
+
+std::vector<spvc_reflected_resource> SpvcModule::resources(spvc_resource_type type) const {
+  return listOf(resources_, type);
+}
+
+std::vector<spvc_reflected_resource> SpvcModule::activeResources(spvc_resource_type type) const {
+  spvc_set active = nullptr;
+  spvc_resources used = nullptr;
+  if (!compiler_ || spvc_compiler_get_active_interface_variables(compiler_, &active) != SPVC_SUCCESS ||
+      spvc_compiler_create_shader_resources_for_active_variables(compiler_, &used, active) != SPVC_SUCCESS)
+    return {};
+  return listOf(used, type);
 }
 
 }  // namespace mb

@@ -25,6 +25,9 @@ class SpvcModule {
   std::string error() const;
   // Every resource of one kind (storage buffers, uniform buffers, push constants).
   std::vector<spvc_reflected_resource> resources(spvc_resource_type type) const;
+  // Those the entry point uses. A backend that passes resources as function arguments (MSL)
+  // declares only these: an unoptimized module (fp16, -O0) keeps a block nothing reads.
+  std::vector<spvc_reflected_resource> activeResources(spvc_resource_type type) const;
 
  private:
   spvc_context context_ = nullptr;

@@ -94,7 +94,9 @@ std::string checkMsl(const std::string& source, const SpvcModule& module) {
   const std::string name = std::string(entry ? entry : "main0");
   const std::string kernel = fragment ? "fragment " + name + "_out " + name + "(" : "kernel void " + name + "(";
   if (source.find(kernel) == std::string::npos) return "MSL: no '" + kernel + "' in the output";
-  for (const auto& r : module.resources(SPVC_RESOURCE_TYPE_SAMPLED_IMAGE)) {
+  // Only the resources the entry point uses become arguments: SPIRV-Cross drops the others
+  // (an fp16 or -O0 module keeps a parameter block that no member of it is read from).
+  for (const auto& r : module.activeResources(SPVC_RESOURCE_TYPE_SAMPLED_IMAGE)) {
     const unsigned texture = spvc_compiler_msl_get_automatic_resource_binding(c, r.id);
     const unsigned sampler = spvc_compiler_msl_get_automatic_resource_binding_secondary(c, r.id);
     for (const std::string& attr :
@@ -104,7 +106,7 @@ std::string checkMsl(const std::string& source, const SpvcModule& module) {
   }
   for (spvc_resource_type type :
        {SPVC_RESOURCE_TYPE_STORAGE_BUFFER, SPVC_RESOURCE_TYPE_UNIFORM_BUFFER, SPVC_RESOURCE_TYPE_PUSH_CONSTANT})
-    for (const auto& r : module.resources(type)) {
+    for (const auto& r : module.activeResources(type)) {
       const unsigned index = spvc_compiler_msl_get_automatic_resource_binding(c, r.id);
       const std::string attr = "[[buffer(" + std::to_string(index) + ")]]";
       if (index == ~0u || source.find(attr) == std::string::npos)

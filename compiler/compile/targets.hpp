@@ -6,7 +6,7 @@
 //   essl310  glslang reparses it as ESSL 3.10 (#version 310 es) and generates SPIR-V
 //   hlsl     glslang's HLSL front end reparses it (shader model 6.0 source) and generates SPIR-V
 //   msl      no Metal compiler runs on Debian: SPIRV-Cross must succeed, and the kernel's entry
-//            point and every reflected buffer's [[buffer(n)]] index must appear in the source
+//            point and the [[buffer(n)]] index of every buffer it uses must appear in the source
 #pragma once
 #include <cstdint>
 #include <map>
