@@ -192,6 +192,23 @@ TEST_CASE("validate --json gives one complete record per permutation", "[cli][va
   }
 }
 
+TEST_CASE("a list option takes one word per use, never the arguments after it", "[cli]") {
+  const fs::path dir = test::freshTempDir("cli", "list_options");
+  const std::string material = test::materialPath("ue4_metal.json");
+  auto r = test::runCli("compile -q --no-cache --targets msl " + material + " --lights dir,point --targets hlsl -o " +
+                        (dir / "p").string());
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  const auto manifest = nlohmann::json::parse(test::readFile(dir / "p" / "manifest.json"));
+  CHECK(manifest["targets"] == nlohmann::json::array({"spirv", "hlsl", "msl"}));
+  CHECK(manifest["permutations"][0]["lights"] == nlohmann::json::array({"dir", "point"}));
+  // Space-separated values are not a list: the second word is a material path, and missing.
+  auto words = test::runCli("compile -q --no-cache --lights dir point " + material + " -o " + (dir / "q").string());
+  CHECK(words.exitCode == 3);
+  CHECK_THAT(words.output, Catch::Contains("point"));
+  CHECK_FALSE(fs::exists(dir / "q"));
+}
+
 TEST_CASE("every subcommand has --help and usage errors exit 2", "[cli]") {
   for (const char* sub : {"compile", "validate", "bricks", "eval", "stress", "energy", "lut", "bench", "preview"}) {
     auto r = test::runCli(std::string(sub) + " --help");

@@ -33,6 +33,12 @@ int main(int argc, char** argv) {
   commands.push_back(addPreviewCommand(app, g));
   commands.push_back(addReportCommand(app, g));
 
+  // A list option takes one value per use, "a,b" or "--x a --x b", never the words after it:
+  // CLI11's default would read `compile --targets msl m.json` as the targets msl and m.json.
+  for (const Command& c : commands)
+    for (CLI::Option* o : c.app->get_options())
+      if (!o->get_positional() && o->get_items_expected_max() > 1) o->allow_extra_args(false);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
