@@ -135,9 +135,68 @@ ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
   return p;
 }
 
+namespace {
+
+// This thread's working copy of `proto` for the closure numbered `id` (a process-unique id, not
+// an address that a later closure could reuse), copied when the thread last served another.
+ref::ModelEvalInput& workingInput(const ref::ModelEvalInput& proto, uint64_t id) {
+  thread_local uint64_t workingId = 0;
+  thread_local ref::ModelEvalInput e;
+  if (workingId != id) {
+    e = proto;
+    workingId = id;
+  }
+  return e;
+}
+
+void writeRadiance(const ref::Vec3& r, double* out) {
+  out[0] = r.x;
+  out[1] = r.y;
+  out[2] = r.z;
+}
+
+// The by-name closure: every record looks up its scene columns, inputs and bricks by name.
+std::function<void(const double*, double*)> byNameReferenceEval(ref::ModelReferenceFn model, const ProbeLayout& layout,
+                                                                const MaterialDesc& mat, const ProbeScene& scene,
+                                                                std::shared_ptr<const ref::ModelEvalInput> proto,
+                                                                uint64_t id) {
+  return [model, layout, &mat, scene, proto, id](const double* in, double* out) {
+    ref::ModelEvalInput& e = workingInput(*proto, id);
+    sceneFromRecord(scene, layout, in, e);
+    for (const auto& prm : mat.params) {
+      // User parameters are read only by surface code, whose results come fed below.
+      if (prm.user || prm.constant) continue;
+      const ProbeInput* pi = layout.find(prm.name);
+      e.inputs[prm.name].assign(in + pi->offset, in + pi->offset + componentCount(prm.type));
+    }
+    // With surface code the model inputs are what surface() computed on the GPU; they are
+    // passed through unchanged, so NaN or Inf from user code shows in the comparison.
+    const double* fed = in + layout.inStride;
+    for (const auto& f : layout.fedOutputs) {
+      const double* v = fed + (f.offset - componentCount(layout.output));
+      e.inputs[f.name].assign(v, v + componentCount(f.type));
+      for (int k = 0; k < componentCount(f.type); ++k) out[f.offset + k] = v[k];
+    }
+    writeRadiance(model(e), out);
+  };
+}
+
+// One model input a record sets: its index in ref::names::kInputs, where it is read in the
+// record (as the closure receives it: inputs, then fed outputs), and where a fed output is
+// copied to in `out` (-1: not fed).
+struct RecordInput {
+  int index = 0;
+  uint32_t from = 0;
+  int64_t copyTo = -1;
+  int size = 0;
+};
+
+}  // namespace
+
 std::function<void(const double*, double*)> materialReferenceEval(const Permutation& perm, const ProbeLayout& layout,
                                                                   std::map<std::string, std::string> bricks,
-                                                                  bool groundTruths, bool illuminanceInput) {
+                                                                  bool groundTruths, bool illuminanceInput,
+                                                                  ReferenceLookup lookup) {
   const MaterialDesc& mat = *perm.material;
   ref::ModelReferenceFn model = ref::ModelRegistry::instance().find(mat.model);
   if (!model) missingReference("model '" + mat.model + "'");
@@ -156,32 +215,34 @@ std::function<void(const double*, double*)> materialReferenceEval(const Permutat
     if (!prm.user && prm.constant) proto->inputs[prm.name] = prm.value;
   static std::atomic<uint64_t> nextId{1};
   const uint64_t id = nextId++;
-  return [model, layout, &mat, scene, proto, id](const double* in, double* out) {
-    thread_local uint64_t workingId = 0;
-    thread_local ref::ModelEvalInput e;
-    if (workingId != id) {
-      e = *proto;
-      workingId = id;
+  if (lookup == ReferenceLookup::ByName) return byNameReferenceEval(model, layout, mat, scene, proto, id);
+
+  // Resolved: the lookups above, done once here. Inputs no reference reads (index -1) are
+  // skipped; the by-name path stores them in a map nothing reads.
+  proto->resolve();
+  const SceneColumns columns = sceneColumns(scene, layout);
+  std::vector<RecordInput> recordInputs;
+  for (const auto& prm : mat.params) {
+    if (prm.user || prm.constant) continue;
+    const int index = ref::names::find(ref::names::kInputs, prm.name);
+    if (index < 0) continue;
+    const ProbeInput* pi = layout.find(prm.name);
+    recordInputs.push_back({index, pi->offset, -1, componentCount(prm.type)});
+  }
+  for (const auto& f : layout.fedOutputs) {
+    const uint32_t from = layout.inStride + (f.offset - componentCount(layout.output));
+    recordInputs.push_back({ref::names::find(ref::names::kInputs, f.name), from, f.offset, componentCount(f.type)});
+  }
+  return [model, scene, columns, recordInputs, proto, id](const double* in, double* out) {
+    ref::ModelEvalInput& e = workingInput(*proto, id);
+    sceneFromRecord(scene, columns, in, e);
+    for (const RecordInput& r : recordInputs) {
+      if (r.index >= 0) e.setInput(r.index, in + r.from, r.size);
+      // Fed outputs pass through unchanged, so NaN or Inf from user code shows.
+      if (r.copyTo >= 0)
+        for (int k = 0; k < r.size; ++k) out[r.copyTo + k] = in[r.from + k];
     }
-    sceneFromRecord(scene, layout, in, e);
-    for (const auto& prm : mat.params) {
-      // User parameters are read only by surface code, whose results come fed below.
-      if (prm.user || prm.constant) continue;
-      const ProbeInput* pi = layout.find(prm.name);
-      e.inputs[prm.name].assign(in + pi->offset, in + pi->offset + componentCount(prm.type));
-    }
-    // With surface code the model inputs are what surface() computed on the GPU; they are
-    // passed through unchanged, so NaN or Inf from user code shows in the comparison.
-    const double* fed = in + layout.inStride;
-    for (const auto& f : layout.fedOutputs) {
-      const double* v = fed + (f.offset - componentCount(layout.output));
-      e.inputs[f.name].assign(v, v + componentCount(f.type));
-      for (int k = 0; k < componentCount(f.type); ++k) out[f.offset + k] = v[k];
-    }
-    ref::Vec3 r = model(e);
-    out[0] = r.x;
-    out[1] = r.y;
-    out[2] = r.z;
+    writeRadiance(model(e), out);
   };
 }
 
@@ -205,11 +266,16 @@ Tolerance compositionTolerance(const ShaderLibrary& lib, const std::vector<std::
 }
 
 ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput) {
+  ProbeProgram p = describePermutationProbe(lib, perm, illuminanceInput);
+  compileInto(p);
+  return p;
+}
+
+ProbeProgram describePermutationProbe(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput) {
   const MaterialDesc& mat = *perm.material;
   ProbeProgram p;
   p.precision = precisionOf(perm);
   p.shader = emitPermutation(lib, perm, illuminanceInput);
-  compileInto(p);
 
   p.tolerance = compositionTolerance(lib, p.shader.bricks, probeSceneRadianceBound(probeSceneOf(perm, false)));
   if (illuminanceInput) {

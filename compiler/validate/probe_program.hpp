@@ -58,6 +58,9 @@ ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
 // (emitPermutation); its domain is kIlluminanceRange, and the absolute tolerance scales with
 // the largest illuminance (the result is linear in it).
 ProbeProgram buildPermutationProbe(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput = false);
+// The same without compiling (`compiled` empty): the layout, domain, tolerance and reference,
+// for work that runs the reference alone.
+ProbeProgram describePermutationProbe(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput = false);
 // A permutation's fp32 tolerance: the sum of its bricks' tolerances plus 1e-5 relative for the
 // composition, the absolute part scaled by `radianceBound` (the scene's largest illuminance or
 // radiance input: a unit-illuminance composition's absolute error scales with it). validate
@@ -135,10 +138,16 @@ void addErrors(ErrorStats& s, const ProbeRun& run, const ProbeProgram& program, 
 // probe_scene_reference.hpp) and the non-constant parameters from a record laid out as
 // `layout`. With `groundTruths`, each bound brick that has a ground truth is evaluated by it
 // (bench's yardstick). The permutation's material must outlive the result.
+// `lookup`: Resolved finds each role's reference, each input's column and the scene's columns
+// once, when the closure is built, so that a record costs no name lookup and no allocation;
+// ByName looks every name up per record and brick call (the path the resolved one is tested
+// against: both give the same doubles).
+enum class ReferenceLookup { Resolved, ByName };
 std::function<void(const double*, double*)> materialReferenceEval(const Permutation& perm, const ProbeLayout& layout,
                                                                   std::map<std::string, std::string> bricks,
                                                                   bool groundTruths = false,
-                                                                  bool illuminanceInput = false);
+                                                                  bool illuminanceInput = false,
+                                                                  ReferenceLookup lookup = ReferenceLookup::Resolved);
 // Record columns holding the direction vectors n, v, l (empty if the probe has none).
 std::vector<uint32_t> directionInputColumns(const ProbeLayout& layout);
 

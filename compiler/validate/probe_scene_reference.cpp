@@ -17,79 +17,120 @@ void orthonormalBasis(const Vec3& n, Vec3& t, Vec3& b) {
   b = {c, s + n.y * n.y * a, -n.y};
 }
 
-class Record {
- public:
-  Record(const ProbeLayout& layout, const double* data) : layout_(layout), data_(data) {}
-  double scalar(const std::string& name) const { return data_[at(name)]; }
-  Vec3 vec3(const std::string& name) const {
-    uint32_t o = at(name);
-    return {data_[o], data_[o + 1], data_[o + 2]};
-  }
+}  // namespace
 
- private:
-  uint32_t at(const std::string& name) const {
-    const ProbeInput* in = layout_.find(name);
+SceneColumns sceneColumns(const ProbeScene& scene, const ProbeLayout& layout) {
+  auto at = [&layout](const std::string& name) {
+    const ProbeInput* in = layout.find(name);
     if (!in) throw std::logic_error("probe record has no input '" + name + "'");
     return in->offset;
+  };
+  SceneColumns c;
+  c.n = at("n");
+  c.v = at("v");
+  c.l = at("l");
+  if (scene.fullFrame) {
+    c.ngTilt = at("ngTilt");
+    c.tangentAngle = at("tangentAngle");
   }
-  const ProbeLayout& layout_;
-  const double* data_;
-};
-
-}  // namespace
+  for (const auto& type : scene.lights) {
+    if (type == "dir") {
+      if (scene.illuminanceInput) c.illuminance = at("illuminance");
+    } else if (type == "point") {
+      c.pointDistance = at("pointDistance");
+      c.pointIntensity = at("pointIntensity");
+      c.pointFalloffRadius = at("pointFalloffRadius");
+    } else if (type == "spot") {
+      c.spotAxisAngle = at("spotAxisAngle");
+      c.spotCosOuter = at("spotCosOuter");
+      c.spotInnerFraction = at("spotInnerFraction");
+      c.spotDistance = at("spotDistance");
+      c.spotIntensity = at("spotIntensity");
+      c.spotFalloffRadius = at("spotFalloffRadius");
+    } else if (type == "sphere") {
+      c.sphereDistance = at("sphereDistance");
+      c.sphereRadiusFraction = at("sphereRadiusFraction");
+      c.sphereIntensity = at("sphereIntensity");
+      c.sphereFalloffRadius = at("sphereFalloffRadius");
+    } else if (type == "tube") {
+      c.tubeAxisAngle = at("tubeAxisAngle");
+      c.tubeDistance = at("tubeDistance");
+      c.tubeAxisTilt = at("tubeAxisTilt");
+      c.tubeHalfLengthFraction = at("tubeHalfLengthFraction");
+      c.tubeRadiusFraction = at("tubeRadiusFraction");
+      c.tubeIntensity = at("tubeIntensity");
+      c.tubeFalloffRadius = at("tubeFalloffRadius");
+    }
+  }
+  if (scene.environment == "none") return c;
+  for (int i = 0; i < 9; ++i) c.sh[i] = at("sh" + std::to_string(i));
+  c.ao = at("ao");
+  if (scene.environment == "ibl_lut" || scene.environment == "ibl_analytic") c.prefiltered = at("prefiltered");
+  if (scene.environment == "ibl_lut") {
+    c.dfgX = at("dfgX");
+    c.dfgY = at("dfgY");
+    c.dfgZ = at("dfgZ");
+  }
+  return c;
+}
 
 void sceneFromRecord(const ProbeScene& scene, const ProbeLayout& layout, const double* record,
                      ref::ModelEvalInput& in) {
-  Record r(layout, record);
+  sceneFromRecord(scene, sceneColumns(scene, layout), record, in);
+}
+
+void sceneFromRecord(const ProbeScene& scene, const SceneColumns& c, const double* record, ref::ModelEvalInput& in) {
+  auto scalar = [record](uint32_t at) { return record[at]; };
+  auto vec3 = [record](uint32_t at) { return Vec3{record[at], record[at + 1], record[at + 2]}; };
   ref::ShadingFrame& f = in.frame;
-  f.n = ref::normalize(r.vec3("n"));
-  f.v = ref::normalize(r.vec3("v"));
+  f.n = ref::normalize(vec3(c.n));
+  f.v = ref::normalize(vec3(c.v));
   Vec3 t0, b0;
   orthonormalBasis(f.n, t0, b0);
   if (scene.fullFrame) {
-    f.ng = ref::normalize(f.n + b0 * r.scalar("ngTilt"));
-    double a = r.scalar("tangentAngle");
+    f.ng = ref::normalize(f.n + b0 * scalar(c.ngTilt));
+    double a = scalar(c.tangentAngle);
     f.t = t0 * std::cos(a) + b0 * std::sin(a);
   } else {
     f.ng = f.n;
     f.t = t0;
   }
-  const Vec3 lu = ref::normalize(r.vec3("l"));
+  const Vec3 lu = ref::normalize(vec3(c.l));
   Vec3 lt, lb;
   orthonormalBasis(lu, lt, lb);
   for (const auto& type : scene.lights) {
     if (type == "dir") {
-      in.dir = ref::DirectionalLight{lu, scene.illuminanceInput ? r.vec3("illuminance") : Vec3{1, 1, 1}};
+      in.dir = ref::DirectionalLight{lu, scene.illuminanceInput ? vec3(c.illuminance) : Vec3{1, 1, 1}};
     } else if (type == "point") {
-      in.point =
-          ref::PointLight{lu * r.scalar("pointDistance"), r.vec3("pointIntensity"), r.scalar("pointFalloffRadius")};
+      in.point = ref::PointLight{lu * scalar(c.pointDistance), vec3(c.pointIntensity), scalar(c.pointFalloffRadius)};
     } else if (type == "spot") {
-      double a = r.scalar("spotAxisAngle"), cosOuter = r.scalar("spotCosOuter");
+      double a = scalar(c.spotAxisAngle), cosOuter = scalar(c.spotCosOuter);
       Vec3 axis = lt * std::sin(a) - lu * std::cos(a);
-      double cosInner = cosOuter + r.scalar("spotInnerFraction") * (1.0 - cosOuter);
-      in.spot = ref::SpotLight{lu * r.scalar("spotDistance"), axis,     r.vec3("spotIntensity"),
-                               r.scalar("spotFalloffRadius"), cosOuter, cosInner};
+      double cosInner = cosOuter + scalar(c.spotInnerFraction) * (1.0 - cosOuter);
+      in.spot = ref::SpotLight{lu * scalar(c.spotDistance), axis,     vec3(c.spotIntensity),
+                               scalar(c.spotFalloffRadius), cosOuter, cosInner};
     } else if (type == "sphere") {
-      double d = r.scalar("sphereDistance");
-      in.sphere = ref::SphereLight{lu * d, r.scalar("sphereRadiusFraction") * d, r.vec3("sphereIntensity"),
-                                   r.scalar("sphereFalloffRadius")};
+      double d = scalar(c.sphereDistance);
+      in.sphere = ref::SphereLight{lu * d, scalar(c.sphereRadiusFraction) * d, vec3(c.sphereIntensity),
+                                   scalar(c.sphereFalloffRadius)};
     } else if (type == "tube") {
-      double a = r.scalar("tubeAxisAngle"), d = r.scalar("tubeDistance");
-      Vec3 axis = ref::normalize(lt * std::cos(a) + lb * std::sin(a) + lu * r.scalar("tubeAxisTilt"));
-      Vec3 center = lu * d, halfSegment = axis * (r.scalar("tubeHalfLengthFraction") * d);
-      in.tube = ref::TubeLight{center - halfSegment, center + halfSegment, r.scalar("tubeRadiusFraction") * d,
-                               r.vec3("tubeIntensity"), r.scalar("tubeFalloffRadius")};
+      double a = scalar(c.tubeAxisAngle), d = scalar(c.tubeDistance);
+      Vec3 axis = ref::normalize(lt * std::cos(a) + lb * std::sin(a) + lu * scalar(c.tubeAxisTilt));
+      Vec3 center = lu * d, halfSegment = axis * (scalar(c.tubeHalfLengthFraction) * d);
+      in.tube = ref::TubeLight{center - halfSegment, center + halfSegment, scalar(c.tubeRadiusFraction) * d,
+                               vec3(c.tubeIntensity), scalar(c.tubeFalloffRadius)};
     }
   }
   if (scene.environment == "none") return;
-  ref::Environment env;
-  env.mode = scene.environment;
-  for (int i = 0; i < 9; ++i) env.sh[i] = r.vec3("sh" + std::to_string(i));
-  env.ao = r.scalar("ao");
+  // Filled in place: assigning a fresh Environment would copy its mode string and hooks per
+  // record. The hooks stay unset (validation's probe has no textures).
+  ref::Environment& env = in.env ? *in.env : in.env.emplace();
+  if (env.mode != scene.environment) env.mode = scene.environment;
+  for (int i = 0; i < 9; ++i) env.sh[i] = vec3(c.sh[i]);
+  env.ao = scalar(c.ao);
   env.maxMip = kProbeMaxMip;
-  env.prefiltered = env.ibl() ? r.vec3("prefiltered") : Vec3{};
-  env.dfg = scene.environment == "ibl_lut" ? Vec3{r.scalar("dfgX"), r.scalar("dfgY"), r.scalar("dfgZ")} : Vec3{0, 1, 0};
-  in.env = env;
+  env.prefiltered = env.ibl() ? vec3(c.prefiltered) : Vec3{};
+  env.dfg = scene.environment == "ibl_lut" ? Vec3{scalar(c.dfgX), scalar(c.dfgY), scalar(c.dfgZ)} : Vec3{0, 1, 0};
 }
 
 }  // namespace mb

@@ -6,8 +6,26 @@
 
 namespace mb {
 
+// Where each of a scene's inputs sits in a record (offsets; the scene's inputs only), found
+// once per permutation so that a record is read without looking names up.
+struct SceneColumns {
+  uint32_t n = 0, v = 0, l = 0, ngTilt = 0, tangentAngle = 0, illuminance = 0;
+  uint32_t pointDistance = 0, pointIntensity = 0, pointFalloffRadius = 0;
+  uint32_t spotAxisAngle = 0, spotCosOuter = 0, spotInnerFraction = 0, spotDistance = 0, spotIntensity = 0,
+           spotFalloffRadius = 0;
+  uint32_t sphereDistance = 0, sphereRadiusFraction = 0, sphereIntensity = 0, sphereFalloffRadius = 0;
+  uint32_t tubeAxisAngle = 0, tubeDistance = 0, tubeAxisTilt = 0, tubeHalfLengthFraction = 0, tubeRadiusFraction = 0,
+           tubeIntensity = 0, tubeFalloffRadius = 0;
+  uint32_t sh[9] = {}, ao = 0, prefiltered = 0, dfgX = 0, dfgY = 0, dfgZ = 0;
+};
+// Throws std::logic_error when the layout lacks one of the scene's inputs.
+SceneColumns sceneColumns(const ProbeScene& scene, const ProbeLayout& layout);
+
 // Fills in.frame, the lights and the environment of `scene` from `record` (laid out as
 // `layout`).
 void sceneFromRecord(const ProbeScene& scene, const ProbeLayout& layout, const double* record, ref::ModelEvalInput& in);
+// The same from columns found once.
+void sceneFromRecord(const ProbeScene& scene, const SceneColumns& columns, const double* record,
+                     ref::ModelEvalInput& in);
 
 }  // namespace mb

@@ -1,12 +1,15 @@
 // Reference compositions of shading models: plain C++ in double that combines the
 // references of whichever bricks a material bound to the model's roles (docs/models.md).
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <initializer_list>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/reference.hpp"
@@ -65,24 +68,96 @@ struct Environment {
 // The probe's smooth known function of direction and mip level (probe_scene.glsl).
 double probeEnvironmentShape(const Vec3& r, double lod);
 
-// Arguments of one brick call, packed in slot-signature order.
+// Arguments of one brick call, packed in slot-signature order. Held inline (no allocation):
+// a brick call is made several times per light per evaluation.
 class Args {
  public:
+  static constexpr size_t kCapacity = 32;  // the longest slot signature packs 15 doubles
   Args& operator<<(double x) {
-    values.push_back(x);
+    if (size_ == kCapacity) overflow();
+    values_[size_++] = x;
     return *this;
   }
-  Args& operator<<(const Vec3& v) {
-    // Three push_backs, not insert({...}): GCC 12 reports a false -Wstringop-overflow for the
-    // inlined initializer-list insert.
-    values.push_back(v.x);
-    values.push_back(v.y);
-    values.push_back(v.z);
-    return *this;
-  }
+  Args& operator<<(const Vec3& v) { return *this << v.x << v.y << v.z; }
   // A Geometry parameter: the vectors it is built from (makeGeometry normalizes them).
   Args& geometry(const Vec3& n, const Vec3& v, const Vec3& l) { return *this << n << v << l; }
-  std::vector<double> values;
+  const double* data() const { return values_; }
+  size_t size() const { return size_; }
+
+ private:
+  [[noreturn]] static void overflow();
+  double values_[kCapacity];
+  size_t size_ = 0;
+};
+
+// The names the reference compositions use, as compile-time indices: a role, model input or
+// feature named by a string literal becomes its index in these tables at compile time (a name
+// missing from its table does not compile), so a resolved ModelEvalInput finds a brick or an
+// input by index instead of by string.
+namespace names {
+inline constexpr std::string_view kRoles[] = {"anisotropy_alpha",
+                                              "bent_normal_aniso",
+                                              "clearcoat_base_roughness",
+                                              "clearcoat_d",
+                                              "clearcoat_fresnel",
+                                              "clearcoat_v",
+                                              "dfg_lut",
+                                              "diffuse",
+                                              "diffuse_wrap",
+                                              "energy_compensation",
+                                              "env_brdf",
+                                              "f0_clearcoat",
+                                              "fresnel",
+                                              "light_falloff",
+                                              "mip_mapping",
+                                              "roughness",
+                                              "sh_irradiance",
+                                              "sheen_d",
+                                              "sheen_v",
+                                              "specular_d",
+                                              "specular_d_aniso",
+                                              "specular_occlusion",
+                                              "specular_v",
+                                              "specular_v_aniso",
+                                              "sphere_energy_normalization",
+                                              "sphere_horizon_wrap",
+                                              "sphere_light_point",
+                                              "tube_energy_normalization",
+                                              "tube_light_point"};
+inline constexpr std::string_view kInputs[] = {
+    "ambientOcclusion", "anisotropy", "baseColor", "clearCoat",  "clearCoatNormal", "clearCoatRoughness", "emissive",
+    "f0Dielectric",     "metallic",   "roughness", "sheenColor", "sheenRoughness",  "subsurfaceColor",    "wrap"};
+inline constexpr std::string_view kFeatures[] = {"anisotropy", "clearcoat", "sheen"};
+
+template <size_t N>
+consteval int indexIn(const std::string_view (&table)[N], std::string_view name) {
+  for (size_t i = 0; i < N; ++i)
+    if (table[i] == name) return static_cast<int>(i);
+  throw "name missing from its table in common/model_reference.hpp";  // not a constant: no compile
+}
+// Runtime lookup, for building a plan: -1 when the name is not in the table.
+template <size_t N>
+int find(const std::string_view (&table)[N], std::string_view name) {
+  for (size_t i = 0; i < N; ++i)
+    if (table[i] == name) return static_cast<int>(i);
+  return -1;
+}
+
+template <const auto& Table>
+struct Name {
+  consteval Name(const char* s) : text(s), index(indexIn(Table, text)) {}  // NOLINT: implicit by design
+  std::string_view text;
+  int index;
+};
+}  // namespace names
+using RoleName = names::Name<names::kRoles>;
+using InputName = names::Name<names::kInputs>;
+using FeatureName = names::Name<names::kFeatures>;
+
+// A float or vec3 model input held inline.
+struct InputValue {
+  double v[3] = {0, 0, 0};
+  int size = 0;  // 0: not set
 };
 
 struct ModelEvalInput {
@@ -101,13 +176,65 @@ struct ModelEvalInput {
   // exact material a permutation approximates, which bench measures error against.
   bool groundTruths = false;
 
-  bool has(const std::string& feature) const { return features.count(feature) != 0; }
+  // Looks up, once, each role's reference (or ground truth), each input's value and the
+  // features, from `bricks`, `inputs`, `features` and `groundTruths`: from then on the
+  // accessors below read the resolved plan, by index, and `bricks`, `inputs` and `features`
+  // are no longer read (set per-record inputs with setInput). The results are those of the
+  // unresolved path, which looks every name up per call.
+  void resolve();
+  bool resolved() const { return resolved_; }
+  // Sets a model input (`size` doubles) of a resolved input; an index from
+  // names::find(names::kInputs, name).
+  void setInput(int index, const double* value, int size) {
+    InputValue& slot = plan_.inputs[index];
+    for (int k = 0; k < size; ++k) slot.v[k] = value[k];
+    slot.size = size;
+  }
+
+  bool has(FeatureName feature) const {
+    return resolved_ ? (plan_.features >> feature.index & 1u) != 0 : features.count(std::string(feature.text)) != 0;
+  }
   bool bound(const std::string& role) const { return bricks.count(role) != 0; }
-  double floatInput(const std::string& name) const;
-  Vec3 vec3Input(const std::string& name) const;
+  double floatInput(InputName name) const {
+    if (resolved_ && plan_.inputs[name.index].size == 1) return plan_.inputs[name.index].v[0];
+    return floatInputByName(std::string(name.text));
+  }
+  Vec3 vec3Input(InputName name) const {
+    if (resolved_ && plan_.inputs[name.index].size == 3) {
+      const double* v = plan_.inputs[name.index].v;
+      return {v[0], v[1], v[2]};
+    }
+    return vec3InputByName(std::string(name.text));
+  }
   // Evaluates the reference of the brick bound to `role`.
-  double scalar(const std::string& role, const Args& args) const;
-  Vec3 vec3(const std::string& role, const Args& args) const;
+  double scalar(RoleName role, const Args& args) const {
+    double out = 0;
+    reference(role).eval(args.data(), &out);
+    return out;
+  }
+  Vec3 vec3(RoleName role, const Args& args) const {
+    double out[3] = {0, 0, 0};
+    reference(role).eval(args.data(), out);
+    return {out[0], out[1], out[2]};
+  }
+
+ private:
+  struct Plan {
+    const Reference* roles[std::size(names::kRoles)] = {};
+    InputValue inputs[std::size(names::kInputs)];
+    uint32_t features = 0;
+  };
+  const Reference& reference(RoleName role) const {
+    if (resolved_ && plan_.roles[role.index]) return *plan_.roles[role.index];
+    return referenceByName(std::string(role.text));
+  }
+  // The unresolved path (and the resolved one's errors: a missing input or brick throws).
+  double floatInputByName(const std::string& name) const;
+  Vec3 vec3InputByName(const std::string& name) const;
+  const Reference& referenceByName(const std::string& role) const;
+
+  bool resolved_ = false;
+  Plan plan_;
 };
 
 // max(x, 0) per component: the models clamp the SH irradiance, which a truncated expansion

@@ -1,5 +1,6 @@
 #include "common/reference.hpp"
 
+#include <cstring>
 #include <stdexcept>
 #include <tuple>
 
@@ -12,7 +13,29 @@ ScopedHalfVectorSumSkew::ScopedHalfVectorSumSkew(double skew) : previous_(tHalfV
 }
 ScopedHalfVectorSumSkew::~ScopedHalfVectorSumSkew() { tHalfVectorSumSkew = previous_; }
 
+// makeGeometry of the last call on this thread, by the exact bits of its arguments and skew:
+// a composition passes the same n, v, l to most brick calls of a light (D, V, F, diffuse), and
+// the result is a function of those bits alone, so reusing it changes no double.
+struct GeometryMemo {
+  double key[10] = {};
+  Geometry g;
+  bool valid = false;
+};
+thread_local GeometryMemo tLastGeometry;
+
+static Geometry computeGeometry(const Vec3& n, const Vec3& v, const Vec3& l);
+
 Geometry makeGeometry(const Vec3& n, const Vec3& v, const Vec3& l) {
+  const double key[10] = {n.x, n.y, n.z, v.x, v.y, v.z, l.x, l.y, l.z, tHalfVectorSumSkew};
+  GeometryMemo& memo = tLastGeometry;
+  if (memo.valid && std::memcmp(key, memo.key, sizeof key) == 0) return memo.g;
+  memo.g = computeGeometry(n, v, l);
+  std::memcpy(memo.key, key, sizeof key);
+  memo.valid = true;
+  return memo.g;
+}
+
+static Geometry computeGeometry(const Vec3& n, const Vec3& v, const Vec3& l) {
   Geometry g;
   g.n = normalize(n);
   g.v = normalize(v);
