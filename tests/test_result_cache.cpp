@@ -154,7 +154,8 @@ TEST_CASE(
   }
 
   // An edited material recomputes its own entries only.
-  b.replace(b.find("\"range\": [0.0, 1.0]}"), 20, "\"range\": [0.0, 0.5]}");  // baseColor's range
+  const size_t metallic = b.find("\"range\": [0.0, 1.0]}", b.find("\"metallic\""));
+  b.replace(metallic, 20, "\"range\": [0.0, 0.5]}");  // metallic's range (its default is 0)
   overwrite(dir / "b.json", b);
   const std::string edited = report("edited");
   CHECK(cacheUse(edited, "permutation costs").cached == 1);
