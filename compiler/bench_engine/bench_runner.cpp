@@ -99,7 +99,7 @@ void markFrontier(BenchGroup& group) {
 }
 
 BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, const std::vector<MaterialDesc>& materials,
-                     const BenchOptions& o, ProgressSink* progress) {
+                     const BenchOptions& o, ProgressSink* progress, const BrickItemMemo* memo) {
   BenchReport rep;
   rep.device = gpu.deviceName();
   rep.toolchain = toolchainVersion();
@@ -119,11 +119,18 @@ BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, cons
     for (const auto& id : lib.bricksOfSlot(slot.name)) {
       if (!selected(o.bricks, id)) continue;
       const Brick& b = *lib.findBrick(id);
-      group.items.push_back(measure(
-          gpu, buildBrickProbe(lib, b), [&](const BenchProbeOptions& k) { return emitBrickBenchProbe(lib, b, k); },
-          brickYardstick(b), o));
-      group.items.back().id = id;
-      group.items.back().kind = "brick";
+      const ProbeProgram probe = buildBrickProbe(lib, b);
+      std::optional<BenchItem> earlier = memo ? memo->find(b, probe) : std::nullopt;
+      if (earlier) {
+        group.items.push_back(std::move(*earlier));
+      } else {
+        group.items.push_back(measure(
+            gpu, probe, [&](const BenchProbeOptions& k) { return emitBrickBenchProbe(lib, b, k); }, brickYardstick(b),
+            o));
+        group.items.back().id = id;
+        group.items.back().kind = "brick";
+        if (memo) memo->keep(b, probe, group.items.back());
+      }
       if (progress) progress->advance();
     }
     if (group.items.empty()) continue;

@@ -4,6 +4,7 @@
 // probe emitter (emit/bench_probe.hpp); nothing here writes GLSL.
 #pragma once
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -97,8 +98,17 @@ BenchCost measurePermutationCost(harness::VulkanHarness& gpu, const ShaderLibrar
 // their confidence intervals (a cost below resolution is [0, its bound]), ties marked.
 void markFrontier(BenchGroup& group);
 
+// Brick items measured by an earlier run (the report's result cache, core/result_cache.hpp):
+// `find` gives the item of a brick whose probe is `probe`, or nothing; `keep` is handed each
+// brick item runBench measured itself.
+struct BrickItemMemo {
+  std::function<std::optional<BenchItem>(const Brick&, const ProbeProgram& probe)> find;
+  std::function<void(const Brick&, const ProbeProgram& probe, const BenchItem&)> keep;
+};
+
 // `progress` (may be null) counts one unit per measured item (brick, permutation, LUT).
+// `memo` (may be null) supplies brick items instead of measuring them.
 BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, const std::vector<MaterialDesc>& materials,
-                     const BenchOptions& options, ProgressSink* progress);
+                     const BenchOptions& options, ProgressSink* progress, const BrickItemMemo* memo = nullptr);
 
 }  // namespace mb::bench

@@ -8,6 +8,22 @@
 
 namespace mb::bench {
 
+ErrorSummary::ErrorSummary(const State& s)
+    : values_(s.values),
+      finite_(s.finite),
+      nonFinite_(s.nonFinite),
+      truthInvalid_(s.truthInvalid),
+      maxAbs_(s.maxAbs),
+      maxRel_(s.maxRel),
+      maxScaled_(s.maxScaled),
+      sumAbs_(s.sumAbs),
+      sumRel_(s.sumRel),
+      sumScaled_(s.sumScaled) {}
+
+ErrorSummary::State ErrorSummary::state() const {
+  return {values_, finite_, nonFinite_, truthInvalid_, maxAbs_, maxRel_, maxScaled_, sumAbs_, sumRel_, sumScaled_};
+}
+
 void ErrorSummary::add(double value, double truth) {
   if (!std::isfinite(truth)) {
     ++truthInvalid_;

@@ -14,6 +14,17 @@ namespace mb::bench {
 
 class ErrorSummary {
  public:
+  // Every counter and sum, so that a summary can be stored and restored whole (the report's
+  // result cache, bench_engine/result_codec.hpp).
+  struct State {
+    uint64_t values = 0, finite = 0, nonFinite = 0, truthInvalid = 0;
+    double maxAbs = 0, maxRel = 0, maxScaled = 0;
+    double sumAbs = 0, sumRel = 0, sumScaled = 0;
+  };
+  ErrorSummary() = default;
+  explicit ErrorSummary(const State& s);
+  State state() const;
+
   // One output value. A non-finite `value` counts in nonFinite (the max becomes +inf); a
   // non-finite `truth` (a yardstick bug) counts in truthInvalid and is skipped.
   void add(double value, double truth);

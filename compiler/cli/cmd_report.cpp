@@ -120,11 +120,15 @@ int runReport(ReportArgs& a, const GlobalOptions& g) {
     groups = materialPermutations(materials, lib, a);
     for (const auto& m : materials) read.push_back(&m);
   }
+  // The result cache is a folder of the compile cache's directory (the probe cache's, which
+  // is ShaderCache::defaultDir()); --no-cache turns both off.
+  if (a.noCache) setProbeCacheDir({});
+  if (const fs::path cacheRoot = probeCacheDir(); !cacheRoot.empty()) a.options.resultCacheDir = cacheRoot / "results";
   std::vector<ProtectedPath> inputs = libraryInputs(lib);
   addMaterialInputs(inputs, read, a.scene);
+  if (!a.options.resultCacheDir.empty()) inputs.push_back({a.options.resultCacheDir, "result cache directory"});
   checkDirectoryOutput(a.out, inputs);
 
-  if (a.noCache) setProbeCacheDir({});
   a.options.slots = !a.noSlots;
   a.options.energy = !a.noEnergy;
   a.options.lut = !a.noLut;
@@ -195,7 +199,8 @@ Command addReportCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_flag("-q,--quiet", a->quiet, "No progress and no path line on success");
   cmd->add_option("--lut-size", a->options.lutSize, "DFG LUT texels per side (default 64)")
       ->check(CLI::Range(2u, 1024u));
-  cmd->add_flag("--no-cache", a->noCache, "Compile every probe (compile times without the probe cache)");
+  cmd->add_flag("--no-cache", a->noCache,
+                "Compile every probe and measure every cost, slot item and albedo (no probe cache, no result cache)");
   return {cmd, [a, &g] { return runReport(*a, g); }};
 }
 

@@ -20,6 +20,7 @@
 #include <xxhash.h>
 
 #include "core/atomic_file.hpp"
+#include "core/content_hash.hpp"
 #include "core/input_file.hpp"
 
 namespace mb {
@@ -172,22 +173,7 @@ fs::path ShaderCache::defaultDir() {
   return {};  // nowhere to put it: uncached
 }
 
-std::string ShaderCache::key(const std::vector<std::string>& parts) {
-  XXH3_state_t* state = XXH3_createState();
-  XXH3_128bits_reset(state);
-  for (const auto& p : parts) {
-    // Length-prefixed, so that ("ab","c") and ("a","bc") differ.
-    const uint64_t n = p.size();
-    XXH3_128bits_update(state, &n, sizeof n);
-    XXH3_128bits_update(state, p.data(), p.size());
-  }
-  const XXH128_hash_t h = XXH3_128bits_digest(state);
-  XXH3_freeState(state);
-  char buf[33];
-  std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(h.high64),
-                static_cast<unsigned long long>(h.low64));
-  return buf;
-}
+std::string ShaderCache::key(const std::vector<std::string>& parts) { return contentKey(parts); }
 
 CacheIdentity ShaderCache::identity(const std::string& key, const std::vector<std::string>& sources) {
   return {key, ShaderCache::key(sources)};

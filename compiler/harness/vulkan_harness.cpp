@@ -8,6 +8,8 @@
 // vulkan_internal.hpp.
 #include "harness/vulkan_harness.hpp"
 
+#include <cstdio>
+
 #include <chrono>
 #include <cstring>
 #include <list>
@@ -158,6 +160,19 @@ VulkanHarness::VulkanHarness(const DeviceOptions& options) : impl_(std::make_uni
 VulkanHarness::~VulkanHarness() = default;
 
 std::string VulkanHarness::deviceName() const { return impl_->ctx->props.deviceName; }
+
+std::string VulkanHarness::deviceIdentity() const {
+  const VkPhysicalDeviceProperties& p = impl_->ctx->props;
+  char ids[64];
+  std::snprintf(ids, sizeof ids, "%08x:%08x:%08x:%08x:", p.vendorID, p.deviceID, p.driverVersion, p.apiVersion);
+  std::string uuid;
+  for (uint8_t b : p.pipelineCacheUUID) {
+    char hex[3];
+    std::snprintf(hex, sizeof hex, "%02x", b);
+    uuid += hex;
+  }
+  return ids + uuid + ":" + p.deviceName;
+}
 
 bool VulkanHarness::isLavapipe() const { return isLavapipeName(deviceName()); }
 

@@ -67,6 +67,11 @@ class VulkanHarness {
   VulkanHarness& operator=(const VulkanHarness&) = delete;
 
   std::string deviceName() const;
+  // What a measurement on this device depends on: vendor and device id, driver version, name
+  // and pipeline-cache UUID (which drivers change with every build), from
+  // VkPhysicalDeviceProperties. Results cached under it are reused only on the same device
+  // and driver (core/result_cache.hpp).
+  std::string deviceIdentity() const;
   bool isLavapipe() const;
   uint32_t maxWorkGroupCountX() const;
   uint64_t maxStorageBufferRange() const;

@@ -3,6 +3,7 @@
 // furnace, the LUT generator and its check); report_html.hpp only formats it.
 #pragma once
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,6 +38,10 @@ struct ReportOptions {
   uint32_t lutSize = 64;
   uint32_t lutCheckGrid = 16;  // texels per axis judged against the exact integrals
   PreviewRenderer previews;    // empty: the previews section says none were rendered
+  // The result cache's folder (core/result_cache.hpp, report/result_memo.hpp): costs, slot
+  // items and albedos measured by an earlier run on this device are read from it. Empty: every
+  // result is measured in this run.
+  std::filesystem::path resultCacheDir;
 
   static bench::CostOptions quickCost();
   // energy's coarse grid in roughness, its fine grid in n.v (the plot's x axis).
@@ -76,6 +81,14 @@ struct SectionTime {
   double seconds = 0;
 };
 
+// How many results of one kind came from the result cache.
+struct CacheUse {
+  std::string what;       // "permutation costs", ...
+  uint64_t cached = 0;    // read from the cache
+  uint64_t total = 0;     // cached + measured in this run
+  uint64_t rejected = 0;  // entries found damaged or foreign, measured again
+};
+
 struct ReportData {
   std::string device, toolchain, command;
   std::vector<MaterialSection> materials;
@@ -83,6 +96,8 @@ struct ReportData {
   std::unique_ptr<EnergySection> energy;
   std::optional<LutSection> lut;
   std::vector<SectionTime> times;
+  std::string resultCacheDir;      // empty: the result cache was off
+  std::vector<CacheUse> cacheUse;  // per kind of entry, when the cache was on
   bool layerMessages = false;
   // Why the report's checks failed (empty: all passed): a permutation outside its tolerance, a
   // lobe whose GPU albedo misses its reference, the LUT outside its promised accuracy.

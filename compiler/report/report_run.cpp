@@ -7,6 +7,7 @@
 #include "emit/bench_probe.hpp"
 #include "energy/brick_sweep.hpp"
 #include "energy/lobes.hpp"
+#include "report/result_memo.hpp"
 
 namespace mb::report {
 namespace {
@@ -21,7 +22,7 @@ void addUnique(std::vector<std::string>& to, const std::vector<std::string>& fro
 }
 
 MaterialSection measureMaterial(const ShaderLibrary& lib, harness::VulkanHarness& gpu, const MaterialPermutations& mp,
-                                const ReportOptions& o, ProgressSink* progress) {
+                                const ReportOptions& o, ResultCache& cache, ProgressSink* progress) {
   const MaterialDesc& m = *mp.material;
   MaterialSection s{m.name, m.model, m.sourceFile, mp.notes, {}, {}};
   if (o.previews)
@@ -34,7 +35,7 @@ MaterialSection measureMaterial(const ShaderLibrary& lib, harness::VulkanHarness
     PermutationRow row;
     row.validation = validateProbe(gpu, probe, "permutation", o.samples, o.seed);
     row.bricks = probe.shader.bricks;
-    bench::BenchCost cost = bench::measurePermutationCost(gpu, lib, perm, probe, o.cost);
+    bench::BenchCost cost = cachedPermutationCost(cache, gpu, lib, perm, probe, o.cost);
     row.cost = cost.measured;
     row.staticCost = cost.staticCost;
     if (progress) progress->advance();
@@ -87,10 +88,11 @@ ReportData runReport(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
   r.device = gpu.deviceName();
   r.toolchain = toolchainVersion();
   std::vector<std::string> usedBricks;
+  ResultCache cache(o.resultCacheDir);
 
   auto t0 = Clock::now();
   for (const auto& mp : materials) {
-    r.materials.push_back(measureMaterial(lib, gpu, mp, o, progress));
+    r.materials.push_back(measureMaterial(lib, gpu, mp, o, cache, progress));
     for (const auto& row : r.materials.back().permutations) addUnique(usedBricks, row.bricks);
   }
   r.times.push_back({"materials (validate + bench kernels)", secondsSince(t0)});
@@ -103,7 +105,8 @@ ReportData runReport(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
     bo.seed = o.seed;
     bo.cost = o.cost;
     // An empty slot list means "every slot" to bench; here it means there is nothing to chart.
-    if (!bo.slots.empty()) r.slots = bench::runBench(lib, gpu, {}, bo, progress);
+    const bench::BrickItemMemo memo = brickItemMemo(cache, gpu, lib, bo);
+    if (!bo.slots.empty()) r.slots = bench::runBench(lib, gpu, {}, bo, progress, &memo);
     r.times.push_back({"slots (bench)", secondsSince(t0)});
   }
 
@@ -114,7 +117,7 @@ ReportData runReport(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
     r.energy->lobes = lobesUsing(energy::energyLobes(lib), usedBricks);
     energy::ProbeCache probes(lib);
     if (!r.energy->lobes.empty())
-      r.energy->furnace = energy::whiteFurnace(gpu, probes, r.energy->lobes, o.grid, progress);
+      r.energy->furnace = cachedWhiteFurnace(cache, gpu, probes, r.energy->lobes, o.grid, progress);
     r.times.push_back({"energy (white furnace)", secondsSince(t0)});
   }
 
@@ -125,6 +128,15 @@ ReportData runReport(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
     l.check = lut::checkLut(l.generated.table, o.lutCheckGrid, true, progress);
     r.lut = std::move(l);
     r.times.push_back({"DFG LUT (GPU + check)", secondsSince(t0)});
+  }
+  if (cache.enabled()) {
+    r.resultCacheDir = o.resultCacheDir.string();
+    for (const auto& [kind, what] : {std::pair{kPermutationCostEntries, "permutation costs"},
+                                     std::pair{kBrickItemEntries, "slot chart bricks (cost and error)"},
+                                     std::pair{kLobeAlbedoEntries, "lobe albedos"}}) {
+      const ResultCache::Counts c = cache.counts(kind);
+      r.cacheUse.push_back({what, c.hits, c.hits + c.misses, c.rejected});
+    }
   }
   return r;
 }
