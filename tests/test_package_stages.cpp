@@ -5,6 +5,8 @@
 // the same cache, from a cache a fragment-only compile filled.
 #include <catch2/catch.hpp>
 
+#include <fstream>
+#include <map>
 #include <set>
 
 #include "support/cli_support.hpp"
@@ -112,6 +114,28 @@ TEST_CASE("shards record their stages and merge into the single compile's packag
   INFO(merged.output);
   REQUIRE(merged.exitCode == 0);
   for (const auto& [path, bytes] : single.files) CHECK(test::readFile(dir / "merged" / path) == bytes);
+
+  // A shard.json whose stages or level the command line would have refused is bad input
+  // (both shards edited alike, so that they still agree with each other).
+  std::map<fs::path, std::string> originals;
+  for (const char* s : {"s1", "s2"}) originals[dir / s / "shard.json"] = test::readFile(dir / s / "shard.json");
+  for (const auto& [from, to] :
+       std::vector<std::pair<std::string, std::string>>{{"\"stages\": \"fragment\"", "\"stages\": \"vertex\""},
+                                                        {"\"optimization\": \"\"", "\"optimization\": \"O7\""}}) {
+    for (const auto& [path, original] : originals) {
+      std::string edited = original;
+      REQUIRE(edited.find(from) != std::string::npos);
+      edited.replace(edited.find(from), from.size(), to);
+      std::ofstream(path, std::ios::binary | std::ios::trunc) << edited;
+    }
+    auto r = test::runCli("merge " + (dir / "s1").string() + " " + (dir / "s2").string() + " -o " +
+                          (dir / "refused").string());
+    INFO(to << "\n" << r.output);
+    CHECK(r.exitCode == 3);
+    CHECK(r.output.find("E-SHARD-NOT-SHARD") != std::string::npos);
+    CHECK(r.output.find("'" + to.substr(1, to.find('"', 1) - 1) + "'") != std::string::npos);  // names the field
+    CHECK_FALSE(fs::exists(dir / "refused"));
+  }
 }
 
 TEST_CASE("validate compiles the kernel a fragment-only compile did not, through the same cache",

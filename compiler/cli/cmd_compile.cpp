@@ -108,6 +108,13 @@ nlohmann::json compileCommandJson(const CompileArgs& a, const GlobalOptions& g) 
 }
 
 void compileArgsFromJson(const nlohmann::json& c, const std::string& file, CompileArgs& a, GlobalOptions& g) {
+  auto notReadable = [&](const std::string& why) {
+    return DiagnosticError({{Severity::Error,
+                             "E-SHARD-NOT-SHARD",
+                             {file, 0, 0},
+                             "shard.json's 'command' is not readable: " + why,
+                             "compile the shards again with this matbricks"}});
+  };
   try {
     a.materials = c.at("materials").get<std::vector<std::string>>();
     a.scene = c.at("scene").get<std::string>();
@@ -121,14 +128,17 @@ void compileArgsFromJson(const nlohmann::json& c, const std::string& file, Compi
     a.headerName = c.at("header").get<std::string>();
     a.cppNamespace = c.at("namespace").get<std::string>();
     g.shaderlib = c.at("shaderlib").get<std::string>();
-    checkHeaderName(a.headerName, {file, 0, 0});
   } catch (const nlohmann::json::exception& e) {
-    throw DiagnosticError({{Severity::Error,
-                            "E-SHARD-NOT-SHARD",
-                            {file, 0, 0},
-                            std::string("shard.json's 'command' is not readable: ") + e.what(),
-                            "compile the shards again with this matbricks"}});
+    throw notReadable(e.what());
   }
+  // What the command line's CLI11 checks would have refused.
+  OptimizationLevel level;
+  if (!a.optimization.empty() && !parseOptimizationLevel(a.optimization, level))
+    throw notReadable("'optimization' is not a level: '" + a.optimization + "'");
+  PackageStages stages;
+  if (std::string why; !a.stages.empty() && !parsePackageStages(a.stages, stages, why))
+    throw notReadable("'stages': " + why);
+  checkHeaderName(a.headerName, {file, 0, 0});
 }
 
 int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mergeFrom,
@@ -186,9 +196,9 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
   if (targets.empty()) targets = {"spirv"};
   OptimizationLevel optimization = scene.optimization;                                // O2 without a scene
   if (!a.optimization.empty()) parseOptimizationLevel(a.optimization, optimization);  // checked by CLI11
-  PackageStages stages;
+  PackageStages stages;  // checked by CLI11, or by compileArgsFromJson for a shard.json's
   if (std::string why; !a.stages.empty() && !parsePackageStages(a.stages, stages, why))
-    throw CLI::ValidationError("--stages: " + why);  // a shard.json's; the command line's CLI11 checked
+    throw CLI::ValidationError("--stages: " + why);
 
   BuildOptions options;
   options.jobs = a.jobs;

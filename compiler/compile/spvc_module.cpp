@@ -44,12 +44,14 @@ std::vector<spvc_reflected_resource> SpvcModule::resources(spvc_resource_type ty
 }
 
 std::vector<spvc_reflected_resource> SpvcModule::activeResources(spvc_resource_type type) const {
-  spvc_set active = nullptr;
-  spvc_resources used = nullptr;
-  if (!compiler_ || spvc_compiler_get_active_interface_variables(compiler_, &active) != SPVC_SUCCESS ||
-      spvc_compiler_create_shader_resources_for_active_variables(compiler_, &used, active) != SPVC_SUCCESS)
-    return {};
-  return listOf(used, type);
+  if (!activeTried_ && compiler_) {
+    activeTried_ = true;
+    spvc_set active = nullptr;
+    if (spvc_compiler_get_active_interface_variables(compiler_, &active) != SPVC_SUCCESS ||
+        spvc_compiler_create_shader_resources_for_active_variables(compiler_, &active_, active) != SPVC_SUCCESS)
+      active_ = nullptr;
+  }
+  return listOf(active_, type);
 }
 
 }  // namespace mb

@@ -27,12 +27,15 @@ class SpvcModule {
   std::vector<spvc_reflected_resource> resources(spvc_resource_type type) const;
   // Those the entry point uses. A backend that passes resources as function arguments (MSL)
   // declares only these: an unoptimized module (fp16, -O0) keeps a block nothing reads.
+  // The active set is computed once per module, at the first call.
   std::vector<spvc_reflected_resource> activeResources(spvc_resource_type type) const;
 
  private:
   spvc_context context_ = nullptr;
   spvc_compiler compiler_ = nullptr;
   spvc_resources resources_ = nullptr;
+  mutable spvc_resources active_ = nullptr;  // owned by the context, like resources_
+  mutable bool activeTried_ = false;
 };
 
 }  // namespace mb
