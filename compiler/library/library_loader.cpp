@@ -49,6 +49,7 @@ LibraryData LibraryLoader::run() {
   checkSchema(f);
   readUnits(f);
   forEachName(f, "/slots", "slot", [&](const std::string& n, const SourceLocation& at) { readSlot(n, at); });
+  checkBrickReferences();
   forEachName(f, "/models", "model", [&](const std::string& n, const SourceLocation& at) { readModel(n, at); });
   return std::move(data_);
 }
@@ -247,7 +248,7 @@ void LibraryLoader::readBrick(JsonFields& f, const std::string& ptr, const Slot&
   const json* idValue = f.find(ptr + "/id");
   std::string what = idValue && idValue->is_string() ? "brick '" + idValue->get<std::string>() + "'" : "brick";
   if (!f.object(ptr, {"id", "name", "function", "file", "citation", "requires", "domain", "tolerance"},
-                {"geometry", "notes", "unstable_variant"}, what))
+                {"geometry", "notes", "unstable_variant", "fp16_twin"}, what))
     return;
   Brick b;
   b.slot = slot.name;
@@ -267,6 +268,7 @@ void LibraryLoader::readBrick(JsonFields& f, const std::string& ptr, const Slot&
   b.domain = readDomain(f, ptr + "/domain", slot);
   b.geometry = readGeometry(f, ptr + "/geometry", slot);
   b.tolerance = readTolerance(f, ptr + "/tolerance");
+  readFp16Twin(f, ptr + "/fp16_twin", b);
   data_.bricks.push_back(std::move(b));
 }
 

@@ -61,6 +61,9 @@ struct Brick {
   // permutations.
   std::string unstableFile;
   std::string unstableProblem;
+  // Manifest "fp16_twin": the brick of the same slot that replaces this one in fp16
+  // permutations (emit/precision.hpp brickForPrecision), or empty when the brick is kept.
+  std::string fp16Twin;
 };
 
 // Shared GLSL that is not a brick (common helpers).
