@@ -1,11 +1,12 @@
 // Brick facts as data (docs/formats.md "<slot>/slot.json"): the facts the compiler acts on
-// by brick (here: the fp16 twin) are read from the brick's
+// by brick (fp16 twin, energy lobe, half-vector map and theory) are read from the brick's
 // manifest entry and checked with file:line:column errors.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 
 #include "emit/precision.hpp"
+#include "energy/energy_checks.hpp"
 #include "fake_library.hpp"
 #include "support/pipeline_support.hpp"
 
@@ -44,6 +45,45 @@ Diagnostic onlyError(const FakeLibrary& lib, const std::string& code, int line, 
   return ds[0];
 }
 
+// Fake specular_d with an energy role and its bricks' entries (none where empty), and a
+// visibility slot with one V.
+std::map<std::string, std::string> energyLibrary(const std::string& ggxEnergy, const std::string& beckmannEnergy) {
+  std::string d = fakeSlotD("\"bricks\": [", "\"energy\": \"distribution\",\n  \"bricks\": [");
+  d.replace(d.find("\"geometry\""), 0, "\"energy\": " + ggxEnergy + ",\n      ");
+  if (!beckmannEnergy.empty())
+    d.replace(d.find("\"notes\": \"test brick\""), 0, "\"energy\": " + beckmannEnergy + ",\n      ");
+  std::string v = R"json({
+  "name": "specular_v",
+  "description": "V",
+  "returns": "float",
+  "params": [{"name": "g", "type": "Geometry"}, {"name": "alpha", "type": "float"}],
+  "energy": "visibility",
+  "bricks": [
+    {
+      "id": "v_smith",
+      "name": "Smith",
+      "function": "mb_v_smith",
+      "file": "v_smith.glsl",
+      "citation": "Heitz 2014",
+      "requires": ["common"],
+      "domain": {"alpha": [0.002, 1.0]},
+      "tolerance": {"abs": 0.0, "rel": 1e-6, "reason": "sqrt"},
+      "energy": {"lobe": "specular", "expectation": "conserving", "note": "G2 <= G1(v)"}
+    }
+  ]
+}
+)json";
+  std::string manifest = test::fakeLibraryFiles().at("manifest.json");
+  manifest.replace(manifest.find("\"fresnel\"]"), 10, "\"fresnel\", \"specular_v\"]");
+  return {{"manifest.json", manifest},
+          {"specular_d/slot.json", d},
+          {"specular_v/slot.json", v},
+          {"specular_v/v_smith.glsl", "float mb_v_smith(Geometry g, float alpha) { return alpha; }\n"}};
+}
+
+const char* kGgxEnergy = R"({"lobe": "specular", "half_vector_map": "ggx", "visibility": "all"})";
+const char* kBeckmannEnergy = R"({"lobe": "specular", "half_vector_map": "beckmann", "visibility": ["v_smith"]})";
+
 }  // namespace
 
 TEST_CASE("fp16_twin: read from the brick entry, checked against the slot's bricks", "[library][brick-data]") {
@@ -74,4 +114,77 @@ TEST_CASE("fp16_twin: read from the brick entry, checked against the slot's bric
   // The shipped library: Filament's fp16 roughness floor.
   CHECK(brickForPrecision(test::shippedLibrary(), "roughness_clamped", ShaderPrecision::Fp16) ==
         "roughness_clamped_fp16");
+}
+
+TEST_CASE("energy: each brick of an energy slot declares its lobe, checked at file:line:column",
+          "[library][brick-data]") {
+  SECTION("valid entries load") {
+    FakeLibrary files(energyLibrary(kGgxEnergy, kBeckmannEnergy));
+    auto lib = ShaderLibrary::load(files.root());
+    CHECK(lib.findSlot("specular_d")->energyRole == "distribution");
+    const BrickEnergy& e = lib.findBrick("d_beckmann")->energy;
+    CHECK(e.lobe == "specular");
+    CHECK(e.halfVectorMap == "beckmann");
+    CHECK_FALSE(e.allVisibilities);
+    CHECK(e.visibilities == std::vector<std::string>{"v_smith"});
+    CHECK(lib.findBrick("v_smith")->energy.expectation == "conserving");
+    // Both D bricks pair with the one V: two lobes, GGX first (map order), no C++ table.
+    auto lobes = energy::energyLobes(lib);
+    REQUIRE(lobes.size() == 2);
+    CHECK(lobes[0].name == "d_ggx * v_smith");
+    CHECK(lobes[1].name == "d_beckmann * v_smith");
+    CHECK(lobes[1].map == energy::HalfVectorMapKind::Beckmann);
+    CHECK(lobes[1].expectation == energy::Expectation::Conserving);
+    CHECK(lobes[1].note == "G2 <= G1(v)");
+  }
+  SECTION("a D brick without an entry fails: it would be silently left out") {
+    FakeLibrary lib(energyLibrary(kGgxEnergy, ""));
+    auto d = onlyError(lib, "E-MISSING-FIELD", 20, 5);
+    CHECK_THAT(d.message, Contains("brick 'd_beckmann' needs an 'energy' entry"));
+  }
+  SECTION("an unknown half-vector map") {
+    FakeLibrary lib(
+        energyLibrary(R"({"lobe": "specular", "half_vector_map": "gxx", "visibility": "all"})", kBeckmannEnergy));
+    auto d = onlyError(lib, "E-INVALID-VALUE", 16, 57);
+    CHECK_THAT(d.message, Contains("expected one of 'ggx', 'beckmann', 'charlie', 'ashikhmin'"));
+    CHECK(d.suggestion == "did you mean 'ggx'?");
+  }
+  SECTION("a listed V that is not a V brick of the lobe") {
+    FakeLibrary lib(
+        energyLibrary(kGgxEnergy, R"({"lobe": "sheen", "half_vector_map": "beckmann", "visibility": ["v_smith"]})"));
+    auto d = onlyError(lib, "E-UNKNOWN-BRICK", 29, 81);
+    CHECK_THAT(d.message, Contains("names 'v_smith', which is not a V brick of the 'sheen' lobe"));
+  }
+}
+
+TEST_CASE("the shipped library's energy facts keep every lobe of the C++ tables they replace", "[energy][brick-data]") {
+  auto lobes = energy::energyLobes(test::shippedLibrary());
+  std::vector<std::string> names;
+  for (const auto& l : lobes) names.push_back(l.name);
+  // The order and pairing of docs/energy.md.
+  CHECK(names == std::vector<std::string>{"d_ggx * v_smith_ggx_correlated",
+                                          "d_ggx * v_schlick_ggx_ue4",
+                                          "d_ggx * v_smith_ggx_correlated_fast",
+                                          "d_ggx * v_schlick_ggx_ibl",
+                                          "d_ggx * v_kelemen",
+                                          "d_ggx * v_smith_ggx_separable",
+                                          "d_ggx * v_implicit",
+                                          "d_ggx * v_neumann",
+                                          "d_ggx * v_cook_torrance",
+                                          "d_beckmann * v_cook_torrance",
+                                          "d_charlie * v_ashikhmin",
+                                          "d_charlie * v_charlie",
+                                          "d_charlie * v_charlie_no_softening",
+                                          "d_ashikhmin * v_ashikhmin",
+                                          "d_ggx_aniso * v_smith_ggx_correlated_aniso",
+                                          "d_ggx_aniso * v_smith_ggx_separable_aniso",
+                                          "diffuse_lambert",
+                                          "diffuse_disney_renormalized",
+                                          "diffuse_activision_multiscatter",
+                                          "diffuse_fabric_lambert",
+                                          "diffuse_disney_burley"});
+  for (const auto& l : lobes) {
+    INFO(l.name);
+    CHECK_FALSE(l.note.empty());
+  }
 }

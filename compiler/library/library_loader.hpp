@@ -68,6 +68,9 @@ class LibraryLoader {
 
   // --- brick facts the compiler looks up by brick (brick_facts.cpp) -------------------
   void readFp16Twin(JsonFields& f, const std::string& ptr, Brick& b);
+  void readBrickEnergy(JsonFields& f, const std::string& brickPtr, const Slot& slot, Brick& b);
+  void readDistributionEnergy(JsonFields& f, const std::string& ptr, Brick& b);
+  std::optional<std::string> oneOf(JsonFields& f, const std::string& ptr, const std::vector<std::string>& allowed);
   // Brick ids named by other bricks' facts, checked once every slot is read (a fact may
   // name a brick of a slot listed later).
   void checkBrickReferences();
@@ -78,6 +81,14 @@ class LibraryLoader {
     SourceLocation at;  // where it is named
   };
   std::vector<BrickReference> brickReferences_;
+  // V bricks named by a D brick's "energy"."visibility": each must be a V brick of `lobe`.
+  struct EnergyPair {
+    std::string visibility;
+    std::string lobe;
+    std::string what;
+    SourceLocation at;
+  };
+  std::vector<EnergyPair> energyPairs_;
 
   // --- models (library_models.cpp) ----------------------------------------------------
   void readModel(const std::string& name, const SourceLocation& listedAt);
