@@ -1,18 +1,31 @@
-// Brick facts as data (docs/formats.md "<slot>/slot.json"): the facts the compiler acts on
+// Brick facts as data (docs/architecture.md "Adding a brick"): the facts the compiler acts on
 // by brick (fp16 twin, energy lobe, half-vector map and theory) are read from the brick's
-// manifest entry and checked with file:line:column errors.
+// manifest entry, checked with file:line:column errors, and a new D brick added to a scratch
+// copy of the library with three files (GLSL, reference, manifest entry: tests/data/
+// new_d_brick/) is compiled, validated, stressed, integrated by the energy checks and listed
+// in the catalogue, with no change to compiler/.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
 
 #include "emit/precision.hpp"
 #include "energy/energy_checks.hpp"
 #include "fake_library.hpp"
+#include "stress/stress_run.hpp"
+#include "support/harness_support.hpp"
 #include "support/pipeline_support.hpp"
+#include "validate/brick_catalogue.hpp"
+#include "validate/validation.hpp"
 
 using namespace mb;
 using mb::test::FakeLibrary;
 using Catch::Matchers::Contains;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -83,6 +96,42 @@ std::map<std::string, std::string> energyLibrary(const std::string& ggxEnergy, c
 
 const char* kGgxEnergy = R"({"lobe": "specular", "half_vector_map": "ggx", "visibility": "all"})";
 const char* kBeckmannEnergy = R"({"lobe": "specular", "half_vector_map": "beckmann", "visibility": ["v_smith"]})";
+
+// A copy of the shipped library in a fresh temporary folder, removed on destruction.
+class ScratchLibrary {
+ public:
+  ScratchLibrary() {
+    static std::atomic<int> counter{0};
+    root_ = fs::temp_directory_path() /
+            ("mb_scratch_lib_" + std::to_string(std::random_device{}()) + "_" + std::to_string(counter++));
+    fs::copy(ShaderLibrary::defaultRoot(), root_, fs::copy_options::recursive);
+  }
+  ~ScratchLibrary() {
+    std::error_code ec;
+    fs::remove_all(root_, ec);
+  }
+  ScratchLibrary(const ScratchLibrary&) = delete;
+  ScratchLibrary& operator=(const ScratchLibrary&) = delete;
+  const fs::path& root() const { return root_; }
+
+  // Adds a brick to `slot`: its GLSL file beside the slot.json, its entry appended there.
+  void addBrick(const std::string& slot, const fs::path& glsl, const fs::path& entryFile) const {
+    fs::copy_file(glsl, root_ / slot / glsl.filename());
+    auto doc = nlohmann::ordered_json::parse(test::readFile(root_ / slot / "slot.json"));
+    doc["bricks"].push_back(nlohmann::ordered_json::parse(test::readFile(entryFile)));
+    std::ofstream(root_ / slot / "slot.json", std::ios::binary) << doc.dump(2) << "\n";
+  }
+  // Keeps only these slots, and no models, in manifest.json (a smaller catalogue).
+  void keepSlots(const std::vector<std::string>& slots) const {
+    auto doc = nlohmann::ordered_json::parse(test::readFile(root_ / "manifest.json"));
+    doc["slots"] = slots;
+    doc["models"] = nlohmann::ordered_json::array();
+    std::ofstream(root_ / "manifest.json", std::ios::binary) << doc.dump(2) << "\n";
+  }
+
+ private:
+  fs::path root_;
+};
 
 }  // namespace
 
@@ -187,4 +236,42 @@ TEST_CASE("the shipped library's energy facts keep every lobe of the C++ tables 
     INFO(l.name);
     CHECK_FALSE(l.note.empty());
   }
+}
+
+TEST_CASE("a new D brick from three files joins validation, stress, energy and the catalogue", "[brick-data][vulkan]") {
+  const fs::path data = test::sourceDir() / "tests/data/new_d_brick";
+  ScratchLibrary scratch;
+  scratch.addBrick("specular_d", data / "d_ggx_tan2.glsl", data / "entry.json");
+  auto lib = ShaderLibrary::load(scratch.root());
+  const Brick* brick = lib.findBrick("d_ggx_tan2");
+  REQUIRE(brick != nullptr);
+  REQUIRE(ref::Registry::references().find("d_ggx_tan2") != nullptr);
+  harness::VulkanHarness gpu(harness::testDeviceOptions());
+
+  // Compiled and validated against its reference, and stressed.
+  ProbeProgram probe = buildBrickProbe(lib, *brick);
+  ValidationRecord record = validateProbe(gpu, probe, "brick", 2048, 1);
+  CHECK(record.passed());
+  StressResult stress = stressProbe(gpu, probe, "brick", "d_ggx_tan2", {256, 1});
+  CHECK(stress.passed());
+
+  // In the energy checks, after the shipped lobes of its kind and map, and conserving there.
+  auto lobes = energy::energyLobes(lib);
+  auto it = std::find_if(lobes.begin(), lobes.end(),
+                         [](const energy::Lobe& l) { return l.name == "d_ggx_tan2 * v_smith_ggx_correlated"; });
+  REQUIRE(it != lobes.end());
+  CHECK(it - lobes.begin() == 9);  // after the 9 lobes of d_ggx, before Beckmann's
+  CHECK(lobes.size() == energy::energyLobes(test::shippedLibrary()).size() + 1);
+  energy::ProbeCache probes(lib);
+  auto furnace = energy::whiteFurnace(gpu, probes, {*it}, energy::EnergyGrid::coarse());
+  REQUIRE(furnace.size() == 1);
+  CHECK(furnace[0].gpuMatchesReference());
+  CHECK_FALSE(furnace[0].exceedsOne());
+
+  // In the catalogue (of the scratch library cut to the slots its lobe needs, to stay small).
+  scratch.keepSlots({"specular_d", "specular_v"});
+  auto small = ShaderLibrary::load(scratch.root());
+  std::string catalogue = brickCatalogueMarkdown(small, gpu, {256, 1});
+  CHECK_THAT(catalogue, Contains("`d_ggx_tan2` GGX / Trowbridge-Reitz (tan^2 form)"));
+  CHECK(gpu.validationMessages().empty());
 }
