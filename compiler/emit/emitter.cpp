@@ -272,15 +272,15 @@ ShaderPrecision precisionOf(const Permutation& perm) {
                           "one of 'fp32', 'fp16'"}});
 }
 
-std::string boundBrick(const Permutation& perm, const std::string& role) {
-  return brickForPrecision(perm.material->bricks.at(role), precisionOf(perm));
+std::string boundBrick(const ShaderLibrary& lib, const Permutation& perm, const std::string& role) {
+  return brickForPrecision(lib, perm.material->bricks.at(role), precisionOf(perm));
 }
 
 std::vector<std::pair<std::string, std::string>> boundRoles(const ShaderLibrary& lib, const Permutation& perm) {
   std::vector<std::pair<std::string, std::string>> out;
   const ShadingModel* model = lib.findModel(perm.material->model);
   for (const auto& role : model->roles)
-    if (roleActive(role, perm)) out.emplace_back(role.role, boundBrick(perm, role.role));
+    if (roleActive(role, perm)) out.emplace_back(role.role, boundBrick(lib, perm, role.role));
   return out;
 }
 

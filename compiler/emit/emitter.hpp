@@ -72,7 +72,7 @@ EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm,
 ShaderPrecision precisionOf(const Permutation& perm);
 // The brick bound to `role` in this permutation (the material's choice, adjusted for the
 // precision by brickForPrecision).
-std::string boundBrick(const Permutation& perm, const std::string& role);
+std::string boundBrick(const ShaderLibrary& lib, const Permutation& perm, const std::string& role);
 // role -> brick id of every role the permutation's shader calls, in the model's order.
 std::vector<std::pair<std::string, std::string>> boundRoles(const ShaderLibrary& lib, const Permutation& perm);
 

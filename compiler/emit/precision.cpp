@@ -27,8 +27,9 @@ double minAlpha(ShaderPrecision p) {
   return r * r;
 }
 
-std::string brickForPrecision(const std::string& brickId, ShaderPrecision p) {
-  if (isHalf(p) && brickId == "roughness_clamped") return "roughness_clamped_fp16";
+std::string brickForPrecision(const ShaderLibrary& lib, const std::string& brickId, ShaderPrecision p) {
+  const Brick* b = lib.findBrick(brickId);
+  if (isHalf(p) && b && !b->fp16Twin.empty()) return b->fp16Twin;
   return brickId;
 }
 

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "library/shader_library.hpp"
+
 namespace mb {
 
 // Fp16Mediump is the fp16 axis value written for targets without 16-bit types (ESSL 3.10):
@@ -39,9 +41,10 @@ inline constexpr double kMinPerceptualRoughnessFp16 = 0.089;
 double minPerceptualRoughness(ShaderPrecision p);
 double minAlpha(ShaderPrecision p);
 
-// The roughness brick a material's choice maps to at this precision: at fp16 the Filament
-// clamp moves to its fp16 floor (roughness_clamped -> roughness_clamped_fp16), as Filament's
-// MIN_PERCEPTUAL_ROUGHNESS does; every other brick is kept.
-std::string brickForPrecision(const std::string& brickId, ShaderPrecision p);
+// The brick a material's choice maps to at this precision: at fp16 a brick's manifest
+// "fp16_twin" replaces it (the Filament clamp moves to its fp16 floor, roughness_clamped ->
+// roughness_clamped_fp16, as Filament's MIN_PERCEPTUAL_ROUGHNESS does); every other brick
+// is kept.
+std::string brickForPrecision(const ShaderLibrary& lib, const std::string& brickId, ShaderPrecision p);
 
 }  // namespace mb

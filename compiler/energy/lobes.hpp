@@ -1,8 +1,10 @@
 // The lobes the energy checks integrate: products of bricks (D x V for a specular or sheen
-// lobe, one brick for a diffuse lobe), built from the library's slots. Which D pairs with
-// which V is a modelling decision (a GGX V with a Charlie D means nothing), so the pairing
-// rules live here; the bricks of each slot are discovered, so a new V brick in
-// specular_v is integrated with GGX D with no code change.
+// lobe, one brick for a diffuse lobe), built from the library's data. Which D pairs with
+// which V is a modelling decision (a GGX V with a Charlie D means nothing), so each D brick's
+// manifest "energy" entry names its lobe ("specular", "sheen", "anisotropic") and its V bricks
+// ("all" of its lobe, or a list), and each V brick names its lobe: a new V brick of the
+// specular lobe is integrated with GGX D, and a new D brick joins the checks, with no code
+// change (docs/architecture.md "Adding a brick").
 #pragma once
 #include <string>
 #include <vector>

@@ -49,6 +49,7 @@ LibraryData LibraryLoader::run() {
   checkSchema(f);
   readUnits(f);
   forEachName(f, "/slots", "slot", [&](const std::string& n, const SourceLocation& at) { readSlot(n, at); });
+  checkBrickReferences();
   forEachName(f, "/models", "model", [&](const std::string& n, const SourceLocation& at) { readModel(n, at); });
   return std::move(data_);
 }
@@ -212,7 +213,8 @@ void LibraryLoader::readSlot(const std::string& folder, const SourceLocation& li
   auto doc = loadJson(folder + "/slot.json", listedAt);
   if (!doc) return;
   JsonFields f(*doc, sink_);
-  if (!f.object("", {"name", "description", "returns", "params", "bricks"}, {}, "slot '" + folder + "'")) return;
+  if (!f.object("", {"name", "description", "returns", "params", "bricks"}, {"energy"}, "slot '" + folder + "'"))
+    return;
   Slot slot;
   slot.name = folder;
   auto name = f.string("/name");
@@ -222,6 +224,7 @@ void LibraryLoader::readSlot(const std::string& folder, const SourceLocation& li
   slot.description = f.string("/description").value_or("");
   slot.returns = valueType(f, "/returns", false).value_or(ValueType::Float);
   slot.params = readSlotParams(f);
+  if (f.find("/energy")) slot.energyRole = oneOf(f, "/energy", brickEnergyRoles()).value_or("");
   data_.slots.push_back(slot);
   if (!f.isArray("/bricks")) return;
   for (size_t i = 0; i < f.find("/bricks")->size(); ++i) readBrick(f, JsonFields::element("/bricks", i), slot);
@@ -247,7 +250,7 @@ void LibraryLoader::readBrick(JsonFields& f, const std::string& ptr, const Slot&
   const json* idValue = f.find(ptr + "/id");
   std::string what = idValue && idValue->is_string() ? "brick '" + idValue->get<std::string>() + "'" : "brick";
   if (!f.object(ptr, {"id", "name", "function", "file", "citation", "requires", "domain", "tolerance"},
-                {"geometry", "notes", "unstable_variant"}, what))
+                {"geometry", "notes", "unstable_variant", "fp16_twin", "energy"}, what))
     return;
   Brick b;
   b.slot = slot.name;
@@ -267,6 +270,8 @@ void LibraryLoader::readBrick(JsonFields& f, const std::string& ptr, const Slot&
   b.domain = readDomain(f, ptr + "/domain", slot);
   b.geometry = readGeometry(f, ptr + "/geometry", slot);
   b.tolerance = readTolerance(f, ptr + "/tolerance");
+  readFp16Twin(f, ptr + "/fp16_twin", b);
+  readBrickEnergy(f, ptr, slot, b);
   data_.bricks.push_back(std::move(b));
 }
 

@@ -66,6 +66,30 @@ class LibraryLoader {
   GeometryDomain readGeometry(JsonFields& f, const std::string& ptr, const Slot& slot);
   Tolerance readTolerance(JsonFields& f, const std::string& ptr);
 
+  // --- brick facts the compiler looks up by brick (brick_facts.cpp) -------------------
+  void readFp16Twin(JsonFields& f, const std::string& ptr, Brick& b);
+  void readBrickEnergy(JsonFields& f, const std::string& brickPtr, const Slot& slot, Brick& b);
+  void readDistributionEnergy(JsonFields& f, const std::string& ptr, Brick& b);
+  std::optional<std::string> oneOf(JsonFields& f, const std::string& ptr, const std::vector<std::string>& allowed);
+  // Brick ids named by other bricks' facts, checked once every slot is read (a fact may
+  // name a brick of a slot listed later).
+  void checkBrickReferences();
+  struct BrickReference {
+    std::string id;     // the brick named
+    std::string slot;   // the slot it must belong to
+    std::string what;   // the fact, for messages ("fp16_twin of 'roughness_clamped'")
+    SourceLocation at;  // where it is named
+  };
+  std::vector<BrickReference> brickReferences_;
+  // V bricks named by a D brick's "energy"."visibility": each must be a V brick of `lobe`.
+  struct EnergyPair {
+    std::string visibility;
+    std::string lobe;
+    std::string what;
+    SourceLocation at;
+  };
+  std::vector<EnergyPair> energyPairs_;
+
   // --- models (library_models.cpp) ----------------------------------------------------
   void readModel(const std::string& name, const SourceLocation& listedAt);
   std::optional<std::string> roleBinding(JsonFields& f, const std::string& ptr, const std::string& roleName,

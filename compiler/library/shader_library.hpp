@@ -22,6 +22,10 @@ struct Slot {
   std::string description;
   ValueType returns = ValueType::Float;
   std::vector<SlotParam> params;
+  // slot.json "energy": the part its bricks play in the energy checks (compiler/energy/):
+  // "distribution" (D), "visibility" (V) or "diffuse"; empty when they play none. Every
+  // brick of such a slot carries an "energy" entry (BrickEnergy).
+  std::string energyRole;
 };
 
 // Inclusive range of a scalar probe input, or of each component of a vector input.
@@ -42,6 +46,31 @@ struct Tolerance {
   std::string reason;
 };
 
+// A brick's "energy" entry (docs/energy.md): what the energy checks integrate it with and
+// what theory says about the result. The words are the loader's vocabulary (brickEnergy*
+// below); compiler/energy/lobes.cpp turns them into lobes.
+struct BrickEnergy {
+  // Non-empty: the brick is left out of the energy checks, for this reason.
+  std::string excluded;
+  // "specular", "sheen", "anisotropic" (D and V bricks: a D pairs with V bricks of its lobe)
+  // or "diffuse" (bricks of a diffuse slot).
+  std::string lobe;
+  // D bricks: the quadrature map that follows this D ("ggx", "beckmann", "charlie",
+  // "ashikhmin"), and the V bricks it pairs with: every V of its lobe when `allVisibilities`,
+  // else the listed ones.
+  std::string halfVectorMap;
+  bool allVisibilities = false;
+  std::vector<std::string> visibilities;
+  // V and diffuse bricks: "conserving" (albedo <= 1 by construction), "not_conserving" (known
+  // to exceed 1) or "unbounded" (nothing guarantees <= 1), and why, with the source.
+  std::string expectation;
+  std::string note;
+};
+const std::vector<std::string>& brickEnergyRoles();         // distribution, visibility, diffuse
+const std::vector<std::string>& brickEnergyLobes();         // specular, sheen, anisotropic
+const std::vector<std::string>& brickEnergyMaps();          // ggx, beckmann, charlie, ashikhmin
+const std::vector<std::string>& brickEnergyExpectations();  // conserving, not_conserving, unbounded
+
 struct Brick {
   std::string id;
   std::string slot;
@@ -61,6 +90,10 @@ struct Brick {
   // permutations.
   std::string unstableFile;
   std::string unstableProblem;
+  // Manifest "fp16_twin": the brick of the same slot that replaces this one in fp16
+  // permutations (emit/precision.hpp brickForPrecision), or empty when the brick is kept.
+  std::string fp16Twin;
+  BrickEnergy energy;  // manifest "energy"; meaningful when the slot has an energyRole
 };
 
 // Shared GLSL that is not a brick (common helpers).

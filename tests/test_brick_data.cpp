@@ -1,0 +1,277 @@
+// Brick facts as data (docs/architecture.md "Adding a brick"): the facts the compiler acts on
+// by brick (fp16 twin, energy lobe, half-vector map and theory) are read from the brick's
+// manifest entry, checked with file:line:column errors, and a new D brick added to a scratch
+// copy of the library with three files (GLSL, reference, manifest entry: tests/data/
+// new_d_brick/) is compiled, validated, stressed, integrated by the energy checks and listed
+// in the catalogue, with no change to compiler/.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "emit/precision.hpp"
+#include "energy/energy_checks.hpp"
+#include "fake_library.hpp"
+#include "stress/stress_run.hpp"
+#include "support/harness_support.hpp"
+#include "support/pipeline_support.hpp"
+#include "validate/brick_catalogue.hpp"
+#include "validate/validation.hpp"
+
+using namespace mb;
+using mb::test::FakeLibrary;
+using Catch::Matchers::Contains;
+namespace fs = std::filesystem;
+
+namespace {
+
+// The fake library's specular_d/slot.json with `from` replaced by `to` (first occurrence).
+std::string fakeSlotD(const std::string& from, const std::string& to) {
+  std::string text = test::fakeLibraryFiles().at("specular_d/slot.json");
+  auto pos = text.find(from);
+  REQUIRE(pos != std::string::npos);
+  return text.replace(pos, from.size(), to);
+}
+
+std::vector<Diagnostic> loadErrors(const FakeLibrary& lib) {
+  try {
+    ShaderLibrary::load(lib.root());
+  } catch (const DiagnosticError& e) {
+    return e.diagnostics();
+  }
+  return {};
+}
+
+// The single diagnostic of a load, checked for its code and file:line:column.
+Diagnostic onlyError(const FakeLibrary& lib, const std::string& code, int line, int column) {
+  auto ds = loadErrors(lib);
+  INFO("diagnostics:\n" << (ds.empty() ? std::string("(none)") : DiagnosticError(ds).what()));
+  REQUIRE(ds.size() == 1);
+  CHECK(ds[0].code == code);
+  CHECK(ds[0].where.file == lib.path("specular_d/slot.json"));
+  CHECK(ds[0].where.line == line);
+  CHECK(ds[0].where.column == column);
+  return ds[0];
+}
+
+// Fake specular_d with an energy role and its bricks' entries (none where empty), and a
+// visibility slot with one V.
+std::map<std::string, std::string> energyLibrary(const std::string& ggxEnergy, const std::string& beckmannEnergy) {
+  std::string d = fakeSlotD("\"bricks\": [", "\"energy\": \"distribution\",\n  \"bricks\": [");
+  d.replace(d.find("\"geometry\""), 0, "\"energy\": " + ggxEnergy + ",\n      ");
+  if (!beckmannEnergy.empty())
+    d.replace(d.find("\"notes\": \"test brick\""), 0, "\"energy\": " + beckmannEnergy + ",\n      ");
+  std::string v = R"json({
+  "name": "specular_v",
+  "description": "V",
+  "returns": "float",
+  "params": [{"name": "g", "type": "Geometry"}, {"name": "alpha", "type": "float"}],
+  "energy": "visibility",
+  "bricks": [
+    {
+      "id": "v_smith",
+      "name": "Smith",
+      "function": "mb_v_smith",
+      "file": "v_smith.glsl",
+      "citation": "Heitz 2014",
+      "requires": ["common"],
+      "domain": {"alpha": [0.002, 1.0]},
+      "tolerance": {"abs": 0.0, "rel": 1e-6, "reason": "sqrt"},
+      "energy": {"lobe": "specular", "expectation": "conserving", "note": "G2 <= G1(v)"}
+    }
+  ]
+}
+)json";
+  std::string manifest = test::fakeLibraryFiles().at("manifest.json");
+  manifest.replace(manifest.find("\"fresnel\"]"), 10, "\"fresnel\", \"specular_v\"]");
+  return {{"manifest.json", manifest},
+          {"specular_d/slot.json", d},
+          {"specular_v/slot.json", v},
+          {"specular_v/v_smith.glsl", "float mb_v_smith(Geometry g, float alpha) { return alpha; }\n"}};
+}
+
+const char* kGgxEnergy = R"({"lobe": "specular", "half_vector_map": "ggx", "visibility": "all"})";
+const char* kBeckmannEnergy = R"({"lobe": "specular", "half_vector_map": "beckmann", "visibility": ["v_smith"]})";
+
+// A copy of the shipped library in a fresh temporary folder, removed on destruction.
+class ScratchLibrary {
+ public:
+  ScratchLibrary() {
+    static std::atomic<int> counter{0};
+    root_ = fs::temp_directory_path() /
+            ("mb_scratch_lib_" + std::to_string(std::random_device{}()) + "_" + std::to_string(counter++));
+    fs::copy(ShaderLibrary::defaultRoot(), root_, fs::copy_options::recursive);
+  }
+  ~ScratchLibrary() {
+    std::error_code ec;
+    fs::remove_all(root_, ec);
+  }
+  ScratchLibrary(const ScratchLibrary&) = delete;
+  ScratchLibrary& operator=(const ScratchLibrary&) = delete;
+  const fs::path& root() const { return root_; }
+
+  // Adds a brick to `slot`: its GLSL file beside the slot.json, its entry appended there.
+  void addBrick(const std::string& slot, const fs::path& glsl, const fs::path& entryFile) const {
+    fs::copy_file(glsl, root_ / slot / glsl.filename());
+    auto doc = nlohmann::ordered_json::parse(test::readFile(root_ / slot / "slot.json"));
+    doc["bricks"].push_back(nlohmann::ordered_json::parse(test::readFile(entryFile)));
+    std::ofstream(root_ / slot / "slot.json", std::ios::binary) << doc.dump(2) << "\n";
+  }
+  // Keeps only these slots, and no models, in manifest.json (a smaller catalogue).
+  void keepSlots(const std::vector<std::string>& slots) const {
+    auto doc = nlohmann::ordered_json::parse(test::readFile(root_ / "manifest.json"));
+    doc["slots"] = slots;
+    doc["models"] = nlohmann::ordered_json::array();
+    std::ofstream(root_ / "manifest.json", std::ios::binary) << doc.dump(2) << "\n";
+  }
+
+ private:
+  fs::path root_;
+};
+
+}  // namespace
+
+TEST_CASE("fp16_twin: read from the brick entry, checked against the slot's bricks", "[library][brick-data]") {
+  const std::string twin = "\"geometry\": {\"NoV\": [0.01, 1.0]},\n      \"fp16_twin\": ";
+  SECTION("declared: fp16 permutations bind the twin") {
+    FakeLibrary files(
+        {{"specular_d/slot.json", fakeSlotD("\"geometry\": {\"NoV\": [0.01, 1.0]},", twin + "\"d_beckmann\",")}});
+    auto lib = ShaderLibrary::load(files.root());
+    CHECK(lib.findBrick("d_ggx")->fp16Twin == "d_beckmann");
+    CHECK(brickForPrecision(lib, "d_ggx", ShaderPrecision::Fp16) == "d_beckmann");
+    CHECK(brickForPrecision(lib, "d_ggx", ShaderPrecision::Fp16Mediump) == "d_beckmann");
+    CHECK(brickForPrecision(lib, "d_ggx", ShaderPrecision::Fp32) == "d_ggx");
+    CHECK(brickForPrecision(lib, "d_beckmann", ShaderPrecision::Fp16) == "d_beckmann");
+  }
+  SECTION("a twin that is no brick of the slot") {
+    FakeLibrary files(
+        {{"specular_d/slot.json", fakeSlotD("\"geometry\": {\"NoV\": [0.01, 1.0]},", twin + "\"d_beckman\",")}});
+    auto d = onlyError(files, "E-UNKNOWN-BRICK", 16, 20);
+    CHECK_THAT(d.message,
+               Contains("fp16_twin of 'd_ggx' names 'd_beckman', which is not a brick of slot 'specular_d'"));
+    CHECK(d.suggestion == "did you mean 'd_beckmann'?");
+  }
+  SECTION("a twin of another slot") {
+    FakeLibrary files(
+        {{"specular_d/slot.json", fakeSlotD("\"geometry\": {\"NoV\": [0.01, 1.0]},", twin + "\"f_schlick\",")}});
+    onlyError(files, "E-UNKNOWN-BRICK", 16, 20);
+  }
+  // The shipped library: Filament's fp16 roughness floor.
+  CHECK(brickForPrecision(test::shippedLibrary(), "roughness_clamped", ShaderPrecision::Fp16) ==
+        "roughness_clamped_fp16");
+}
+
+TEST_CASE("energy: each brick of an energy slot declares its lobe, checked at file:line:column",
+          "[library][brick-data]") {
+  SECTION("valid entries load") {
+    FakeLibrary files(energyLibrary(kGgxEnergy, kBeckmannEnergy));
+    auto lib = ShaderLibrary::load(files.root());
+    CHECK(lib.findSlot("specular_d")->energyRole == "distribution");
+    const BrickEnergy& e = lib.findBrick("d_beckmann")->energy;
+    CHECK(e.lobe == "specular");
+    CHECK(e.halfVectorMap == "beckmann");
+    CHECK_FALSE(e.allVisibilities);
+    CHECK(e.visibilities == std::vector<std::string>{"v_smith"});
+    CHECK(lib.findBrick("v_smith")->energy.expectation == "conserving");
+    // Both D bricks pair with the one V: two lobes, GGX first (map order), no C++ table.
+    auto lobes = energy::energyLobes(lib);
+    REQUIRE(lobes.size() == 2);
+    CHECK(lobes[0].name == "d_ggx * v_smith");
+    CHECK(lobes[1].name == "d_beckmann * v_smith");
+    CHECK(lobes[1].map == energy::HalfVectorMapKind::Beckmann);
+    CHECK(lobes[1].expectation == energy::Expectation::Conserving);
+    CHECK(lobes[1].note == "G2 <= G1(v)");
+  }
+  SECTION("a D brick without an entry fails: it would be silently left out") {
+    FakeLibrary lib(energyLibrary(kGgxEnergy, ""));
+    auto d = onlyError(lib, "E-MISSING-FIELD", 20, 5);
+    CHECK_THAT(d.message, Contains("brick 'd_beckmann' needs an 'energy' entry"));
+  }
+  SECTION("an unknown half-vector map") {
+    FakeLibrary lib(
+        energyLibrary(R"({"lobe": "specular", "half_vector_map": "gxx", "visibility": "all"})", kBeckmannEnergy));
+    auto d = onlyError(lib, "E-INVALID-VALUE", 16, 57);
+    CHECK_THAT(d.message, Contains("expected one of 'ggx', 'beckmann', 'charlie', 'ashikhmin'"));
+    CHECK(d.suggestion == "did you mean 'ggx'?");
+  }
+  SECTION("a listed V that is not a V brick of the lobe") {
+    FakeLibrary lib(
+        energyLibrary(kGgxEnergy, R"({"lobe": "sheen", "half_vector_map": "beckmann", "visibility": ["v_smith"]})"));
+    auto d = onlyError(lib, "E-UNKNOWN-BRICK", 29, 81);
+    CHECK_THAT(d.message, Contains("names 'v_smith', which is not a V brick of the 'sheen' lobe"));
+  }
+}
+
+TEST_CASE("the shipped library's energy facts keep every lobe of the C++ tables they replace", "[energy][brick-data]") {
+  auto lobes = energy::energyLobes(test::shippedLibrary());
+  std::vector<std::string> names;
+  for (const auto& l : lobes) names.push_back(l.name);
+  // The order and pairing of docs/energy.md.
+  CHECK(names == std::vector<std::string>{"d_ggx * v_smith_ggx_correlated",
+                                          "d_ggx * v_schlick_ggx_ue4",
+                                          "d_ggx * v_smith_ggx_correlated_fast",
+                                          "d_ggx * v_schlick_ggx_ibl",
+                                          "d_ggx * v_kelemen",
+                                          "d_ggx * v_smith_ggx_separable",
+                                          "d_ggx * v_implicit",
+                                          "d_ggx * v_neumann",
+                                          "d_ggx * v_cook_torrance",
+                                          "d_beckmann * v_cook_torrance",
+                                          "d_charlie * v_ashikhmin",
+                                          "d_charlie * v_charlie",
+                                          "d_charlie * v_charlie_no_softening",
+                                          "d_ashikhmin * v_ashikhmin",
+                                          "d_ggx_aniso * v_smith_ggx_correlated_aniso",
+                                          "d_ggx_aniso * v_smith_ggx_separable_aniso",
+                                          "diffuse_lambert",
+                                          "diffuse_disney_renormalized",
+                                          "diffuse_activision_multiscatter",
+                                          "diffuse_fabric_lambert",
+                                          "diffuse_disney_burley"});
+  for (const auto& l : lobes) {
+    INFO(l.name);
+    CHECK_FALSE(l.note.empty());
+  }
+}
+
+TEST_CASE("a new D brick from three files joins validation, stress, energy and the catalogue", "[brick-data][vulkan]") {
+  const fs::path data = test::sourceDir() / "tests/data/new_d_brick";
+  ScratchLibrary scratch;
+  scratch.addBrick("specular_d", data / "d_ggx_tan2.glsl", data / "entry.json");
+  auto lib = ShaderLibrary::load(scratch.root());
+  const Brick* brick = lib.findBrick("d_ggx_tan2");
+  REQUIRE(brick != nullptr);
+  REQUIRE(ref::Registry::references().find("d_ggx_tan2") != nullptr);
+  harness::VulkanHarness gpu(harness::testDeviceOptions());
+
+  // Compiled and validated against its reference, and stressed.
+  ProbeProgram probe = buildBrickProbe(lib, *brick);
+  ValidationRecord record = validateProbe(gpu, probe, "brick", 2048, 1);
+  CHECK(record.passed());
+  StressResult stress = stressProbe(gpu, probe, "brick", "d_ggx_tan2", {256, 1});
+  CHECK(stress.passed());
+
+  // In the energy checks, after the shipped lobes of its kind and map, and conserving there.
+  auto lobes = energy::energyLobes(lib);
+  auto it = std::find_if(lobes.begin(), lobes.end(),
+                         [](const energy::Lobe& l) { return l.name == "d_ggx_tan2 * v_smith_ggx_correlated"; });
+  REQUIRE(it != lobes.end());
+  CHECK(it - lobes.begin() == 9);  // after the 9 lobes of d_ggx, before Beckmann's
+  CHECK(lobes.size() == energy::energyLobes(test::shippedLibrary()).size() + 1);
+  energy::ProbeCache probes(lib);
+  auto furnace = energy::whiteFurnace(gpu, probes, {*it}, energy::EnergyGrid::coarse());
+  REQUIRE(furnace.size() == 1);
+  CHECK(furnace[0].gpuMatchesReference());
+  CHECK_FALSE(furnace[0].exceedsOne());
+
+  // In the catalogue (of the scratch library cut to the slots its lobe needs, to stay small).
+  scratch.keepSlots({"specular_d", "specular_v"});
+  auto small = ShaderLibrary::load(scratch.root());
+  std::string catalogue = brickCatalogueMarkdown(small, gpu, {256, 1});
+  CHECK_THAT(catalogue, Contains("`d_ggx_tan2` GGX / Trowbridge-Reitz (tan^2 form)"));
+  CHECK(gpu.validationMessages().empty());
+}
