@@ -12,6 +12,7 @@
 #include "support/gltf_spec_brdf.hpp"
 #include "support/harness_support.hpp"
 #include "support/pipeline_support.hpp"
+#include "validate/sampler.hpp"
 #include "validate/validation.hpp"
 
 using namespace mb;
@@ -239,6 +240,42 @@ TEST_CASE("glTF emissiveStrength above 1000 is emitted as glTF defines", "[gltf]
   Agreement a = agreement(evaluate(gpu, m, rs, 0.0), rs, [](const Row&) { return spec::V3{1500, 750, 375}; });
   CHECK(a.gpu <= 1.0);
   CHECK(a.reference <= 1.0);
+}
+
+// The surface outputs a permutation's probe also returns (ProbeLayout::fedOutputs) are signed:
+// a clear-coat normal decoded from its texture points anywhere in the tangent frame. Only the
+// shaded radiance is judged on its sign, so such a material validates.
+TEST_CASE("validate judges the sign of radiance only, not of a clear-coat normal",
+          "[gltf][gltf-conformance][validate][vulkan]") {
+  harness::VulkanHarness gpu(harness::testDeviceOptions());
+  const MaterialDesc m = corpusMaterial("clearcoat_normal.gltf");
+  Permutation perm = permutationsFor({m}).front();
+  perm.material = &m;
+  const ProbeProgram program = buildPermutationProbe(test::shippedLibrary(), perm);
+  const ProbeLayout& layout = program.shader.layout;
+  const ProbeInput* coatNormal = nullptr;
+  for (const ProbeInput& f : layout.fedOutputs)
+    if (f.name == "clearCoatNormal") coatNormal = &f;
+  REQUIRE(coatNormal != nullptr);
+
+  // The case is real: the GPU returns negative coat-normal components on these samples.
+  const uint64_t samples = 1024;
+  ProbeRun run = runProbeOnGpu(gpu, program, generateSamples(layout, program.domain, samples, 18));
+  uint64_t negativeNormal = 0, negativeRadiance = 0;
+  for (uint64_t i = 0; i < run.count; ++i)
+    for (uint32_t k = 0; k < layout.outStride; ++k) {
+      if (run.gpu[i * layout.outStride + k] >= 0.0f) continue;
+      if (k < 3) ++negativeRadiance;  // the shaded output, a vec3 (materialProbeLayout)
+      if (k >= coatNormal->offset && k < coatNormal->offset + 3) ++negativeNormal;
+    }
+  CHECK(negativeNormal > 0);
+
+  ValidationRecord r = validateProbe(gpu, program, "permutation", samples, 18);
+  INFO(r.key << ": negative " << r.stats.negativeCount << ", max_abs " << r.stats.maxAbs);
+  CHECK(r.judgesNegatives());
+  CHECK(r.stats.negativeCount == negativeRadiance);
+  CHECK(r.passed());
+  CHECK(gpu.validationMessages().empty());
 }
 
 TEST_CASE("a black metal under ibl_analytic reflects no negative radiance", "[gltf][gltf-conformance][vulkan]") {

@@ -17,7 +17,7 @@ double ulpDistance(float a, float b) {
   return static_cast<double>(std::llabs(ordered(a) - ordered(b)));
 }
 
-void ErrorStats::add(int64_t record, float gpu, double ref, const Tolerance& tol, double conditioning) {
+void ErrorStats::add(int64_t record, float gpu, double ref, const Tolerance& tol, double conditioning, bool radiance) {
   ++components;
   if (!std::isfinite(ref)) {
     ++referenceInvalid;
@@ -35,7 +35,7 @@ void ErrorStats::add(int64_t record, float gpu, double ref, const Tolerance& tol
     worstRatio = std::numeric_limits<double>::infinity();
     return;
   }
-  if (gpu < 0.0f) ++negativeCount;
+  if (radiance && gpu < 0.0f) ++negativeCount;
   double err = std::abs(static_cast<double>(gpu) - ref);
   double arithmetic = tol.abs + tol.rel * std::abs(ref);
   double allowed = arithmetic + conditioning;

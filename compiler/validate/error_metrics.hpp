@@ -17,7 +17,7 @@ struct ErrorStats {
   uint64_t components = 0;  // output values compared
   uint64_t nanCount = 0;
   uint64_t infCount = 0;
-  uint64_t negativeCount = 0;
+  uint64_t negativeCount = 0;     // negative GPU values among the values added with `radiance`
   uint64_t referenceInvalid = 0;  // reference gave NaN/Inf: a reference bug
   uint64_t failures = 0;          // outside abs + rel * |ref|
   double maxAbs = 0;
@@ -33,7 +33,10 @@ struct ErrorStats {
   // A value passes when |gpu - ref| <= tol.abs + tol.rel * |ref| + conditioning, where
   // `conditioning` is how much the exact result moves under the fp32 rounding of the
   // direction inputs (the problem's own sensitivity, not the brick's arithmetic).
-  void add(int64_t record, float gpu, double ref, const Tolerance& tol, double conditioning = 0.0);
+  // `radiance`: the value is radiance, so a negative one is counted (signed values such as a
+  // surface's normal are compared but never counted as negative).
+  void add(int64_t record, float gpu, double ref, const Tolerance& tol, double conditioning = 0.0,
+           bool radiance = true);
   bool passed() const { return failures == 0 && nanCount == 0 && infCount == 0 && referenceInvalid == 0; }
 };
 

@@ -529,11 +529,15 @@ std::vector<uint32_t> directionInputColumns(const ProbeLayout& layout) {
 }
 
 void addErrors(ErrorStats& s, const ProbeRun& run, const ProbeProgram& program, uint64_t firstRecord) {
-  uint32_t stride = program.shader.layout.outStride;
+  const ProbeLayout& layout = program.shader.layout;
+  uint32_t stride = layout.outStride;
+  // A record is the shaded output first, then the surface outputs fed to the model
+  // (ProbeLayout::fedOutputs): normals and other signed values that are not radiance.
+  const uint32_t outputComponents = static_cast<uint32_t>(componentCount(layout.output));
   for (uint64_t i = 0; i < run.count; ++i)
     for (uint32_t k = 0; k < stride; ++k)
       s.add(static_cast<int64_t>(firstRecord + i), run.gpu[i * stride + k], run.reference[i * stride + k],
-            program.tolerance, run.conditioning.empty() ? 0.0 : run.conditioning[i * stride + k]);
+            program.tolerance, run.conditioning.empty() ? 0.0 : run.conditioning[i * stride + k], k < outputComponents);
 }
 
 ErrorStats compare(const ProbeRun& run, const ProbeProgram& program) {

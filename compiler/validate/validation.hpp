@@ -27,9 +27,10 @@ struct ValidationRecord {
   double referenceMs = 0;      // double reference, input-conditioning allowance and comparison
   size_t spirvInstructions = 0;
   std::string worstInput;  // "col=value,..." of the worst record, replayable with eval
-  // A permutation's outputs are radiance, which is never negative: a negative GPU value fails
-  // it even where the reference agrees (a fit below 0 in both, issue 18). Bricks are not
-  // judged on sign: many return signed values (SH, bent normals, Fresnel-weighted terms).
+  // A permutation's shaded output is radiance, which is never negative: a negative GPU value
+  // fails it even where the reference agrees (a fit below 0 in both). The surface outputs its
+  // probe also returns (a clear-coat normal) are signed and not counted (addErrors). Bricks are
+  // not judged on sign: many return signed values (SH, bent normals, Fresnel-weighted terms).
   bool judgesNegatives() const { return kind == "permutation"; }
   bool passed() const { return stats.passed() && !(judgesNegatives() && stats.negativeCount > 0); }
 };
