@@ -229,7 +229,11 @@ TEST_CASE("which env BRDF bricks are affine in f0, as ibl_analytic's DFG terms a
     return worst;
   };
   const Vec3 colored{0.95, 0.5, 0.01}, gray{0.5, 0.5, 0.5};
-  CHECK(affineError("env_brdf_approx", colored, 0.0, 1.0) <= 1e-12);
+  // Clamped at 0 as a result, so affine where f0 A + B >= 0: every f0 here but f0 = 0 at
+  // high roughness and n.v, where B < 0 (see the next test). The model reads only E(1) = A + B
+  // from it (> 0.01 below); dfg.x feeds ibl_lut's dfg_lut brick, not ibl_analytic.
+  CHECK(affineError("env_brdf_approx", colored, 0.01, 1.0) <= 1e-12);
+  CHECK(affineError("env_brdf_approx", colored, 0.0, 1.0) > 1e-3);
   // These fade the bias by saturate(50 f0.g) on purpose: affine only where f0.g >= 0.02, so
   // E(1) is their Int Gv but E(0) = 0 is not their Int Gv Fc (dfg.x; unused by the base).
   for (const char* id : {"env_dfg_lazarov", "env_dfg_polynomial"}) {
@@ -251,4 +255,42 @@ TEST_CASE("which env BRDF bricks are affine in f0, as ibl_analytic's DFG terms a
         INFO(id << " r " << r << " NoV " << NoV);
         CHECK(envBrdf(id, ref::splat(1.0), r, NoV).x > 0.01);
       }
+}
+
+// Karis's fit E = f0 A + B as published (seed 002), unclamped: the oracle for the clamp.
+static Vec3 karisFit(const Vec3& f0, double R, double NoV) {
+  const double x = 1.0 - R;
+  const double a004 = std::min(x * x, std::exp2(-9.28 * NoV)) * x + (0.0425 - 0.0275 * R);
+  return f0 * (-1.04 * a004 + (1.04 - 0.572 * R)) + ref::splat(1.04 * a004 + (-0.04 + 0.022 * R));
+}
+
+TEST_CASE("env_brdf_approx clamps its result, which only moves it towards the integral", "[model-environment]") {
+  // Where the fit is >= 0 the brick is the fit; where it is below 0 (a small f0 at high
+  // roughness and n.v: the fit's bias reaches -0.0024) the brick gives 0, which is nearer the
+  // integral Int Gv (f0 + (1 - f0) Fc) > 0. Clamping the scale and bias instead lifted every
+  // f0 there by up to 0.0024, away from the integral at e.g. f0 = 0.333, R = 0.998, n.v = 0.809.
+  int clamped = 0;
+  for (double f0 : {0.0, 0.002, 0.005, 0.02, 0.04, 0.333, 1.0})
+    for (double R = 0.0; R <= 1.0001; R += 0.02)
+      for (double NoV = 0.0; NoV <= 1.0001; NoV += 0.02) {
+        const double e = envBrdf("env_brdf_approx", ref::splat(f0), R, NoV).x, fit = karisFit(ref::splat(f0), R, NoV).x;
+        INFO("f0 " << f0 << " R " << R << " n.v " << NoV << ": brick " << e << ", fit " << fit);
+        CHECK(e >= 0.0);
+        if (fit >= 0.0) {
+          CHECK(e == fit);
+          continue;
+        }
+        ++clamped;
+        const double exact = ref::envBrdfIntegral(ref::splat(f0), R, NoV).x;
+        CHECK(std::abs(e - exact) < std::abs(fit - exact));
+      }
+  // The case is real: the fit does go below 0 on this grid, only at f0 well below 0.02.
+  CHECK(clamped > 0);
+  const double f0 = 0.333, R = 0.998, NoV = 0.809;
+  const double exact = ref::envBrdfIntegral(ref::splat(f0), R, NoV).x;
+  const double e = envBrdf("env_brdf_approx", ref::splat(f0), R, NoV).x;
+  const double x = 1.0 - R, a004 = std::min(x * x, std::exp2(-9.28 * NoV)) * x + (0.0425 - 0.0275 * R);
+  const double biasClamped = f0 * (-1.04 * a004 + (1.04 - 0.572 * R)) + std::max(1.04 * a004 - 0.04 + 0.022 * R, 0.0);
+  INFO("exact " << exact << ", brick " << e << ", bias clamped " << biasClamped);
+  CHECK(std::abs(e - exact) < std::abs(biasClamped - exact));
 }
