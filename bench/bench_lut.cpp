@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
       warmupMs.push_back(last.warmupGpuMs);
       compileMs.push_back(last.compileMs);
     }
-    lut::LutCheck check = lut::checkLut(last.table, grid, true);
+    lut::LutCheck check = lut::checkLut(lib, last.table, grid, true);
     if (spec.size() > 3) writeErrorMap(spec[3], last.table, grid);
     const double texelSamples = double(size) * size * samples;
     runs.push_back({{"size", size},

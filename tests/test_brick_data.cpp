@@ -16,10 +16,12 @@
 #include "emit/precision.hpp"
 #include "energy/energy_checks.hpp"
 #include "fake_library.hpp"
+#include "lut/lut_kernel.hpp"
 #include "stress/stress_run.hpp"
 #include "support/harness_support.hpp"
 #include "support/pipeline_support.hpp"
 #include "validate/brick_catalogue.hpp"
+#include "validate/precision_domain.hpp"
 #include "validate/validation.hpp"
 
 using namespace mb;
@@ -236,6 +238,117 @@ TEST_CASE("the shipped library's energy facts keep every lobe of the C++ tables 
     INFO(l.name);
     CHECK_FALSE(l.note.empty());
   }
+}
+
+TEST_CASE("roughness: an input's kind is read from its declaration, checked at file:line:column",
+          "[library][brick-data][precision]") {
+  const std::string alpha = R"({"name": "alpha", "type": "float"})";
+  SECTION("a new input name declared a roughness gets the fp16 floor, with no C++ list of names") {
+    FakeLibrary files(
+        {{"specular_d/slot.json", fakeSlotD(alpha, R"({"name": "alpha", "type": "float", "roughness": "alpha"})")}});
+    auto lib = ShaderLibrary::load(files.root());
+    CHECK(lib.findSlot("specular_d")->params[1].roughness == RoughnessKind::Alpha);
+    CHECK(lib.roughnessKind("alpha") == RoughnessKind::Alpha);
+    CHECK(lib.roughnessKind("f0") == RoughnessKind::None);
+    SampleDomain declared{{{"alpha", {0.0, 1.0}}, {"f0", {0.0, 1.0}}}, {}, {}};
+    SampleDomain half = domainAtPrecision(lib, declared, ShaderPrecision::Fp16);
+    CHECK(half.ranges.at("alpha").lo == minAlpha(ShaderPrecision::Fp16));
+    CHECK(half.ranges.at("f0").lo == 0.0);
+    CHECK(domainAtPrecision(lib, declared, ShaderPrecision::Fp32).ranges.at("alpha").lo == 0.0);
+  }
+  SECTION("undeclared, the same name is no roughness") {
+    auto lib = ShaderLibrary::load(FakeLibrary().root());
+    CHECK(lib.roughnessKind("alpha") == RoughnessKind::None);
+    SampleDomain half = domainAtPrecision(lib, {{{"alpha", {0.0, 1.0}}}, {}, {}}, ShaderPrecision::Fp16);
+    CHECK(half.ranges.at("alpha").lo == 0.0);
+  }
+  SECTION("an unknown kind") {
+    FakeLibrary files(
+        {{"specular_d/slot.json", fakeSlotD(alpha, R"({"name": "alpha", "type": "float", "roughness": "alfa"})")}});
+    auto d = onlyError(files, "E-INVALID-VALUE", 5, 97);
+    CHECK_THAT(d.message, Contains("expected one of 'perceptual', 'alpha'"));
+    CHECK(d.suggestion == "did you mean 'alpha'?");
+  }
+  SECTION("a vector input cannot be a roughness") {
+    FakeLibrary files(
+        {{"specular_d/slot.json", fakeSlotD(alpha, R"({"name": "alpha", "type": "vec2", "roughness": "alpha"})")}});
+    auto d = onlyError(files, "E-INVALID-VALUE", 5, 96);
+    CHECK_THAT(d.message, Contains("only a float input is a roughness"));
+  }
+  SECTION("inputs of one name disagree: probes look inputs up by name") {
+    // The energy library's V slot has an undeclared "alpha" beside the D slot's declared one.
+    auto files = energyLibrary(kGgxEnergy, kBeckmannEnergy);
+    std::string& d = files.at("specular_d/slot.json");
+    d.replace(d.find(alpha), alpha.size(), R"({"name": "alpha", "type": "float", "roughness": "alpha"})");
+    FakeLibrary lib(files);
+    auto ds = loadErrors(lib);
+    INFO("diagnostics:\n" << (ds.empty() ? std::string("(none)") : DiagnosticError(ds).what()));
+    REQUIRE(ds.size() == 1);
+    CHECK(ds[0].code == "E-INVALID-VALUE");
+    CHECK(ds[0].where.file == lib.path("specular_v/slot.json"));
+    CHECK(ds[0].where.line == 5);
+    CHECK(ds[0].where.column == 49);
+    CHECK_THAT(ds[0].message, Contains("input 'alpha' has no \"roughness\", but the input of that name at " +
+                                       lib.path("specular_d/slot.json") + ":5:"));
+  }
+}
+
+TEST_CASE("the shipped library's roughness inputs are the names the C++ list had", "[library][brick-data][precision]") {
+  const auto& kinds = test::shippedLibrary().roughnessKinds();
+  CHECK(kinds == std::map<std::string, RoughnessKind>{{"ab", RoughnessKind::Alpha},
+                                                      {"alpha", RoughnessKind::Alpha},
+                                                      {"at", RoughnessKind::Alpha},
+                                                      {"perceptualRoughness", RoughnessKind::Perceptual},
+                                                      {"roughness", RoughnessKind::Perceptual}});
+}
+
+TEST_CASE("kernel_roles: the LUT and prefilter kernels find their bricks by role", "[library][brick-data][lut]") {
+  const std::string ggxEnd = "\"geometry\": {\"NoV\": [0.01, 1.0]},";
+  const std::string beckmannEnd = "\"notes\": \"test brick\"";
+  auto roles = [](const std::string& role) { return "\n      \"kernel_roles\": [\"" + role + "\"],"; };
+  SECTION("a brick declaring a role takes it, with no C++ change") {
+    FakeLibrary files(
+        {{"specular_d/slot.json", fakeSlotD(beckmannEnd, roles("prefilter_d") + "\n      " + beckmannEnd)}});
+    auto lib = ShaderLibrary::load(files.root());
+    REQUIRE(lib.brickForKernelRole("prefilter_d") != nullptr);
+    CHECK(lib.brickForKernelRole("prefilter_d")->id == "d_beckmann");
+    CHECK(lib.brickForKernelRole("cloth_dfg_d") == nullptr);
+  }
+  SECTION("without the roles, the LUT kernel names the one it misses") {
+    try {
+      lut::lutBricks(ShaderLibrary::load(FakeLibrary().root()));
+      FAIL("no error");
+    } catch (const DiagnosticError& e) {
+      REQUIRE(e.diagnostics().size() == 1);
+      CHECK(e.diagnostics()[0].code == "E-UNKNOWN-BRICK");
+      CHECK_THAT(e.diagnostics()[0].message, Contains("needs a brick with kernel role 'hammersley'"));
+    }
+  }
+  SECTION("an unknown role") {
+    FakeLibrary files({{"specular_d/slot.json", fakeSlotD(ggxEnd, ggxEnd + roles("prefilter_dd"))}});
+    auto d = onlyError(files, "E-INVALID-VALUE", 16, 24);
+    CHECK(d.suggestion == "did you mean 'prefilter_d'?");
+  }
+  SECTION("a role of another slot: the kernel calls that slot's signature") {
+    FakeLibrary files({{"specular_d/slot.json", fakeSlotD(ggxEnd, ggxEnd + roles("dfg_visibility"))}});
+    auto d = onlyError(files, "E-INVALID-VALUE", 16, 24);
+    CHECK_THAT(d.message, Contains("kernel role 'dfg_visibility' is for a brick of slot 'specular_v'"));
+  }
+  SECTION("a role taken twice") {
+    std::string text = fakeSlotD(ggxEnd, ggxEnd + roles("prefilter_d"));
+    text.replace(text.find(beckmannEnd), 0, "\"kernel_roles\": [\"prefilter_d\"],\n      ");
+    FakeLibrary files({{"specular_d/slot.json", text}});
+    auto d = onlyError(files, "E-DUPLICATE-NAME", 28, 24);
+    CHECK_THAT(d.message, Contains("kernel role 'prefilter_d' is already taken by brick 'd_ggx' at "));
+  }
+}
+
+TEST_CASE("the shipped library's kernel roles are the bricks the C++ named", "[library][brick-data][lut]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  CHECK(lut::lutBricks(lib).all() == std::vector<std::string>{"hammersley_bitreverse", "importance_sample_ggx",
+                                                              "v_smith_ggx_correlated", "d_charlie", "v_ashikhmin"});
+  REQUIRE(lib.brickForKernelRole("prefilter_d") != nullptr);
+  CHECK(lib.brickForKernelRole("prefilter_d")->id == "d_ggx");
 }
 
 TEST_CASE("a new D brick from three files joins validation, stress, energy and the catalogue", "[brick-data][vulkan]") {

@@ -68,7 +68,7 @@ fs::path tempPath(const std::string& name) {
 TEST_CASE("GPU DFG LUT equals the CPU evaluation of the identical sum within the fp32 bound", "[lut][vulkan]") {
   const GpuLut& lut = smallLut();
   REQUIRE(lut.table.values.size() == kTestSize * kTestSize * kChannels);
-  LutCheck check = checkLut(lut.table, 0, false);
+  LutCheck check = checkLut(test::shippedLibrary(), lut.table, 0, false);
   INFO("max error / bound " << check.maxBoundRatio << " at texel " << check.worstTexel);
   CHECK(check.texels == kTestSize * kTestSize);
   CHECK(check.nonFinite == 0);
@@ -77,7 +77,7 @@ TEST_CASE("GPU DFG LUT equals the CPU evaluation of the identical sum within the
   // The bound is tight enough to matter: a 1e-4 relative change of one value breaks it.
   LutTable broken = lut.table;
   broken.values[(5 * kTestSize + 9) * kChannels + kChannelGv] *= 1.0f + 1e-4f;
-  CHECK(checkLut(broken, 0, false).failures == 1);
+  CHECK(checkLut(test::shippedLibrary(), broken, 0, false).failures == 1);
 }
 
 TEST_CASE(
@@ -87,7 +87,7 @@ TEST_CASE(
   // larger tables are measured by bench/bench_lut.cpp (docs/lut.md).
   for (uint32_t size : {16u, 64u}) {
     const GpuLut lut = quadratureLut(size);
-    const LutCheck check = checkLut(lut.table, 0, true);
+    const LutCheck check = checkLut(test::shippedLibrary(), lut.table, 0, true);
     INFO(size << "^2: max error / bound " << check.maxBoundRatio << " at texel " << check.worstTexel << "; max abs "
               << check.quadrature[0].maxAbs << ", " << check.quadrature[1].maxAbs << ", cloth max rel "
               << check.quadrature[2].maxRel);
@@ -103,7 +103,7 @@ TEST_CASE(
       LutTable broken = lut.table;
       float& value = broken.values[(3 * size + 0) * kChannels + c];
       value += c == kChannelCloth ? 2.0f * float(kClothRelBound) * value + 1e-6f : 2.0f * float(kExactAbsBound);
-      CHECK(checkLut(broken, 0, true).failures == 1);
+      CHECK(checkLut(test::shippedLibrary(), broken, 0, true).failures == 1);
     }
   }
 }
@@ -187,7 +187,7 @@ TEST_CASE("the CPU same sum converges to the quadrature of the exact integrals",
   // Two independent computations of the same three integrals: Filament's estimators with
   // 4096 Hammersley points, and deterministic quadrature (ibl_reference.hpp and
   // cloth_dfg_reference.hpp). A wrong normalization (the 4, the 2 pi) would show as O(1).
-  const SameSum sameSum;
+  const SameSum sameSum(lutBricks(test::shippedLibrary()));
   for (auto [NoV, rough] : {std::pair{0.5f, 0.5f}, {0.9f, 0.7f}, {0.25f, 0.35f}, {0.75f, 1.0f}}) {
     TexelSum s = sameSum.evaluate(NoV, rough, 4096);
     auto q = quadrature(NoV, rough);

@@ -13,6 +13,7 @@
 #include "permute/permutation.hpp"
 #include "stress/stress_inputs.hpp"
 #include "stress/stress_report.hpp"
+#include "validate/precision_domain.hpp"
 #include "support/harness_support.hpp"
 #include "support/pipeline_support.hpp"
 
@@ -47,7 +48,7 @@ TEST_CASE("the stress set has exact n.h = 1, v = -l, zero and scaled vectors, ta
   const ShaderLibrary& lib = test::shippedLibrary();
   const Brick& b = *lib.findBrick("d_ggx");
   EmittedShader s = emitBrickProbe(lib, b);
-  SampleDomain d{b.domain, b.geometry};
+  SampleDomain d = domainAtPrecision(lib, {b.domain, b.geometry, {}}, ShaderPrecision::Fp32);
   StressInputs in = generateStressInputs(s.layout, d, ShaderPrecision::Fp32, 0, 1);
   REQUIRE(in.count() > 1000);
   REQUIRE(in.records.size() == in.count() * s.layout.inStride);

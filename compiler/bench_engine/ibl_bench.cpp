@@ -17,7 +17,7 @@ bool measureDfgLuts(const ShaderLibrary& lib, const BenchOptions& o, IblSection&
   ProbeLayout layout = emitBrickProbe(lib, b).layout;
   const ProbeInput *f0 = layout.find("f0"), *rough = layout.find("perceptualRoughness"), *nov = layout.find("NoV");
   if (!f0 || !rough || !nov || f0->type != ValueType::Vec3) return false;
-  SampleDomain domain{b.domain, b.geometry};
+  SampleDomain domain{b.domain, b.geometry, {}};
   std::vector<float> in = generateSamples(layout, domain, o.samples, o.seed);
   // One unit for the exact integrals of every sample, one per LUT measured.
   if (progress) progress->addToTotal(1 + 2 * o.lutSizes.size());

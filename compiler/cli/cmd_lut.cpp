@@ -66,7 +66,7 @@ int runLut(const LutArgs& a, const GlobalOptions& g) {
   Progress progress("lut", 1, a.quiet, a.json);
   lut::GpuLut generated = lut::generateDfgLutOnGpu(*gpu, lib, a.size, a.samples);
   progress.advance();
-  lut::LutCheck check = lut::checkLut(generated.table, a.checkGrid, true, &progress);
+  lut::LutCheck check = lut::checkLut(lib, generated.table, a.checkGrid, true, &progress);
   progress.finish();
   const bool layerMessages = reportLayerMessages(*gpu);
   const bool ok = check.passed() && !layerMessages;

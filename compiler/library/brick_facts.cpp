@@ -102,6 +102,49 @@ void LibraryLoader::readDistributionEnergy(JsonFields& f, const std::string& ptr
         {(*ids)[i], b.energy.lobe, "energy.visibility of '" + b.id + "'", f.valueAt(JsonFields::element(vptr, i))});
 }
 
+// The kernels' roles, each with the slot whose signature the kernel calls it with.
+const std::vector<KernelRole>& brickKernelRoles() {
+  static const std::vector<KernelRole> v{
+      {"hammersley", "hammersley", "the DFG LUT's Hammersley estimators and the environment prefilter"},
+      {"sample_ggx", "importance_sample", "the DFG LUT's Hammersley estimators and the environment prefilter"},
+      {"dfg_visibility", "specular_v", "the DFG LUT's GGX channels"},
+      {"cloth_dfg_d", "specular_d", "the DFG LUT's cloth channel"},
+      {"cloth_dfg_v", "specular_v", "the DFG LUT's cloth channel"},
+      {"prefilter_d", "specular_d", "the environment prefilter"}};
+  return v;
+}
+
+// "kernel_roles": the library's own kernels (lut/, preview/) find their bricks by these, so a
+// role names a slot (the signature the kernel calls) and is taken by one brick only.
+void LibraryLoader::readKernelRoles(JsonFields& f, const std::string& ptr, const Slot& slot, Brick& b) {
+  if (!f.find(ptr)) return;
+  auto roles = f.strings(ptr);
+  if (!roles) return;
+  std::vector<std::string> names;
+  for (const auto& r : brickKernelRoles()) names.push_back(r.role);
+  for (size_t i = 0; i < roles->size(); ++i) {
+    std::string eptr = JsonFields::element(ptr, i);
+    auto role = oneOf(f, eptr, names);
+    if (!role) continue;
+    const KernelRole& kr = brickKernelRoles()[std::find(names.begin(), names.end(), *role) - names.begin()];
+    SourceLocation at = f.valueAt(eptr);
+    if (kr.slot != slot.name) {
+      f.error("E-INVALID-VALUE", at,
+              "kernel role '" + *role + "' is for a brick of slot '" + kr.slot + "' (" + kr.kernel +
+                  " calls it with that slot's signature), but '" + b.id + "' is of slot '" + slot.name + "'");
+      continue;
+    }
+    auto [it, fresh] = kernelRoleHolders_.emplace(*role, std::make_pair(b.id, at));
+    if (!fresh) {
+      f.error("E-DUPLICATE-NAME", at,
+              "kernel role '" + *role + "' is already taken by brick '" + it->second.first + "' at " +
+                  formatLocation(it->second.second) + ": " + kr.kernel + " calls one brick per role");
+      continue;
+    }
+    b.kernelRoles.push_back(*role);
+  }
+}
+
 void LibraryLoader::checkBrickReferences() {
   for (const auto& r : brickReferences_) {
     const Brick* b = findLoadedBrick(r.id);

@@ -51,6 +51,7 @@ LibraryData LibraryLoader::run() {
   forEachName(f, "/slots", "slot", [&](const std::string& n, const SourceLocation& at) { readSlot(n, at); });
   checkBrickReferences();
   forEachName(f, "/models", "model", [&](const std::string& n, const SourceLocation& at) { readModel(n, at); });
+  checkRoughnessKinds();
   return std::move(data_);
 }
 
@@ -236,12 +237,14 @@ std::vector<SlotParam> LibraryLoader::readSlotParams(JsonFields& f) {
   std::set<std::string> seen;
   for (size_t i = 0; i < f.find("/params")->size(); ++i) {
     std::string ptr = JsonFields::element("/params", i);
-    if (!f.object(ptr, {"name", "type"}, {}, "slot parameter")) continue;
+    if (!f.object(ptr, {"name", "type"}, {"roughness"}, "slot parameter")) continue;
     auto name = identifier(f, ptr + "/name", "parameter name");
     auto type = valueType(f, ptr + "/type", true);
     if (name && !seen.insert(*name).second)
       f.error("E-DUPLICATE-NAME", f.valueAt(ptr + "/name"), "parameter '" + *name + "' is listed twice");
-    if (name && type) params.push_back({*name, *type});
+    if (!name) continue;
+    RoughnessKind roughness = readRoughnessKind(f, ptr, *name, type);
+    if (type) params.push_back({*name, *type, roughness});
   }
   return params;
 }
@@ -250,7 +253,7 @@ void LibraryLoader::readBrick(JsonFields& f, const std::string& ptr, const Slot&
   const json* idValue = f.find(ptr + "/id");
   std::string what = idValue && idValue->is_string() ? "brick '" + idValue->get<std::string>() + "'" : "brick";
   if (!f.object(ptr, {"id", "name", "function", "file", "citation", "requires", "domain", "tolerance"},
-                {"geometry", "notes", "unstable_variant", "fp16_twin", "energy"}, what))
+                {"geometry", "notes", "unstable_variant", "fp16_twin", "energy", "kernel_roles"}, what))
     return;
   Brick b;
   b.slot = slot.name;
@@ -272,6 +275,7 @@ void LibraryLoader::readBrick(JsonFields& f, const std::string& ptr, const Slot&
   b.tolerance = readTolerance(f, ptr + "/tolerance");
   readFp16Twin(f, ptr + "/fp16_twin", b);
   readBrickEnergy(f, ptr, slot, b);
+  readKernelRoles(f, ptr + "/kernel_roles", slot, b);
   data_.bricks.push_back(std::move(b));
 }
 

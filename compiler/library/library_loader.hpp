@@ -22,7 +22,8 @@ struct LibraryData {
   std::vector<Slot> slots;
   std::vector<Brick> bricks;
   std::vector<ShadingModel> models;
-  std::map<std::string, std::string> sources;  // relative file -> text
+  std::map<std::string, RoughnessKind> roughnessKinds;  // input name -> its kind (not None)
+  std::map<std::string, std::string> sources;           // relative file -> text
 };
 
 // The whole file (core/input_file.hpp, at most a library file's limit), or nullopt when it
@@ -71,6 +72,9 @@ class LibraryLoader {
   void readBrickEnergy(JsonFields& f, const std::string& brickPtr, const Slot& slot, Brick& b);
   void readDistributionEnergy(JsonFields& f, const std::string& ptr, Brick& b);
   std::optional<std::string> oneOf(JsonFields& f, const std::string& ptr, const std::vector<std::string>& allowed);
+  void readKernelRoles(JsonFields& f, const std::string& ptr, const Slot& slot, Brick& b);
+  // Kernel role -> the brick that took it first, and where.
+  std::map<std::string, std::pair<std::string, SourceLocation>> kernelRoleHolders_;
   // Brick ids named by other bricks' facts, checked once every slot is read (a fact may
   // name a brick of a slot listed later).
   void checkBrickReferences();
@@ -89,6 +93,17 @@ class LibraryLoader {
     SourceLocation at;
   };
   std::vector<EnergyPair> energyPairs_;
+  // "roughness" of a float slot parameter or model input (RoughnessKind None when absent),
+  // recorded for every one so that checkRoughnessKinds can hold inputs of one name to one kind.
+  RoughnessKind readRoughnessKind(JsonFields& f, const std::string& inputPtr, const std::string& name,
+                                  std::optional<ValueType> type);
+  void checkRoughnessKinds();
+  struct RoughnessDeclaration {
+    std::string name;
+    RoughnessKind kind;
+    SourceLocation at;  // the "roughness" value, or the input's object where it has none
+  };
+  std::vector<RoughnessDeclaration> roughnessDeclarations_;
 
   // --- models (library_models.cpp) ----------------------------------------------------
   void readModel(const std::string& name, const SourceLocation& listedAt);

@@ -245,7 +245,8 @@ std::vector<ModelInput> LibraryLoader::readModelInputs(JsonFields& f, const Shad
   std::set<std::string> seen;
   for (size_t i = 0; i < f.find("/inputs")->size(); ++i) {
     std::string ptr = JsonFields::element("/inputs", i);
-    if (!f.object(ptr, {"name", "type", "default", "range", "description"}, {"feature", "neutral"}, "model input"))
+    if (!f.object(ptr, {"name", "type", "default", "range", "description"}, {"feature", "neutral", "roughness"},
+                  "model input"))
       continue;
     ModelInput in;
     auto name = identifier(f, ptr + "/name", "input name");
@@ -266,6 +267,7 @@ std::vector<ModelInput> LibraryLoader::readModelInputs(JsonFields& f, const Shad
       f.error("E-DUPLICATE-NAME", f.valueAt(ptr + "/name"), "input '" + *name + "' is listed twice");
       continue;
     }
+    if (name) in.roughness = readRoughnessKind(f, ptr, *name, type);
     if (!name || !type || !r || !value) continue;
     in.name = *name;
     in.type = *type;

@@ -51,6 +51,7 @@ ShaderLibrary ShaderLibrary::load(const fs::path& root) {
   lib.slots_ = std::move(data.slots);
   lib.bricks_ = std::move(data.bricks);
   lib.models_ = std::move(data.models);
+  lib.roughnessKinds_ = std::move(data.roughnessKinds);
   // Every GLSL file was read during validation; keep it so source() rarely touches disk.
   lib.sources_ = std::move(data.sources);
   return lib;
@@ -112,6 +113,17 @@ std::vector<std::string> ShaderLibrary::bricksOfSlot(const std::string& slot) co
   for (const auto& b : bricks_)
     if (b.slot == slot) ids.push_back(b.id);
   return ids;
+}
+
+const Brick* ShaderLibrary::brickForKernelRole(const std::string& role) const {
+  for (const auto& b : bricks_)
+    if (std::find(b.kernelRoles.begin(), b.kernelRoles.end(), role) != b.kernelRoles.end()) return &b;
+  return nullptr;
+}
+
+RoughnessKind ShaderLibrary::roughnessKind(const std::string& inputName) const {
+  auto it = roughnessKinds_.find(inputName);
+  return it == roughnessKinds_.end() ? RoughnessKind::None : it->second;
 }
 
 const std::string& ShaderLibrary::source(const std::string& relativeFile) const {

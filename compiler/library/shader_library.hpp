@@ -11,9 +11,16 @@
 
 namespace mb {
 
+// What kind of roughness an input is (slot.json params' and model inputs' "roughness"): at
+// fp16 such an input starts at Filament's floor (validate/precision_domain.hpp). Probes name
+// their inputs, so the kind belongs to the name: every input of one name says the same.
+enum class RoughnessKind { None, Perceptual, Alpha };
+const std::vector<std::string>& roughnessKindNames();  // perceptual, alpha
+
 struct SlotParam {
   std::string name;
   ValueType type;
+  RoughnessKind roughness = RoughnessKind::None;
 };
 
 // A role in a lobe. All bricks of a slot share `returns` and `params`.
@@ -94,7 +101,20 @@ struct Brick {
   // permutations (emit/precision.hpp brickForPrecision), or empty when the brick is kept.
   std::string fp16Twin;
   BrickEnergy energy;  // manifest "energy"; meaningful when the slot has an energyRole
+  // Manifest "kernel_roles": the parts the brick plays in the library's own kernels (the DFG
+  // LUT's, the environment prefilter's), which look their bricks up by role
+  // (ShaderLibrary::brickForKernelRole), not by id.
+  std::vector<std::string> kernelRoles;
 };
+
+// A role of brickKernelRoles(): the kernel that calls it, and the slot whose signature it
+// calls it with (a brick of another slot cannot take the role).
+struct KernelRole {
+  std::string role;
+  std::string slot;
+  std::string kernel;
+};
+const std::vector<KernelRole>& brickKernelRoles();
 
 // Shared GLSL that is not a brick (common helpers).
 struct Unit {
@@ -110,6 +130,7 @@ struct ModelInput {
   std::string description;
   std::string feature;          // non-empty: exists only when this feature is enabled
   std::vector<double> neutral;  // value at which the feature changes nothing (or empty)
+  RoughnessKind roughness = RoughnessKind::None;
 };
 
 // One brick call of a skeleton (docs/models.md "Roles"): MB_SLOT_<role>, filled by a brick
@@ -187,6 +208,12 @@ class ShaderLibrary {
   const Unit* findUnit(const std::string& id) const;
   std::vector<std::string> brickIds() const;
   std::vector<std::string> bricksOfSlot(const std::string& slot) const;
+  // The kind of the slot parameters and model inputs called `inputName` (None for any other
+  // name; the loader checks that inputs of one name agree).
+  RoughnessKind roughnessKind(const std::string& inputName) const;
+  // The brick that takes a kernel role (brickKernelRoles), or nullptr.
+  const Brick* brickForKernelRole(const std::string& role) const;
+  const std::map<std::string, RoughnessKind>& roughnessKinds() const { return roughnessKinds_; }
 
   // Reads a file under the root (cached). Throws DiagnosticError if missing.
   const std::string& source(const std::string& relativeFile) const;
@@ -199,6 +226,7 @@ class ShaderLibrary {
   std::vector<Brick> bricks_;
   std::vector<ShadingModel> models_;
   std::vector<Unit> units_;
+  std::map<std::string, RoughnessKind> roughnessKinds_;  // only inputs with a kind
   mutable std::map<std::string, std::string> sources_;
 };
 

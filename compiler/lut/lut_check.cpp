@@ -30,11 +30,12 @@ std::vector<uint32_t> checkIndices(uint32_t size, uint32_t grid) {
   return idx;
 }
 
-LutCheck checkLut(const LutTable& gpu, uint32_t grid, bool withQuadrature, ProgressSink* progress) {
+LutCheck checkLut(const ShaderLibrary& lib, const LutTable& gpu, uint32_t grid, bool withQuadrature,
+                  ProgressSink* progress) {
   auto t0 = std::chrono::steady_clock::now();
   const bool exactJudged = gpu.samples == 0;
   withQuadrature = withQuadrature || exactJudged;
-  const SameSum sameSum;
+  const SameSum sameSum(lutBricks(lib));
   const std::vector<uint32_t> axis = checkIndices(gpu.size, grid);
   std::vector<uint64_t> texels;
   for (uint32_t j : axis)

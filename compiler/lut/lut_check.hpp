@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/progress_sink.hpp"
+#include "library/shader_library.hpp"
 #include "lut/dfg_lut.hpp"
 
 namespace mb::lut {
@@ -44,7 +45,9 @@ struct LutCheck {
 // indices spread evenly from 0 to size - 1 (both ends included).
 std::vector<uint32_t> checkIndices(uint32_t size, uint32_t grid);
 
-// Runs the CPU side on the texels of checkIndices() x checkIndices(), on every core.
-LutCheck checkLut(const LutTable& gpu, uint32_t grid, bool withQuadrature, ProgressSink* progress = nullptr);
+// Runs the CPU side on the texels of checkIndices() x checkIndices(), on every core: the same
+// sum of the library's lutBricks and, when asked, the quadrature.
+LutCheck checkLut(const ShaderLibrary& lib, const LutTable& gpu, uint32_t grid, bool withQuadrature,
+                  ProgressSink* progress = nullptr);
 
 }  // namespace mb::lut

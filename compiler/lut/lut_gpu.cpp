@@ -6,11 +6,10 @@
 
 namespace mb::lut {
 
-GpuLut generateDfgLutOnGpu(harness::VulkanHarness& gpu, const ShaderLibrary& lib, uint32_t size, uint32_t samples,
-                           const LutBricks& bricks) {
+GpuLut generateDfgLutOnGpu(harness::VulkanHarness& gpu, const ShaderLibrary& lib, uint32_t size, uint32_t samples) {
   GpuLut out;
   auto t0 = std::chrono::steady_clock::now();
-  EmittedShader shader = samples == 0 ? emitDfgQuadratureKernel(lib, bricks) : emitDfgLutKernel(lib, samples, bricks);
+  EmittedShader shader = samples == 0 ? emitDfgQuadratureKernel(lib) : emitDfgLutKernel(lib, samples);
   CompileResult compiled = compileComputeGlsl(shader.glsl, shader.fileName);
   out.compileMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   out.spirvInstructions = spirvInstructionCount(compiled.spirv);

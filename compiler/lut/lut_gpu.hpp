@@ -24,7 +24,6 @@ struct GpuLut {
 
 // samples == 0: the deterministic quadrature kernel (the default of `matbricks lut`);
 // samples > 0: Filament's Hammersley estimators with that many points per texel.
-GpuLut generateDfgLutOnGpu(harness::VulkanHarness& gpu, const ShaderLibrary& lib, uint32_t size, uint32_t samples,
-                           const LutBricks& bricks = {});
+GpuLut generateDfgLutOnGpu(harness::VulkanHarness& gpu, const ShaderLibrary& lib, uint32_t size, uint32_t samples);
 
 }  // namespace mb::lut

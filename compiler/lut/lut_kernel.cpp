@@ -63,6 +63,19 @@ void setKernelLayout(EmittedShader& out) {
 
 }  // namespace
 
+LutBricks lutBricks(const ShaderLibrary& lib) {
+  auto byRole = [&](const char* role) -> std::string {
+    if (const Brick* b = lib.brickForKernelRole(role)) return b->id;
+    throw DiagnosticError({{Severity::Error,
+                            "E-UNKNOWN-BRICK",
+                            {"shaderlib/manifest.json", 0, 0},
+                            std::string("the DFG LUT kernel needs a brick with kernel role '") + role + "'",
+                            ""}});
+  };
+  return {byRole("hammersley"), byRole("sample_ggx"), byRole("dfg_visibility"), byRole("cloth_dfg_d"),
+          byRole("cloth_dfg_v")};
+}
+
 namespace {
 
 // Nodes and weights of a rule on [0, 1] (Int_0^1 f ~ sum w_k f(s_k)).
@@ -200,7 +213,8 @@ std::array<double, 3> evaluateQuadratureRule(const QuadratureRule& rule, double 
   return r;
 }
 
-EmittedShader emitDfgQuadratureKernel(const ShaderLibrary& lib, const LutBricks& bricks, const QuadratureRule& rule) {
+EmittedShader emitDfgQuadratureKernel(const ShaderLibrary& lib, const QuadratureRule& rule) {
+  const LutBricks bricks = lutBricks(lib);
   EmittedShader out;
   out.key = "lut.dfg.quadrature";
   out.fileName = out.key + ".glsl";
@@ -357,7 +371,8 @@ EmittedShader emitDfgQuadratureKernel(const ShaderLibrary& lib, const LutBricks&
   return out;
 }
 
-EmittedShader emitDfgLutKernel(const ShaderLibrary& lib, uint32_t samples, const LutBricks& bricks) {
+EmittedShader emitDfgLutKernel(const ShaderLibrary& lib, uint32_t samples) {
+  const LutBricks bricks = lutBricks(lib);
   EmittedShader out;
   out.key = "lut.dfg." + std::to_string(samples);
   out.fileName = out.key + ".glsl";

@@ -17,13 +17,18 @@ namespace mb::lut {
 // The bricks the kernel is built from, by role. The CPU same-sum evaluates the registered
 // double references of exactly these ids (lut_reference.cpp).
 struct LutBricks {
-  std::string hammersley = "hammersley_bitreverse";
-  std::string sampleGgx = "importance_sample_ggx";
-  std::string visibility = "v_smith_ggx_correlated";
-  std::string clothD = "d_charlie";
-  std::string clothV = "v_ashikhmin";
+  std::string hammersley;
+  std::string sampleGgx;
+  std::string visibility;
+  std::string clothD;
+  std::string clothV;
   std::vector<std::string> all() const { return {hammersley, sampleGgx, visibility, clothD, clothV}; }
 };
+
+// The library's bricks of the kernel roles (slot.json "kernel_roles", docs/formats.md):
+// hammersley, sample_ggx, dfg_visibility, cloth_dfg_d, cloth_dfg_v. Throws DiagnosticError
+// (E-UNKNOWN-BRICK) when no brick takes one of them.
+LutBricks lutBricks(const ShaderLibrary& lib);
 
 // The deterministic quadrature (docs/lut.md "The quadrature kernel"; the same structure as the
 // adaptive references ref::dfgIntegrals and ref::clothDfgIntegral, with fixed nodes): outer
@@ -65,12 +70,12 @@ struct QuadratureRule {
 std::array<double, 3> evaluateQuadratureRule(const QuadratureRule& rule, double NoV, double perceptualRoughness,
                                              long* evaluations = nullptr);
 
-// Throws DiagnosticError (E-UNKNOWN-BRICK) when the library lacks one of the bricks.
-EmittedShader emitDfgQuadratureKernel(const ShaderLibrary& lib, const LutBricks& bricks = {},
-                                      const QuadratureRule& rule = {});
+// From the library's lutBricks. Throws DiagnosticError (E-UNKNOWN-BRICK) when the library
+// lacks one of the bricks.
+EmittedShader emitDfgQuadratureKernel(const ShaderLibrary& lib, const QuadratureRule& rule = {});
 
 // Filament's Hammersley estimators (the table before the quadrature; `lut --estimator
 // hammersley`). Throws DiagnosticError (E-UNKNOWN-BRICK) when the library lacks one of the bricks.
-EmittedShader emitDfgLutKernel(const ShaderLibrary& lib, uint32_t samples, const LutBricks& bricks = {});
+EmittedShader emitDfgLutKernel(const ShaderLibrary& lib, uint32_t samples);
 
 }  // namespace mb::lut

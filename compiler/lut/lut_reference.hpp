@@ -35,7 +35,7 @@ inline constexpr double kViewDirectionError = 0x1p-21;
 class SameSum {
  public:
   // Throws DiagnosticError (E-NO-REFERENCE) when a brick has no registered reference.
-  explicit SameSum(const LutBricks& bricks = {});
+  explicit SameSum(const LutBricks& bricks);
   // The kernel's sum for the fp32 record (NoV, perceptual roughness) with `samples` points.
   TexelSum evaluate(float NoV, float perceptualRoughness, uint32_t samples) const;
 

@@ -12,16 +12,13 @@
 namespace mb::preview {
 namespace {
 
-constexpr const char* kHammersley = "hammersley_bitreverse";
-constexpr const char* kSampleGgx = "importance_sample_ggx";
-constexpr const char* kGgx = "d_ggx";
-
-const Brick& requireBrick(const ShaderLibrary& lib, const std::string& id) {
-  if (const Brick* b = lib.findBrick(id)) return *b;
+// The bricks of the kernel roles (slot.json "kernel_roles", docs/formats.md) it is built from.
+const Brick& requireBrick(const ShaderLibrary& lib, const std::string& role) {
+  if (const Brick* b = lib.brickForKernelRole(role)) return *b;
   throw DiagnosticError({{Severity::Error,
                           "E-UNKNOWN-BRICK",
                           {"shaderlib/manifest.json", 0, 0},
-                          "the prefilter kernel needs brick '" + id + "'",
+                          "the prefilter kernel needs a brick with kernel role '" + role + "'",
                           ""}});
 }
 
@@ -38,9 +35,9 @@ uint32_t peakSamples(uint32_t samples) { return std::max(1u, samples / 4); }
 double levelRoughness(uint32_t level, uint32_t maxMip) { return maxMip == 0 ? 0.0 : double(level) / maxMip; }
 
 std::string prefilterKernelGlsl(const ShaderLibrary& lib, const std::string& name, uint32_t samples) {
-  const Brick& hammersley = requireBrick(lib, kHammersley);
-  const Brick& sampleGgx = requireBrick(lib, kSampleGgx);
-  const Brick& ggx = requireBrick(lib, kGgx);
+  const Brick& hammersley = requireBrick(lib, "hammersley");
+  const Brick& sampleGgx = requireBrick(lib, "sample_ggx");
+  const Brick& ggx = requireBrick(lib, "prefilter_d");
   GlslWriter w("environment.prefilter." + name + ".glsl");
   w.line("#version 450");
   w.line("#extension GL_GOOGLE_cpp_style_line_directive : require");

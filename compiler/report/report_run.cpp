@@ -125,7 +125,7 @@ ReportData runReport(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
     t0 = Clock::now();
     LutSection l;
     l.generated = lut::generateDfgLutOnGpu(gpu, lib, o.lutSize, 0);
-    l.check = lut::checkLut(l.generated.table, o.lutCheckGrid, true, progress);
+    l.check = lut::checkLut(lib, l.generated.table, o.lutCheckGrid, true, progress);
     r.lut = std::move(l);
     r.times.push_back({"DFG LUT (GPU + check)", secondsSince(t0)});
   }

@@ -68,9 +68,8 @@ struct Candidate {
   bool inDomain = true;
 };
 
-std::vector<Candidate> floatCandidates(const std::string& name, const Range& r) {
+std::vector<Candidate> floatCandidates(RoughnessKind kind, const Range& r) {
   std::vector<double> values{r.lo, r.hi, 0.5 * (r.lo + r.hi), 0.0, 1e-4, 1.0};
-  RoughnessKind kind = roughnessKind(name);
   if (kind != RoughnessKind::None) {
     values.push_back(roughnessFloor(kind, ShaderPrecision::Fp32));
     values.push_back(roughnessFloor(kind, ShaderPrecision::Fp16));
@@ -162,7 +161,10 @@ StressInputs generateStressInputs(const ProbeLayout& layout, const SampleDomain&
     Range r = it != domain.ranges.end() ? it->second : Range{0.0, 1.0};
     params.push_back(&in);
     int n = componentCount(in.type);
-    candidates.push_back(n == 1 ? floatCandidates(in.name, r) : vectorCandidates(n, r));
+    auto kind = domain.roughness.find(in.name);
+    candidates.push_back(n == 1
+                             ? floatCandidates(kind != domain.roughness.end() ? kind->second : RoughnessKind::None, r)
+                             : vectorCandidates(n, r));
   }
   const auto combos = combinations(candidates);
 

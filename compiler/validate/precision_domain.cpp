@@ -4,12 +4,6 @@
 
 namespace mb {
 
-RoughnessKind roughnessKind(const std::string& inputName) {
-  if (inputName == "alpha" || inputName == "at" || inputName == "ab") return RoughnessKind::Alpha;
-  if (inputName == "perceptualRoughness" || inputName == "roughness") return RoughnessKind::Perceptual;
-  return RoughnessKind::None;
-}
-
 double roughnessFloor(RoughnessKind kind, ShaderPrecision p) {
   switch (kind) {
     case RoughnessKind::Alpha:
@@ -22,14 +16,15 @@ double roughnessFloor(RoughnessKind kind, ShaderPrecision p) {
   return 0.0;
 }
 
-SampleDomain domainAtPrecision(const SampleDomain& declared, ShaderPrecision p) {
+SampleDomain domainAtPrecision(const ShaderLibrary& lib, const SampleDomain& declared, ShaderPrecision p) {
   SampleDomain d = declared;
+  d.roughness = lib.roughnessKinds();
   if (p == ShaderPrecision::Fp32) return d;
   // An fp16 probe converts its inputs to half: beyond 65504 they would arrive as Inf, so
   // ranges (e.g. a light's illuminance) stop at the largest finite half.
   const double kHalfMax = 65504.0;
   for (auto& [name, range] : d.ranges) {
-    double floor = roughnessFloor(roughnessKind(name), p);
+    double floor = roughnessFloor(lib.roughnessKind(name), p);
     if (range.hi > floor) range.lo = std::max(range.lo, floor);
     range.lo = std::max(range.lo, -kHalfMax);
     range.hi = std::min(range.hi, kHalfMax);

@@ -7,20 +7,22 @@
 #include <string>
 
 #include "emit/precision.hpp"
+#include "library/shader_library.hpp"
 #include "validate/sampler.hpp"
 
 namespace mb {
 
-enum class RoughnessKind { None, Perceptual, Alpha };
-
-// By input name: "alpha", "at", "ab" (anisotropic alphas) are linear roughness alpha;
-// "perceptualRoughness" and "roughness" (the standard model's input) are perceptual.
-RoughnessKind roughnessKind(const std::string& inputName);
+// Which inputs are roughness-like is library data (ShaderLibrary::roughnessKind: a slot
+// parameter's or model input's "roughness", docs/formats.md): "alpha", "at", "ab" (the
+// anisotropic alphas) are linear roughness alpha; "perceptualRoughness" and "roughness" (the
+// standard model's input) are perceptual.
+//
 // The smallest value a roughness-like input takes at this precision (0 for other inputs).
 double roughnessFloor(RoughnessKind kind, ShaderPrecision p);
 
 // `declared` with every roughness-like range raised to start at roughnessFloor (ranges
-// already above it are kept; a range entirely below it is left as declared).
-SampleDomain domainAtPrecision(const SampleDomain& declared, ShaderPrecision p);
+// already above it are kept; a range entirely below it is left as declared), and the
+// library's roughness kinds in `roughness`.
+SampleDomain domainAtPrecision(const ShaderLibrary& lib, const SampleDomain& declared, ShaderPrecision p);
 
 }  // namespace mb

@@ -131,7 +131,7 @@ ProbeProgram buildBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
   p.tolerance = precision == ShaderPrecision::Fp16 ? fp16Tolerance() : brick.tolerance;
   p.domain.ranges = brick.domain;
   p.domain.geometry = brick.geometry;
-  p.domain = domainAtPrecision(p.domain, precision);
+  p.domain = domainAtPrecision(lib, p.domain, precision);
   return p;
 }
 
@@ -292,7 +292,7 @@ ProbeProgram describePermutationProbe(const ShaderLibrary& lib, const Permutatio
     if (in.name != "illuminance") p.domain.ranges[in.name] = in.range;
   for (const auto& prm : mat.params)
     if (!prm.constant) p.domain.ranges[prm.name] = prm.range;
-  p.domain = domainAtPrecision(p.domain, p.precision);
+  p.domain = domainAtPrecision(lib, p.domain, p.precision);
   std::map<std::string, std::string> bricks;
   for (const auto& [role, id] : boundRoles(lib, perm)) bricks[role] = id;
 

@@ -17,6 +17,9 @@ namespace mb {
 struct SampleDomain {
   std::map<std::string, Range> ranges;  // per non-geometry input
   GeometryDomain geometry;
+  // The library's roughness inputs by name (ShaderLibrary::roughnessKinds), set by
+  // domainAtPrecision: stress adds their fp32 and fp16 floors to its candidates.
+  std::map<std::string, RoughnessKind> roughness;
 };
 
 std::vector<float> generateSamples(const ProbeLayout& layout, const SampleDomain& domain, uint64_t count,
