@@ -7,6 +7,9 @@
 # WebDAV server its tests run against (docs/targets.md "Remote cache").
 # libstb-dev: PNG writing and reading (stb_image_write, stb_image) for `matbricks preview`
 # and `matbricks report` (docs/preview.md, docs/report.md).
+# libegl-dev libgles-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri: OpenGL 4.5 and OpenGL ES 3.1
+# on llvmpipe through EGL's surfaceless platform, which runs the GLSL 450 and ESSL 3.10 targets
+# (`validate --target glsl450|essl310`, docs/targets.md "Executed").
 # chromium: the headless browser the report's CTest test opens it in (docs/report.md).
 set -euo pipefail
 
@@ -19,6 +22,7 @@ PACKAGES=(
   clang libclang-rt-14-dev clang-format
   libcurl4-openssl-dev nginx-light
   libstb-dev chromium
+  libegl-dev libgles-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
 )
 
 missing=()

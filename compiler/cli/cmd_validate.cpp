@@ -4,7 +4,9 @@
 
 #include "cli/cli_common.hpp"
 #include "cli/progress.hpp"
+#include "glrun/gl_compute.hpp"
 #include "permute/axes.hpp"
+#include "validate/probe_language.hpp"
 #include "validate/validation.hpp"
 
 namespace mb::cli {
@@ -21,6 +23,7 @@ struct ValidateArgs {
   bool quiet = false;
   std::string precision = "fp32";
   std::string fp16 = "emulated";          // Fp16Mode
+  std::string target = "spirv";           // the language executed (validate/probe_language.hpp)
   std::vector<std::string> lights;        // empty: every light type the model shades
   std::vector<std::string> environments;  // empty: every environment mode it supports
 };
@@ -46,7 +49,16 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
     }
     bricks.push_back(b);
   }
-  auto gpu = openDevice(g);
+  const ProbeLanguage language = *parseProbeLanguage(a.target);
+  // spirv and hlsl run on Vulkan, glsl450 and essl310 on OpenGL (4.5 core, ES 3.1) through EGL.
+  std::unique_ptr<harness::VulkanHarness> gpu;
+  std::unique_ptr<gl::GlCompute> glContext;
+  if (runsOnVulkan(language))
+    gpu = openDevice(g);
+  else
+    glContext =
+        std::make_unique<gl::GlCompute>(language == ProbeLanguage::Essl310 ? gl::GlApi::Es31 : gl::GlApi::Gl45Core);
+  const ProbeDevices devices{gpu.get(), glContext.get()};
   const ShaderPrecision precision = *parsePrecision(a.precision);
 
   std::vector<Permutation> perms;
@@ -64,17 +76,19 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
 
   std::vector<ValidationRecord> records, unstableRecords;
   for (const Brick* b : bricks) {
-    records.push_back(validateProbe(*gpu, buildBrickProbe(lib, *b, false, precision), "brick", a.samples, a.seed));
+    records.push_back(
+        validateProbe(devices, buildBrickProbeIn(lib, *b, false, precision, language), "brick", a.samples, a.seed));
     progress.advance();
     if (a.unstable && !b->unstableFile.empty()) {
       // Expected to fail: it shows the problem the shipped form fixes. Reported, not judged.
-      unstableRecords.push_back(
-          validateProbe(*gpu, buildBrickProbe(lib, *b, true, precision), "unstable_variant", a.samples, a.seed));
+      unstableRecords.push_back(validateProbe(devices, buildBrickProbeIn(lib, *b, true, precision, language),
+                                              "unstable_variant", a.samples, a.seed));
       progress.advance();
     }
   }
   for (const auto& perm : perms) {
-    records.push_back(validateProbe(*gpu, buildPermutationProbe(lib, perm), "permutation", a.samples, a.seed));
+    records.push_back(
+        validateProbe(devices, buildPermutationProbeIn(lib, perm, language), "permutation", a.samples, a.seed));
     progress.advance();
   }
   progress.finish();
@@ -85,11 +99,17 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
     // -q: nothing on success; the exit code says it.
   } else if (a.json) {
     nlohmann::json out = nlohmann::json::array();
-    for (const auto& r : records) out.push_back(toJson(r));
-    for (const auto& r : unstableRecords) out.push_back(toJson(r));
+    for (const auto* list : {&records, &unstableRecords})
+      for (const auto& r : *list) {
+        out.push_back(toJson(r));
+        // Records of the default target are as before; another target's say which it is.
+        if (language != ProbeLanguage::Spirv) out.back()["target"] = a.target;
+      }
     std::cout << out.dump(2) << "\n";
   } else {
-    std::cout << "device: " << gpu->deviceName() << "\n" << formatValidationTable(records);
+    std::cout << "device: " << (gpu ? gpu->deviceName() : glContext->deviceName())
+              << (language == ProbeLanguage::Spirv ? "" : " (target " + a.target + ")") << "\n"
+              << formatValidationTable(records);
     for (const auto& r : records)
       if (!r.passed()) std::cout << "worst input of " << r.key << ": " << r.worstInput << "\n";
     if (!unstableRecords.empty()) {
@@ -97,7 +117,7 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
                 << formatValidationTable(unstableRecords);
     }
   }
-  bool layerMessages = reportLayerMessages(*gpu);
+  bool layerMessages = gpu && reportLayerMessages(*gpu);
   return allPassed && !layerMessages ? kExitOk : kExitCheckFailed;
 }
 
@@ -126,6 +146,10 @@ Command addValidateCommand(CLI::App& app, GlobalOptions& g) {
          "--fp16", args->fp16,
          "How fp16 kernels compute: emulated (default; the least precise conforming device: half rounding, flushed denormals, division by the reciprocal, transcendentals at their spec error bounds) or driver (the device's own half arithmetic; needs shaderFloat16). docs/fp16.md")
       ->check(CLI::IsMember({"emulated", "driver"}));
+  cmd->add_option("--target", args->target,
+                  "Language the probes run in: spirv (default; Vulkan), hlsl (glslang's HLSL front end, then Vulkan), "
+                  "glsl450 or essl310 (Mesa's GLSL compiler, OpenGL 4.5 core / ES 3.1 through EGL). docs/targets.md")
+      ->check(CLI::IsMember(executableLanguages()));
   cmd->add_option("--lights", args->lights,
                   "Light types shaded together in each material permutation (default: all the model shades)")
       ->delimiter(',')

@@ -4,6 +4,7 @@
 #include "cli/cli_common.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
+#include "glrun/gl_compute.hpp"
 
 using namespace mb;
 using namespace mb::cli;
@@ -58,6 +59,9 @@ int main(int argc, char** argv) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitUsage;
   } catch (const harness::HarnessError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitDeviceError;
+  } catch (const gl::GlError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitDeviceError;
   } catch (const std::exception& e) {

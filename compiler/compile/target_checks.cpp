@@ -8,6 +8,7 @@
 #include <spirv-tools/libspirv.h>
 
 #include "compile/glsl_compiler.hpp"
+#include "compile/hlsl_spirv.hpp"
 
 namespace mb {
 namespace {
@@ -37,7 +38,8 @@ struct Reparse {
   EShLanguage stage = EShLangCompute;
 };
 
-std::string reparse(const std::string& text, const Reparse& r) {
+// `spirvOut`, when given, receives the generated module (valid when "" is returned).
+std::string reparse(const std::string& text, const Reparse& r, std::vector<uint32_t>* spirvOut = nullptr) {
   ensureGlslangInitialized();
   glslang::TShader shader(r.stage);
   const char* str = text.c_str();
@@ -60,7 +62,9 @@ std::string reparse(const std::string& text, const Reparse& r) {
   glslang::SpvOptions options;
   options.disableOptimizer = true;
   glslang::GlslangToSpv(*program.getIntermediate(r.stage), spirv, &logger, &options);
-  return validate(spirv, r.validateEnv);
+  std::string problem = validate(spirv, r.validateEnv);
+  if (spirvOut) *spirvOut = std::move(spirv);
+  return problem;
 }
 
 EShLanguage stageOf(bool fragment) { return fragment ? EShLangFragment : EShLangCompute; }
@@ -79,10 +83,26 @@ std::string checkGlsl(const std::string& source, bool es, bool fragment) {
                   glslang::EShTargetSpv_1_0, es ? 310 : 450, EShMsgSpvRules, SPV_ENV_OPENGL_4_5, stageOf(fragment)});
 }
 
-std::string checkHlsl(const std::string& source, bool fragment) {
+namespace {
+
+Reparse hlslReparse(bool fragment) {
   const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | EShMsgReadHlsl);
-  return reparse(source, {glslang::EShSourceHlsl, glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1,
-                          glslang::EShTargetSpv_1_3, 100, messages, SPV_ENV_VULKAN_1_1, stageOf(fragment)});
+  return {glslang::EShSourceHlsl,
+          glslang::EShClientVulkan,
+          glslang::EShTargetVulkan_1_1,
+          glslang::EShTargetSpv_1_3,
+          100,
+          messages,
+          SPV_ENV_VULKAN_1_1,
+          stageOf(fragment)};
+}
+
+}  // namespace
+
+std::string checkHlsl(const std::string& source, bool fragment) { return reparse(source, hlslReparse(fragment)); }
+
+std::string compileHlsl(const std::string& source, std::vector<uint32_t>& spirv, bool fragment) {
+  return reparse(source, hlslReparse(fragment), &spirv);
 }
 
 std::string checkMsl(const std::string& source, const SpvcModule& module) {

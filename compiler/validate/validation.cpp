@@ -5,10 +5,15 @@
 #include <cstdio>
 #include <sstream>
 
-namespace mb {
+#include "validate/probe_language.hpp"
 
-ValidationRecord validateProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, const std::string& kind,
-                               uint64_t samples, uint64_t seed, const ReferenceOptions& options) {
+namespace mb {
+namespace {
+
+// validateProbe with the GPU half given: `runOnDevice(inputs)` runs the kernel on the records.
+template <typename RunOnDevice>
+ValidationRecord validateWith(const RunOnDevice& runOnDevice, const ProbeProgram& program, const std::string& kind,
+                              uint64_t samples, uint64_t seed, const ReferenceOptions& options) {
   ValidationRecord rec;
   rec.key = program.shader.key;
   rec.kind = kind;
@@ -17,7 +22,7 @@ ValidationRecord validateProbe(harness::VulkanHarness& gpu, const ProbeProgram& 
   rec.compileMs = program.compileMs;
   rec.compileCached = program.compileCacheHit;
   rec.spirvInstructions = spirvInstructionCount(program.compiled.spirv);
-  ProbeRun run = runProbeOnGpu(gpu, program, generateSamples(program.shader.layout, program.domain, samples, seed));
+  ProbeRun run = runOnDevice(generateSamples(program.shader.layout, program.domain, samples, seed));
   rec.gpuMs = run.gpuMs;
   rec.firstDispatchMs = run.firstDispatchMs;
   const auto t0 = std::chrono::steady_clock::now();
@@ -33,6 +38,20 @@ ValidationRecord validateProbe(harness::VulkanHarness& gpu, const ProbeProgram& 
     rec.worstInput = s.str();
   }
   return rec;
+}
+
+}  // namespace
+
+ValidationRecord validateProbe(harness::VulkanHarness& gpu, const ProbeProgram& program, const std::string& kind,
+                               uint64_t samples, uint64_t seed, const ReferenceOptions& options) {
+  return validateWith([&](std::vector<float> inputs) { return runProbeOnGpu(gpu, program, std::move(inputs)); },
+                      program, kind, samples, seed, options);
+}
+
+ValidationRecord validateProbe(const ProbeDevices& devices, const LanguageProbe& probe, const std::string& kind,
+                               uint64_t samples, uint64_t seed, const ReferenceOptions& options) {
+  return validateWith([&](std::vector<float> inputs) { return runProbeOn(devices, probe, std::move(inputs)); },
+                      probe.program, kind, samples, seed, options);
 }
 
 nlohmann::json toJson(const ValidationRecord& r) {
