@@ -210,7 +210,8 @@ TEST_CASE("a list option takes one word per use, never the arguments after it", 
 }
 
 TEST_CASE("every subcommand has --help and usage errors exit 2", "[cli]") {
-  for (const char* sub : {"compile", "validate", "bricks", "eval", "stress", "energy", "lut", "bench", "preview"}) {
+  for (const char* sub :
+       {"compile", "validate", "bricks", "eval", "stress", "energy", "lut", "ltc", "bench", "preview"}) {
     auto r = test::runCli(std::string(sub) + " --help");
     INFO(sub);
     CHECK(r.exitCode == 0);
@@ -221,6 +222,8 @@ TEST_CASE("every subcommand has --help and usage errors exit 2", "[cli]") {
   CHECK(test::runCli("eval --input x.csv").exitCode == 2);
   CHECK(test::runCli("stress --precision fp64").exitCode == 2);
   CHECK(test::runCli("lut --size 0").exitCode == 2);
+  CHECK(test::runCli("ltc --size 1 -o t.json").exitCode == 2);
+  CHECK(test::runCli("ltc --size 8").exitCode == 2);  // no -o
   CHECK(test::runCli("energy --grid huge").exitCode == 2);
   CHECK(test::runCli("bench --repeats 0").exitCode == 2);
 }

@@ -84,6 +84,7 @@ Command addEvalCommand(CLI::App& app, GlobalOptions& g);
 Command addStressCommand(CLI::App& app, GlobalOptions& g);
 Command addBenchCommand(CLI::App& app, GlobalOptions& g);
 Command addLutCommand(CLI::App& app, GlobalOptions& g);
+Command addLtcCommand(CLI::App& app, GlobalOptions& g);
 Command addEnergyCommand(CLI::App& app, GlobalOptions& g);
 Command addVerifyCommand(CLI::App& app, GlobalOptions& g);
 Command addMergeCommand(CLI::App& app, GlobalOptions& g);

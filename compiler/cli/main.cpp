@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
                                 addEvalCommand(app, g)};
   commands.push_back(addBenchCommand(app, g));
   commands.push_back(addLutCommand(app, g));
+  commands.push_back(addLtcCommand(app, g));
   commands.push_back(addEnergyCommand(app, g));
   commands.push_back(addStressCommand(app, g));
   commands.push_back(addVerifyCommand(app, g));

@@ -1,0 +1,102 @@
+#include "ltc/ltc_table.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/diagnostics.hpp"
+#include "core/json_document.hpp"
+
+namespace mb::ltc {
+namespace {
+
+constexpr const char* kFormat = "matbricks-ltc-table";
+constexpr int kVersion = 1;
+constexpr size_t kColumns = 6;  // m00, m02, m20, m22, norm, fresnel
+
+// Nine significant digits print every fp32 value exactly (it reads back to the same float).
+std::string number(float x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(x));
+  return buf;
+}
+
+[[noreturn]] void fail(const JsonDocument& doc, const std::string& pointer, const std::string& message) {
+  throw DiagnosticError({{Severity::Error, "E-LTC-TABLE", doc.valueAt(pointer), message, ""}});
+}
+
+}  // namespace
+
+ref::ltc::Mat3 TableEntry::minv() const {
+  return ref::ltc::Mat3{{{double(m00), 0.0, double(m02)}, {0.0, 1.0, 0.0}, {double(m20), 0.0, double(m22)}}};
+}
+
+TableEntry toTableEntry(const LtcEntry& e) {
+  return {static_cast<float>(e.minv[0][0]), static_cast<float>(e.minv[0][2]), static_cast<float>(e.minv[2][0]),
+          static_cast<float>(e.minv[2][2]), static_cast<float>(e.norm),       static_cast<float>(e.fresnel)};
+}
+
+Table makeTable(uint32_t size, const FitSettings& settings, const std::vector<LtcEntry>& fitted) {
+  Table t;
+  t.size = size;
+  t.settings = settings;
+  for (const auto& e : fitted) t.entries.push_back(toTableEntry(e));
+  return t;
+}
+
+std::string encodeTable(const Table& t, const std::string& command) {
+  std::string s = "{\n";
+  s += "  \"format\": \"" + std::string(kFormat) + "\",\n";
+  s += "  \"version\": " + std::to_string(kVersion) + ",\n";
+  s += "  \"command\": \"" + command + "\",\n";
+  s += "  \"lobe\": \"GGX D (alpha = max(r^2, 1e-4)) x height-correlated Smith V x n.l\",\n";
+  s += "  \"rows\": \"perceptual roughness r = i / (size - 1)\",\n";
+  s += "  \"columns\": \"u = j / (size - 1), n.v = max(1 - u^2, 1e-4)\",\n";
+  s += "  \"entry\": [\"minv00\", \"minv02\", \"minv20\", \"minv22\", \"norm\", \"fresnel\"],\n";
+  s += "  \"size\": " + std::to_string(t.size) + ",\n";
+  s += "  \"fit\": {\"samples\": " + std::to_string(t.settings.samples) +
+       ", \"max_iterations\": " + std::to_string(t.settings.maxIterations) + "},\n";
+  s += "  \"entries\": [\n";
+  for (size_t k = 0; k < t.entries.size(); ++k) {
+    const TableEntry& e = t.entries[k];
+    s += "    [" + number(e.m00) + ", " + number(e.m02) + ", " + number(e.m20) + ", " + number(e.m22) + ", " +
+         number(e.norm) + ", " + number(e.fresnel) + "]";
+    s += k + 1 < t.entries.size() ? ",\n" : "\n";
+  }
+  s += "  ]\n}\n";
+  return s;
+}
+
+Table loadTable(const std::string& path) {
+  const JsonDocument doc = JsonDocument::load(path);
+  const nlohmann::json& j = doc.root();
+  if (!j.is_object() || !j.contains("format") || j["format"] != kFormat)
+    fail(doc, "/format", "not an LTC table (\"format\" must be \"" + std::string(kFormat) + "\")");
+  if (!j.contains("version") || j["version"] != kVersion)
+    fail(doc, "/version", "unsupported LTC table version (this matbricks reads " + std::to_string(kVersion) + ")");
+  if (!j.contains("size") || !j["size"].is_number_unsigned() || j["size"].get<uint64_t>() < 2 ||
+      j["size"].get<uint64_t>() > 1024)
+    fail(doc, "/size", "'size' must be an integer in [2, 1024]");
+  Table t;
+  t.size = j["size"].get<uint32_t>();
+  if (j.contains("fit") && j["fit"].is_object()) {
+    t.settings.samples = j["fit"].value("samples", t.settings.samples);
+    t.settings.maxIterations = j["fit"].value("max_iterations", t.settings.maxIterations);
+  }
+  if (!j.contains("entries") || !j["entries"].is_array() || j["entries"].size() != size_t{t.size} * t.size)
+    fail(doc, "/entries", "'entries' must hold size x size = " + std::to_string(size_t{t.size} * t.size) + " entries");
+  for (size_t k = 0; k < j["entries"].size(); ++k) {
+    const nlohmann::json& row = j["entries"][k];
+    const std::string at = "/entries/" + std::to_string(k);
+    if (!row.is_array() || row.size() != kColumns) fail(doc, at, "an entry must hold 6 numbers");
+    float v[kColumns];
+    for (size_t c = 0; c < kColumns; ++c) {
+      if (!row[c].is_number() || !std::isfinite(row[c].get<double>()))
+        fail(doc, at + "/" + std::to_string(c), "an entry's values must be finite numbers");
+      v[c] = row[c].get<float>();
+    }
+    t.entries.push_back({v[0], v[1], v[2], v[3], v[4], v[5]});
+  }
+  return t;
+}
+
+}  // namespace mb::ltc

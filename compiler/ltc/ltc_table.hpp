@@ -1,0 +1,37 @@
+// The fitted LTC table as a library asset (shaderlib/ltc/ggx.json, docs/models/lights.md
+// "LTC tables"): per entry the inverse matrix M^-1 (its four free elements, with
+// minv[1][1] = 1 and the other elements 0), the lobe's magnitude and its Fresnel part, each
+// rounded to fp32 so that the GPU's texture and the double reference read the same numbers.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ltc/ltc_fit.hpp"
+
+namespace mb::ltc {
+
+struct TableEntry {
+  float m00 = 1, m02 = 0, m20 = 0, m22 = 1;  // M^-1 = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]
+  float norm = 0, fresnel = 0;
+
+  ref::ltc::Mat3 minv() const;
+};
+
+struct Table {
+  uint32_t size = 0;
+  FitSettings settings;
+  std::vector<TableEntry> entries;  // row i (roughness) major, column j (view)
+
+  const TableEntry& at(uint32_t i, uint32_t j) const { return entries[size_t{i} * size + j]; }
+};
+
+TableEntry toTableEntry(const LtcEntry& e);
+Table makeTable(uint32_t size, const FitSettings& settings, const std::vector<LtcEntry>& fitted);
+
+// The file's text (JSON; `command` records how it was made).
+std::string encodeTable(const Table& t, const std::string& command);
+// Reads a table; a malformed file throws DiagnosticError with its file:line:column.
+Table loadTable(const std::string& path);
+
+}  // namespace mb::ltc
