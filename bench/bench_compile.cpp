@@ -392,7 +392,6 @@ json benchBreakdown(const ShaderLibrary& lib, const std::vector<Permutation>& pe
     o.RegisterPerformancePasses();
     for (const char* n : o.GetPassNames()) passes.push_back(n);
   }
-  const std::vector<std::string> crossTargets{"glsl450", "essl310", "hlsl", "msl"};
   StageClock clock, passClock, legacyClock;
   bool passesMatch = true, passesSameCount = true;
   for (int r = 0; r < repeats; ++r) {
@@ -401,7 +400,8 @@ json benchBreakdown(const ShaderLibrary& lib, const std::vector<Permutation>& pe
     for (const auto& p : perms) {
       EmittedShader s = clock.time("emit GLSL", [&] { return emitPermutation(lib, p, false, EmitMode::Engine); });
       const CacheIdentity key = clock.time("cache key (XXH3 over GLSL, brick hashes, versions)", [&] {
-        return ShaderCache::identity(buildCacheKey(lib, s, OptimizationLevel::O2, {"spirv"}), {s.glsl, "", "", ""});
+        return ShaderCache::identity(buildCacheKey(lib, s, OptimizationLevel::O2, {Target::Spirv}),
+                                     {s.glsl, "", "", ""});
       });
       CompileOptions lean;
       lean.optimization = p.precision == "fp32" ? OptimizationLevel::O2 : OptimizationLevel::O0;
@@ -433,12 +433,16 @@ json benchBreakdown(const ShaderLibrary& lib, const std::vector<Permutation>& pe
       legacyClock.add("spirv-val of spirv-opt's module (friendly names on)", l.stages.validateOptimizedMs);
 
       // Cross-compilation to each other target, and its check separately.
-      for (const auto& t : crossTargets) {
-        if (t == "essl310" && p.precision != "fp32") continue;
-        std::string out = clock.time("SPIRV-Cross + check: " + t, [&] { return crossCompile(a.spirv, t, s.fileName); });
-        if (t == "glsl450" || t == "essl310")
-          clock.time("  of which the check: " + t, [&] { return checkGlsl(out, t == "essl310"); });
-        if (t == "hlsl") clock.time("  of which the check: hlsl", [&] { return checkHlsl(out); });
+      for (Target target : allTargets()) {
+        const std::string& t = targetName(target);
+        const TargetInfo& info = targetInfo(target);
+        if (target == Target::Spirv || (!info.float16 && p.precision != "fp32")) continue;
+        std::string out =
+            clock.time("SPIRV-Cross + check: " + t, [&] { return crossCompile(a.spirv, target, s.fileName); });
+        if (info.language == TargetLanguage::Glsl)
+          clock.time("  of which the check: " + t, [&] { return checkGlsl(out, info.es); });
+        if (info.language == TargetLanguage::Hlsl)
+          clock.time("  of which the check: " + t, [&] { return checkHlsl(out); });
       }
 
       // spirv-opt pass by pass, summed per pass name over its occurrences in the recipe.
@@ -493,7 +497,7 @@ json benchBreakdown(const ShaderLibrary& lib, const std::vector<Permutation>& pe
     const double n = double(plan.required.size());
     out["package"] = {{"scene", scene},
                       {"permutations", plan.required.size()},
-                      {"targets", desc.targets},
+                      {"targets", targetNames(desc.targets)},
                       {"build_j1_ms_per_permutation", bench::median(buildMs) / n},
                       {"write_package_ms_per_permutation", bench::median(writeMs) / n}};
   }

@@ -19,7 +19,7 @@ TEST_CASE("output is bit-identical at -j1 and -j4, every target", "[build]") {
   auto perms = test::permutationsOf(mats, {"dir", "point", "sphere"}, "ibl_lut");
   for (const auto& p : test::permutationsOf(mats, {"dir"}, "sh", "fp16")) perms.push_back(p);
   BuildOptions o;
-  o.targets = {"spirv", "glsl450", "hlsl", "msl"};
+  o.targets = {Target::Spirv, Target::Glsl450, Target::Hlsl, Target::Msl};
   o.jobs = 1;
   BuildStats s1, s4;
   auto one = buildPermutations(lib, perms, o, &s1);
@@ -111,7 +111,7 @@ TEST_CASE("a streamed build in small windows writes the same package as one wind
   PackageInputs in;
   in.lib = &lib;
   in.plan = &plan;
-  in.targets = {"spirv", "glsl450", "msl"};
+  in.targets = {Target::Spirv, Target::Glsl450, Target::Msl};
   BuildOptions o;
   o.targets = in.targets;
   o.jobs = 2;

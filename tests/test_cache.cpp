@@ -186,7 +186,7 @@ TEST_CASE("builds through the cache: a warm build hits, a corrupt entry is rebui
   const ShaderLibrary& lib = test::shippedLibrary();
   auto perms = cachePermutations();
   BuildOptions o;
-  o.targets = {"spirv", "glsl450", "hlsl"};
+  o.targets = {Target::Spirv, Target::Glsl450, Target::Hlsl};
   o.cacheDir = test::rootOf(dir);
   o.jobs = 2;
   BuildStats cold, warm, repaired;
@@ -239,7 +239,7 @@ TEST_CASE("two concurrent builds on one cache directory give identical output an
   const ShaderLibrary& lib = test::shippedLibrary();
   auto perms = cachePermutations();
   BuildOptions o;
-  o.targets = {"spirv", "msl"};
+  o.targets = {Target::Spirv, Target::Msl};
   o.cacheDir = test::rootOf(dir);
   o.jobs = 2;
   // Load every brick source first: the library's source cache is filled on first use.
@@ -307,7 +307,7 @@ TEST_CASE("the cache key changes with a brick source, an option or the target li
   fs::copy(test::sourceDir() / "shaderlib", test::rootOf(root), fs::copy_options::recursive);
   auto keyOf = [](const ShaderLibrary& lib, OptimizationLevel level, const std::vector<std::string>& targets) {
     auto perms = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir"}, "none");
-    return buildCacheKey(lib, emitPermutation(lib, perms[0], false, EmitMode::Engine), level, targets);
+    return buildCacheKey(lib, emitPermutation(lib, perms[0], false, EmitMode::Engine), level, parseTargets(targets));
   };
   ShaderLibrary lib = ShaderLibrary::load(test::rootOf(root));
   const auto O0 = OptimizationLevel::O0, O1 = OptimizationLevel::O1, O2 = OptimizationLevel::O2;

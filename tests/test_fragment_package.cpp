@@ -160,7 +160,7 @@ TEST_CASE("the fragment shader is cached with its kernel: a warm build compiles 
   const auto& mats = test::loadedMaterials(lib, {"worn_car_paint", "velvet_green"});
   const auto perms = test::permutationsOf(mats, {"dir", "point"}, "ibl_lut");
   BuildOptions o;
-  o.targets = {"spirv", "glsl450", "essl310", "hlsl", "msl"};
+  o.targets = {Target::Spirv, Target::Glsl450, Target::Essl310, Target::Hlsl, Target::Msl};
   o.cacheDir = test::rootOf(dir);
   BuildStats cold, warm;
   const auto first = buildPermutations(lib, perms, o, &cold);

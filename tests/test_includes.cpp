@@ -47,7 +47,7 @@ std::vector<Checked> buildAll(const std::vector<Permutation>& perms) {
   auto worker = [&] {
     for (size_t i; (i = next++) < out.size();) {
       try {
-        out[i].includes = crossCompileIncludes(out[i].glsl, {"hlsl", "msl"}, out[i].key);
+        out[i].includes = crossCompileIncludes(out[i].glsl, {Target::Hlsl, Target::Msl}, out[i].key);
       } catch (const std::exception& e) {
         out[i].error = e.what();
       }

@@ -115,13 +115,14 @@ TEST_CASE("shards record their stages and merge into the single compile's packag
   REQUIRE(merged.exitCode == 0);
   for (const auto& [path, bytes] : single.files) CHECK(test::readFile(dir / "merged" / path) == bytes);
 
-  // A shard.json whose stages or level the command line would have refused is bad input
+  // A shard.json whose stages, level or targets the command line would have refused is bad input
   // (both shards edited alike, so that they still agree with each other).
   std::map<fs::path, std::string> originals;
   for (const char* s : {"s1", "s2"}) originals[dir / s / "shard.json"] = test::readFile(dir / s / "shard.json");
   for (const auto& [from, to] :
        std::vector<std::pair<std::string, std::string>>{{"\"stages\": \"fragment\"", "\"stages\": \"vertex\""},
-                                                        {"\"optimization\": \"\"", "\"optimization\": \"O7\""}}) {
+                                                        {"\"optimization\": \"\"", "\"optimization\": \"O7\""},
+                                                        {"\"glsl450\"", "\"glsl451\""}}) {
     for (const auto& [path, original] : originals) {
       std::string edited = original;
       REQUIRE(edited.find(from) != std::string::npos);

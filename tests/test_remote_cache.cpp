@@ -30,7 +30,7 @@ RemoteBuild buildWithRemote(const std::string& url, const fs::path& localDir, do
                             const std::vector<Permutation>& perms = remotePermutations(), unsigned jobs = 2) {
   RemoteCache remote({url, "subdirs", timeout, verify});
   BuildOptions o;
-  o.targets = {"spirv", "glsl450"};
+  o.targets = {Target::Spirv, Target::Glsl450};
   o.cacheDir = localDir;
   o.jobs = jobs;
   o.remote = &remote;
@@ -307,7 +307,7 @@ TEST_CASE("another unit's blob with its key field rewritten is a miss: rebuilt, 
 
   // The local cache holds the rebuilt entry, not the doctored one: a build with no remote is right.
   BuildOptions o;
-  o.targets = {"spirv", "glsl450"};
+  o.targets = {Target::Spirv, Target::Glsl450};
   o.cacheDir = local;
   BuildStats alone;
   test::requireIdentical(clean.built, buildPermutations(test::shippedLibrary(), remotePermutations(), o, &alone));
@@ -416,7 +416,7 @@ TEST_CASE("a remote cache slower than compiling locally is noticed and dropped",
   // answer is slower than compiling whatever the machine's speed (and slower than the probe
   // threshold); the timeout leaves it room.
   BuildOptions plain;
-  plain.targets = {"spirv", "glsl450"};
+  plain.targets = {Target::Spirv, Target::Glsl450};
   plain.jobs = 1;
   BuildStats measured;
   double compileMs = 0;

@@ -81,7 +81,7 @@ TEST_CASE("fp16: GLSL 450, HLSL (min16float) and MSL from the half module, ESSL 
     CHECK(es.find("mediump float mbIn") == std::string::npos);
     // The half module itself cannot go to ESSL: crossCompile says why.
     try {
-      crossCompile(b.artifacts.spirv, "essl310", b.shader.fileName);
+      crossCompile(b.artifacts.spirv, Target::Essl310, b.shader.fileName);
       FAIL("essl310 of a Float16 module was built");
     } catch (const DiagnosticError& e) {
       REQUIRE(e.diagnostics().size() == 1);
@@ -131,7 +131,7 @@ TEST_CASE("each target's check rejects a broken output", "[targets]") {
 
   // MSL: a real module's MSL passes; without its kernel or with a wrong buffer index it fails.
   auto spirv = compileComputeGlsl(ok, "ok.comp").spirv;
-  std::string msl = crossCompile(spirv, "msl", "ok.comp");
+  std::string msl = crossCompile(spirv, Target::Msl, "ok.comp");
   SpvcModule m(spirv, SPVC_BACKEND_MSL);
   REQUIRE(m.ok());
   // The indices are assigned while compiling: compile this module too before checking.
@@ -159,7 +159,7 @@ void main() { outBuf.result[gl_GlobalInvocationID.x] = 1.0; }
   co.optimization = OptimizationLevel::O0;
   const auto spirv = compileComputeGlsl(glsl, "unused_block.comp", co).spirv;
   REQUIRE(reflectSpirv(spirv)["uniform_buffers"].size() == 1);  // still in the module
-  const std::string msl = crossCompile(spirv, "msl", "unused_block.comp");
+  const std::string msl = crossCompile(spirv, Target::Msl, "unused_block.comp");
   CHECK(msl.find("& params [[") == std::string::npos);             // no argument for the block
   CHECK(msl.find("& outBuf [[buffer(0)]]") != std::string::npos);  // the buffer that is used
 }
@@ -244,7 +244,7 @@ void main() {
 TEST_CASE("crossCompile names the permutation and the target when SPIRV-Cross cannot read the module", "[targets]") {
   std::vector<uint32_t> garbage{0x07230203, 0x00010000, 0, 5, 0, 0xdeadbeef};
   try {
-    crossCompile(garbage, "hlsl", "broken.glsl");
+    crossCompile(garbage, Target::Hlsl, "broken.glsl");
     FAIL("garbage cross-compiled");
   } catch (const DiagnosticError& e) {
     CHECK(e.diagnostics()[0].code == "E-TARGET-FAILED");

@@ -68,7 +68,7 @@ void refuseUnsafeOutputs(const CompileArgs& a, const ShaderLibrary& lib, const S
 void checkHeaderName(const std::string& name, const SourceLocation& at) {
   checkOutputName(name, "--header", at);
   std::vector<std::string> taken{"manifest.json", "include", "fragment"};
-  for (const auto& t : allTargets()) taken.push_back(t);
+  for (const auto& t : allTargetNames()) taken.push_back(t);
   if (std::find(taken.begin(), taken.end(), name) != taken.end())
     throw DiagnosticError({{Severity::Error, "E-OUTPUT-NAME", at,
                             "--header '" + name + "' is a name the package itself writes at its top level",
@@ -138,6 +138,8 @@ void compileArgsFromJson(const nlohmann::json& c, const std::string& file, Compi
   PackageStages stages;
   if (std::string why; !a.stages.empty() && !parsePackageStages(a.stages, stages, why))
     throw notReadable("'stages': " + why);
+  for (const auto& t : a.targets)
+    if (!parseTarget(t)) throw notReadable("'targets': '" + t + "' is not a target");
   checkHeaderName(a.headerName, {file, 0, 0});
 }
 
@@ -175,7 +177,7 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
   SceneDesc scene;
   std::vector<MaterialDesc> materials;
   ScenePlan plan;
-  std::vector<std::string> targets = a.targets;
+  std::vector<Target> targets = parseTargets(a.targets);  // checked by CLI11 or compileArgsFromJson
   if (!a.scene.empty()) {
     scene = loadScene(a.scene, lib);
     if (!scene.warnings.empty()) printDiagnostics(scene.warnings, g);
@@ -193,7 +195,7 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
     for (const auto& p : plan.required) sources.push_back(p.material);
     refuseDuplicateKeys(plan.required, sources);
   }
-  if (targets.empty()) targets = {"spirv"};
+  if (targets.empty()) targets = {Target::Spirv};
   OptimizationLevel optimization = scene.optimization;                                // O2 without a scene
   if (!a.optimization.empty()) parseOptimizationLevel(a.optimization, optimization);  // checked by CLI11
   PackageStages stages;  // checked by CLI11, or by compileArgsFromJson for a shard.json's
@@ -317,11 +319,11 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
          "Output languages (default: the scene's, else spirv): " +
              [] {
                std::string s;
-               for (const auto& t : allTargets()) s += (s.empty() ? "" : ",") + t;
+               for (const auto& t : allTargetNames()) s += (s.empty() ? "" : ",") + t;
                return s;
              }())
       ->delimiter(',')
-      ->check(CLI::IsMember(allTargets()));
+      ->check(CLI::IsMember(allTargetNames()));
   cmd->add_option("-O,--optimization", args->optimization,
                   "spirv-opt level of fp32 units: -O0 none, -O1 per-function clean-up without inlining, -O2 the "
                   "performance recipe (default: the scene's, else 2; docs/performance-compile.md \"Levels\")")

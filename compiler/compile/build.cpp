@@ -66,17 +66,22 @@ struct CompileUnit {
 };
 
 // Non-spirv targets in allTargets() order, whatever order the caller listed them in.
-std::vector<std::string> crossTargets(const std::vector<std::string>& requested) {
-  std::vector<std::string> out;
-  for (const auto& t : allTargets())
-    if (t != "spirv" && std::find(requested.begin(), requested.end(), t) != requested.end()) out.push_back(t);
+std::vector<Target> crossTargets(const std::vector<Target>& requested) {
+  std::vector<Target> out;
+  for (Target t : allTargets())
+    if (t != Target::Spirv && std::find(requested.begin(), requested.end(), t) != requested.end()) out.push_back(t);
   return out;
+}
+
+// Whether an fp16 unit needs its mediump form: a target without 16-bit floats is asked for.
+bool needsMediump(const std::vector<Target>& targets) {
+  return std::any_of(targets.begin(), targets.end(), [](Target t) { return !targetInfo(t).float16; });
 }
 
 // Everything that affects a unit's output (shader_cache.hpp).
 std::string unitKey(const ShaderLibrary& lib, const EmittedShader& shader, const CompileOptions& co,
-                    OptimizationLevel level, const std::vector<std::string>& targets,
-                    const std::string& mediumpGlsl = "", const CompileUnit* fragment = nullptr, bool kernel = true) {
+                    OptimizationLevel level, const std::vector<Target>& targets, const std::string& mediumpGlsl = "",
+                    const CompileUnit* fragment = nullptr, bool kernel = true) {
   std::vector<std::string> parts{ShaderCache::kFormatVersion,
                                  MB_VERSION,
                                  toolchainVersion(),
@@ -86,7 +91,7 @@ std::string unitKey(const ShaderLibrary& lib, const EmittedShader& shader, const
   // The build's level decides the mediump forms of fp16 units too (compiled at it, while the
   // kernel itself runs at O0). O2 adds no part, so keys from before levels stay valid.
   if (level != OptimizationLevel::O2) parts.push_back(std::string("level ") + optimizationLevelName(level));
-  for (const auto& t : crossTargets(targets)) parts.push_back(t + ": " + targetOptions(t));
+  for (Target t : crossTargets(targets)) parts.push_back(targetName(t) + ": " + targetOptions(t));
   // Both stages add no part, so keys from before stage selection stay valid.
   if (!kernel) parts.push_back("no kernel");
   parts.push_back(shader.glsl);
@@ -144,20 +149,21 @@ void loadFromShards(CompileUnit& u, size_t index, const ShardSet& shards) {
 // when there is one), reflection.
 StageArtifacts compileStage(const std::string& glsl, const std::string& displayName, const std::string& mediumpGlsl,
                             const std::string& mediumpDisplayName, const CompileOptions& options,
-                            OptimizationLevel mediumpLevel, const std::vector<std::string>& targets) {
+                            OptimizationLevel mediumpLevel, const std::vector<Target>& targets) {
   StageArtifacts a;
   a.spirv = compileComputeGlsl(glsl, displayName, options).spirv;
-  for (const auto& t : targets) {
-    if (t == "essl310" && !mediumpGlsl.empty()) {
+  for (Target t : targets) {
+    const std::string& name = targetName(t);
+    if (!targetInfo(t).float16 && !mediumpGlsl.empty()) {
       // RelaxedPrecision survives spirv-opt's passes, and no 16-bit constant is involved.
       CompileOptions relaxed;
       relaxed.stage = options.stage;
       relaxed.pipeline = options.pipeline;
       relaxed.optimization = mediumpLevel;
-      a.targets[t] =
+      a.targets[name] =
           crossCompile(compileComputeGlsl(mediumpGlsl, mediumpDisplayName, relaxed).spirv, t, mediumpDisplayName);
     } else {
-      a.targets[t] = crossCompile(a.spirv, t, displayName);
+      a.targets[name] = crossCompile(a.spirv, t, displayName);
     }
   }
   a.reflection = reflectSpirv(a.spirv);
@@ -165,7 +171,7 @@ StageArtifacts compileStage(const std::string& glsl, const std::string& displayN
 }
 
 // glslang and every target for the unit, timed.
-CompiledArtifacts compileUnit(CompileUnit& u, const std::vector<std::string>& targets) {
+CompiledArtifacts compileUnit(CompileUnit& u, const std::vector<Target>& targets) {
   auto t0 = Clock::now();
   CompiledArtifacts a;
   if (u.kernel)
@@ -183,7 +189,7 @@ CompiledArtifacts compileUnit(CompileUnit& u, const std::vector<std::string>& ta
 }
 
 // The unit from the remote cache; false if it has to be compiled.
-bool takeFromRemote(CompileUnit& u, const std::vector<std::string>& targets, const UnitSources& src) {
+bool takeFromRemote(CompileUnit& u, const std::vector<Target>& targets, const UnitSources& src) {
   RemoteCache& remote = *src.remote;
   // A remote that always hits gives no local compile to compare its speed with: one unit is
   // compiled as a probe when its answers are slow (RemoteCache::wantsTimingProbe).
@@ -211,7 +217,7 @@ bool takeFromRemote(CompileUnit& u, const std::vector<std::string>& targets, con
   return true;
 }
 
-void buildUnit(CompileUnit& u, size_t index, const std::vector<std::string>& targets, const UnitSources& src) {
+void buildUnit(CompileUnit& u, size_t index, const std::vector<Target>& targets, const UnitSources& src) {
   try {
     if (src.shards) return loadFromShards(u, index, *src.shards);
     const ShaderCache& cache = src.cache;
@@ -233,7 +239,7 @@ void buildUnit(CompileUnit& u, size_t index, const std::vector<std::string>& tar
   }
 }
 
-void runPool(std::vector<CompileUnit>& units, unsigned jobs, const std::vector<std::string>& targets,
+void runPool(std::vector<CompileUnit>& units, unsigned jobs, const std::vector<Target>& targets,
              const UnitSources& sources) {
   std::atomic<size_t> next{0};
   auto worker = [&] {
@@ -249,7 +255,7 @@ void runPool(std::vector<CompileUnit>& units, unsigned jobs, const std::vector<s
 }  // namespace
 
 std::string buildCacheKey(const ShaderLibrary& lib, const EmittedShader& shader, OptimizationLevel optimization,
-                          const std::vector<std::string>& targets) {
+                          const std::vector<Target>& targets) {
   CompileOptions co;
   co.optimization = optimization;
   return unitKey(lib, shader, co, optimization, targets);
@@ -382,7 +388,7 @@ class StreamingBuild {
     try {
       // The fragment shader (docs/fragment-stage.md) comes from the kernel's emitted text.
       if (fragment) setFragment(u, fragmentShaderOf(lib_, perm, shader, false), false);
-      if (perm.precision == "fp16" && std::find(targets_.begin(), targets_.end(), "essl310") != targets_.end()) {
+      if (perm.precision == "fp16" && needsMediump(targets_)) {
         EmittedShader relaxed = emitPermutation(lib_, perm, false, options_.mode, true);
         if (fragment) setFragment(u, fragmentShaderOf(lib_, perm, relaxed, true), true);
         if (u.kernel) {
@@ -486,7 +492,7 @@ class StreamingBuild {
   const ShaderLibrary& lib_;
   const std::vector<Permutation>& perms_;
   const BuildOptions& options_;
-  const std::vector<std::string> targets_;
+  const std::vector<Target> targets_;
   const ShaderCache cache_;
   unsigned jobs_ = 1;
   std::unordered_map<std::string, UnitSummary> units_;  // by cache key

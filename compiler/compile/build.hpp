@@ -13,6 +13,7 @@
 #include "compile/shard.hpp"
 #include "core/diagnostics.hpp"
 #include "core/package_stages.hpp"
+#include "core/target.hpp"
 #include "emit/emitter.hpp"
 #include "library/shader_library.hpp"
 #include "permute/permutation.hpp"
@@ -20,10 +21,10 @@
 namespace mb {
 
 struct BuildOptions {
-  unsigned jobs = 0;                          // 0: std::thread::hardware_concurrency()
-  std::vector<std::string> targets{"spirv"};  // subset of allTargets(); spirv always built
-  std::filesystem::path cacheDir;             // empty: no cache
-  EmitMode mode = EmitMode::Engine;           // what the package ships (emit/emitter.hpp)
+  unsigned jobs = 0;                           // 0: std::thread::hardware_concurrency()
+  std::vector<Target> targets{Target::Spirv};  // spirv is always built
+  std::filesystem::path cacheDir;              // empty: no cache
+  EmitMode mode = EmitMode::Engine;            // what the package ships (emit/emitter.hpp)
   // Engine mode: which stages every compile unit builds, to the same targets and cached in
   // one entry: the kernel and the permutation's fragment shader (emit/fragment_shader.hpp).
   // Probe mode always builds the kernel alone (validate, stress and bench run kernels).
@@ -88,7 +89,7 @@ struct BuildStats {
 // glslang/SPIRV-Tools/SPIRV-Cross versions, the optimization level, validate, the non-spirv targets with
 // their options (targets.hpp targetOptions), the GLSL, and each included brick's file hash.
 std::string buildCacheKey(const ShaderLibrary& lib, const EmittedShader& shader, OptimizationLevel optimization,
-                          const std::vector<std::string>& targets);
+                          const std::vector<Target>& targets);
 
 // Called for every permutation in input order, after its window is built; it may move from
 // `built`. A permutation whose unit an earlier window built carries that unit's hash,

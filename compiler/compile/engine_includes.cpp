@@ -16,6 +16,18 @@ namespace {
   throw DiagnosticError({{Severity::Error, "E-TARGET-FAILED", {displayName, 0, 0}, target + " include: " + why}});
 }
 
+// The language of a target's include (only hlsl and msl have includes of their own).
+IncludeLanguage includeLanguageOf(Target target) {
+  switch (targetInfo(target).language) {
+    case TargetLanguage::Hlsl:
+      return IncludeLanguage::Hlsl;
+    case TargetLanguage::Msl:
+      return IncludeLanguage::Msl;
+    default:
+      return IncludeLanguage::Glsl;
+  }
+}
+
 std::set<std::string> structNames(const std::string& code) {
   static const std::regex kStruct(R"(\bstruct\s+(\w+))");
   std::set<std::string> out;
@@ -152,28 +164,29 @@ std::vector<FunctionSignature> hookPrototypes(const std::string& code) {
   return out;
 }
 
-std::map<std::string, std::string> crossCompileIncludes(const std::string& glsl,
-                                                        const std::vector<std::string>& targets,
+std::map<std::string, std::string> crossCompileIncludes(const std::string& glsl, const std::vector<Target>& targets,
                                                         const std::string& displayName) {
   std::map<std::string, std::string> out;
-  const bool hlsl = std::find(targets.begin(), targets.end(), "hlsl") != targets.end();
-  const bool msl = std::find(targets.begin(), targets.end(), "msl") != targets.end();
-  if (!hlsl && !msl) return out;
+  std::vector<Target> wanted;  // in package order
+  for (Target t : allTargets())
+    if (*targetInfo(t).includeExtension && std::find(targets.begin(), targets.end(), t) != targets.end())
+      wanted.push_back(t);
+  if (wanted.empty()) return out;
   CompileOptions noInlining;
   noInlining.optimization = OptimizationLevel::O0;
   const std::string shellName = displayName + " (include shell)";
   const std::vector<uint32_t> spirv = compileComputeGlsl(includeShell(glsl), shellName, noInlining).spirv;
-  for (const auto& [target, lang] :
-       {std::pair{"hlsl", IncludeLanguage::Hlsl}, std::pair{"msl", IncludeLanguage::Msl}}) {
-    if ((lang == IncludeLanguage::Hlsl && !hlsl) || (lang == IncludeLanguage::Msl && !msl)) continue;
+  for (Target target : wanted) {
+    const std::string& name = targetName(target);
+    const IncludeLanguage lang = includeLanguageOf(target);
     // crossCompile sets the target's own options and checks the whole shell's output.
     const std::string body = extractInclude(crossCompile(spirv, target, shellName));
-    for (const auto& name : missingContractFunctions(glsl, body))
-      fail(displayName, target, "contract function '" + name + "' is missing");
+    for (const auto& fn : missingContractFunctions(glsl, body))
+      fail(displayName, name, "contract function '" + fn + "' is missing");
     const std::string wrapper = includeWrapper(body, lang);
     const std::string problem = lang == IncludeLanguage::Hlsl ? checkHlsl(wrapper, true) : checkMslInclude(wrapper);
-    if (!problem.empty()) fail(displayName, target, problem);
-    out[target] = body;
+    if (!problem.empty()) fail(displayName, name, problem);
+    out[name] = body;
   }
   return out;
 }

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "compile/source_items.hpp"
+#include "core/target.hpp"
 
 namespace mb {
 
@@ -29,10 +30,10 @@ const std::vector<std::string>& fetchHookNames();
 enum class IncludeLanguage { Glsl, Hlsl, Msl };
 
 // The include bodies of one emitted permutation (Engine mode, probe included or not) for the
-// targets "hlsl" and "msl" among `targets`: target -> text (no header comment, no guard).
+// targets among `targets` that have an include of their own (TargetInfo::includeExtension:
+// hlsl, msl): target name -> text (no header comment, no guard).
 // Throws DiagnosticError (E-TARGET-FAILED naming `displayName`) when a step or check fails.
-std::map<std::string, std::string> crossCompileIncludes(const std::string& glsl,
-                                                        const std::vector<std::string>& targets,
+std::map<std::string, std::string> crossCompileIncludes(const std::string& glsl, const std::vector<Target>& targets,
                                                         const std::string& displayName);
 
 // The contract functions that `code` (an include body in any language) defines, in

@@ -11,11 +11,12 @@
 namespace mb {
 namespace {
 
-constexpr unsigned kGlslVersion = 450, kEsslVersion = 310, kHlslShaderModel = 60;
-constexpr unsigned kMslVersion = SPVC_MAKE_MSL_VERSION(2, 3, 0);
+// The msl row of core/target.cpp gives MSL 2.3 in SPIRV-Cross's encoding.
+static_assert(SPVC_MAKE_MSL_VERSION(2, 3, 0) == 20300);
 
-[[noreturn]] void fail(const std::string& displayName, const std::string& target, const std::string& why) {
-  throw DiagnosticError({{Severity::Error, "E-TARGET-FAILED", {displayName, 0, 0}, "target " + target + ": " + why}});
+[[noreturn]] void fail(const std::string& displayName, Target target, const std::string& why) {
+  throw DiagnosticError(
+      {{Severity::Error, "E-TARGET-FAILED", {displayName, 0, 0}, "target " + targetName(target) + ": " + why}});
 }
 
 // Whether the module does arithmetic in 16-bit floats (an fp16 permutation).
@@ -41,85 +42,107 @@ void bindPushConstantsAsUniformBlock(const SpvcModule& m) {
     spvc_compiler_set_decoration(m.compiler(), r.id, SpvDecorationBinding, next++);
 }
 
-spvc_backend backendOf(const std::string& target) {
-  if (target == "glsl450" || target == "essl310") return SPVC_BACKEND_GLSL;
-  if (target == "hlsl") return SPVC_BACKEND_HLSL;
-  return SPVC_BACKEND_MSL;
+spvc_backend backendOf(TargetLanguage language) {
+  switch (language) {
+    case TargetLanguage::Glsl:
+      return SPVC_BACKEND_GLSL;
+    case TargetLanguage::Hlsl:
+      return SPVC_BACKEND_HLSL;
+    case TargetLanguage::Msl:
+      return SPVC_BACKEND_MSL;
+    case TargetLanguage::Spirv:
+      break;
+  }
+  return SPVC_BACKEND_NONE;
+}
+
+// The language's options from the target's row: version, dialect, bindings.
+void setOptions(const SpvcModule& m, spvc_compiler_options o, const TargetInfo& info) {
+  switch (info.language) {
+    case TargetLanguage::Glsl:
+      spvc_compiler_options_set_uint(o, SPVC_COMPILER_OPTION_GLSL_VERSION, info.version);
+      spvc_compiler_options_set_bool(o, SPVC_COMPILER_OPTION_GLSL_ES, info.es);
+      // Plain GLSL for OpenGL / GLES drivers: the Vulkan dialect is what the .spv already is.
+      spvc_compiler_options_set_bool(o, SPVC_COMPILER_OPTION_GLSL_VULKAN_SEMANTICS, false);
+      spvc_compiler_options_set_bool(o, SPVC_COMPILER_OPTION_GLSL_EMIT_PUSH_CONSTANT_AS_UNIFORM_BUFFER, true);
+      bindPushConstantsAsUniformBlock(m);
+      return;
+    case TargetLanguage::Hlsl:
+      // Shader model 6.0 for fp16 too: fp16 values become min16float (HLSL's relaxed precision),
+      // because glslang's HLSL front end cannot reparse SM 6.2's 16-bit output (templated
+      // Load<T>, implicit float -> float16_t conversions), so it could not be checked.
+      spvc_compiler_options_set_uint(o, SPVC_COMPILER_OPTION_HLSL_SHADER_MODEL, info.version);
+      return;
+    case TargetLanguage::Msl:
+      spvc_compiler_options_set_uint(o, SPVC_COMPILER_OPTION_MSL_VERSION, info.version);
+      return;
+    case TargetLanguage::Spirv:
+      return;
+  }
+}
+
+// The language's checker (target_checks.hpp): "" when the output passes.
+std::string check(const std::string& source, const SpvcModule& m, const TargetInfo& info) {
+  const bool fragment = spvc_compiler_get_execution_model(m.compiler()) == SpvExecutionModelFragment;
+  switch (info.language) {
+    case TargetLanguage::Glsl:
+      return checkGlsl(source, info.es, fragment);
+    case TargetLanguage::Hlsl:
+      return checkHlsl(source, fragment);
+    case TargetLanguage::Msl:
+      return checkMsl(source, m);
+    case TargetLanguage::Spirv:
+      break;
+  }
+  return "not a cross-compilation target";
 }
 
 }  // namespace
 
-std::string targetExtension(const std::string& target) {
-  if (target == "spirv") return ".spv";
-  if (target == "glsl450") return ".comp";
-  if (target == "essl310") return ".es.comp";
-  if (target == "hlsl") return ".hlsl";
-  return ".metal";
-}
+std::string targetExtension(Target target) { return targetInfo(target).kernelExtension; }
 
-std::string fragmentExtension(const std::string& target) {
-  if (target == "glsl450") return ".frag";
-  if (target == "essl310") return ".es.frag";
-  return targetExtension(target);
-}
+std::string fragmentExtension(Target target) { return targetInfo(target).fragmentExtension; }
 
-std::string crossCompile(const std::vector<uint32_t>& spirv, const std::string& target,
-                         const std::string& displayName) {
-  if (target == "spirv" || std::find(allTargets().begin(), allTargets().end(), target) == allTargets().end())
-    fail(displayName, target, "not a cross-compilation target");
-  const bool fp16 = usesFloat16(spirv);
+std::string crossCompile(const std::vector<uint32_t>& spirv, Target target, const std::string& displayName) {
+  const TargetInfo& info = targetInfo(target);
+  if (info.language == TargetLanguage::Spirv) fail(displayName, target, "not a cross-compilation target");
   // ES 3.10 has no 16-bit float type at all: SPIRV-Cross needs GL_AMD_gpu_shader_half_float or
   // GL_NV_gpu_shader5 for one, both desktop-only, and would emit '#error No extension available
   // for FP16'. Refuse here with the reason rather than ship that.
   // buildPermutations gives essl310 the permutation's mediump form instead (docs/targets.md).
-  if (fp16 && target == "essl310")
+  if (!info.float16 && usesFloat16(spirv))
     fail(displayName, target,
          "ESSL 3.10 has no 16-bit float type (SPIRV-Cross needs GL_AMD_gpu_shader_half_float or "
          "GL_NV_gpu_shader5, which ES lacks): cross-compile the permutation's mediump form "
          "(emitPermutation with mediump), whose floats ES drivers run at 16 bits");
-  SpvcModule m(spirv, backendOf(target));
+  SpvcModule m(spirv, backendOf(info.language));
   if (!m.ok()) fail(displayName, target, "SPIRV-Cross: " + m.error());
   spvc_compiler c = m.compiler();
   spvc_compiler_options o = nullptr;
   spvc_compiler_create_compiler_options(c, &o);
-  if (target == "glsl450" || target == "essl310") {
-    const bool es = target == "essl310";
-    spvc_compiler_options_set_uint(o, SPVC_COMPILER_OPTION_GLSL_VERSION, es ? kEsslVersion : kGlslVersion);
-    spvc_compiler_options_set_bool(o, SPVC_COMPILER_OPTION_GLSL_ES, es);
-    // Plain GLSL for OpenGL / GLES drivers: the Vulkan dialect is what the .spv already is.
-    spvc_compiler_options_set_bool(o, SPVC_COMPILER_OPTION_GLSL_VULKAN_SEMANTICS, false);
-    spvc_compiler_options_set_bool(o, SPVC_COMPILER_OPTION_GLSL_EMIT_PUSH_CONSTANT_AS_UNIFORM_BUFFER, true);
-    bindPushConstantsAsUniformBlock(m);
-  } else if (target == "hlsl") {
-    // Shader model 6.0 for fp16 too: fp16 values become min16float (HLSL's relaxed precision),
-    // because glslang's HLSL front end cannot reparse SM 6.2's 16-bit output (templated
-    // Load<T>, implicit float -> float16_t conversions), so it could not be checked.
-    spvc_compiler_options_set_uint(o, SPVC_COMPILER_OPTION_HLSL_SHADER_MODEL, kHlslShaderModel);
-  } else {
-    spvc_compiler_options_set_uint(o, SPVC_COMPILER_OPTION_MSL_VERSION, kMslVersion);
-  }
+  setOptions(m, o, info);
   spvc_compiler_install_compiler_options(c, o);
   const char* out = nullptr;
   if (spvc_compiler_compile(c, &out) != SPVC_SUCCESS || !out) fail(displayName, target, "SPIRV-Cross: " + m.error());
   std::string source = out;
-  std::string problem;
-  const bool fragment = spvc_compiler_get_execution_model(c) == SpvExecutionModelFragment;
-  if (target == "glsl450" || target == "essl310")
-    problem = checkGlsl(source, target == "essl310", fragment);
-  else if (target == "hlsl")
-    problem = checkHlsl(source, fragment);
-  else
-    problem = checkMsl(source, m);
-  if (!problem.empty()) fail(displayName, target, problem);
+  if (const std::string problem = check(source, m, info); !problem.empty()) fail(displayName, target, problem);
   return source;
 }
 
-std::string targetOptions(const std::string& target) {
-  if (target == "glsl450") return "glsl " + std::to_string(kGlslVersion) + " non-vulkan push-as-ubo";
-  if (target == "essl310") return "essl " + std::to_string(kEsslVersion) + " non-vulkan push-as-ubo fp16-as-mediump";
-  if (target == "hlsl") return "hlsl sm" + std::to_string(kHlslShaderModel) + " min16float";
-  if (target == "msl") return "msl " + std::to_string(kMslVersion) + " macos";
-  return target;
+std::string targetOptions(Target target) {
+  const TargetInfo& info = targetInfo(target);
+  const std::string version = std::to_string(info.version);
+  switch (info.language) {
+    case TargetLanguage::Glsl:
+      return (info.es ? "essl " : "glsl ") + version + info.optionFlags;
+    case TargetLanguage::Hlsl:
+      return "hlsl sm" + version + info.optionFlags;
+    case TargetLanguage::Msl:
+      return "msl " + version + info.optionFlags;
+    case TargetLanguage::Spirv:
+      break;
+  }
+  return targetName(target);
 }
 
 std::string spirvCrossVersion() {

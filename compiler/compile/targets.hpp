@@ -15,14 +15,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/vocabulary.hpp"  // allTargets(), the target names in package order
+#include "core/target.hpp"  // Target, its TargetInfo row, allTargets() in package order
 
 namespace mb {
 
 // File extension of a target's output in the package: ".spv", ".comp", ".es.comp", ".hlsl", ".metal".
-std::string targetExtension(const std::string& target);
+std::string targetExtension(Target target);
 // The same for a fragment shader: ".spv", ".frag", ".es.frag", ".hlsl", ".metal".
-std::string fragmentExtension(const std::string& target);
+std::string fragmentExtension(Target target);
 
 // SPIRV-Cross's view of a module, as the package manifest stores it (docs/package.md):
 //   {"entry_point": "main", "workgroup_size": [64,1,1],
@@ -35,14 +35,14 @@ std::string fragmentExtension(const std::string& target);
 // ([{"name","set","binding","type"}], type "sampler2D" / "samplerCube").
 nlohmann::json reflectSpirv(const std::vector<uint32_t>& spirv);
 
-// Cross-compiles one module to `target` (not "spirv") and checks the result as above.
+// Cross-compiles one module to `target` (not Target::Spirv) and checks the result as above.
 // Throws DiagnosticError (E-TARGET-FAILED naming `displayName`, the target and the checker's
 // first message) when SPIRV-Cross or the check fails.
-std::string crossCompile(const std::vector<uint32_t>& spirv, const std::string& target, const std::string& displayName);
+std::string crossCompile(const std::vector<uint32_t>& spirv, Target target, const std::string& displayName);
 
 // The options `target` is cross-compiled with (version, dialect, bindings), as one line, so
 // that the cache key changes when they do.
-std::string targetOptions(const std::string& target);
+std::string targetOptions(Target target);
 
 // Versions of SPIRV-Cross (for the cache key and `--version`).
 std::string spirvCrossVersion();

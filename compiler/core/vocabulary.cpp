@@ -12,9 +12,4 @@ const std::vector<std::string>& allQualityLevels() {
   return v;
 }
 
-const std::vector<std::string>& allTargets() {
-  static const std::vector<std::string> t{"spirv", "glsl450", "essl310", "hlsl", "msl"};
-  return t;
-}
-
 }  // namespace mb

@@ -9,6 +9,7 @@
 
 #include "core/diagnostics.hpp"
 #include "core/optimization_level.hpp"
+#include "core/target.hpp"
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
 
@@ -41,7 +42,7 @@ struct SceneDesc {
   std::vector<std::string> environments{"none"};  // one permutation set per mode
   std::vector<std::string> precisions{"fp32"};
   std::vector<std::string> qualities{"high"};
-  std::vector<std::string> targets{"spirv"};  // see compile/targets.hpp
+  std::vector<Target> targets{Target::Spirv};  // see compile/targets.hpp
   // "optimization": "O0" | "O1" | "O2"; `compile -O` overrides it (docs/scenes.md).
   OptimizationLevel optimization = OptimizationLevel::O2;
   std::vector<SceneMaterial> materials;

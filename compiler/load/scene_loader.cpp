@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/json_fields.hpp"
+#include "core/target.hpp"
 #include "core/vocabulary.hpp"
 #include "library/light_order.hpp"
 #include "load/material_resolve.hpp"
@@ -72,7 +73,9 @@ class SceneJsonReader {
     readAxis("/environment", allEnvironmentModes(), "environment mode", scene_.environments, scene_.environmentWhere);
     readAxis("/precision", allPrecisions(), "precision", scene_.precisions, scene_.precisionWhere);
     readAxis("/quality", allQualityLevels(), "quality level", scene_.qualities, scene_.qualityWhere);
-    readAxis("/targets", allTargets(), "target", scene_.targets, scene_.targetsWhere, "E-SCENE-TARGET");
+    std::vector<std::string> targets{targetName(Target::Spirv)};
+    readAxis("/targets", allTargetNames(), "target", targets, scene_.targetsWhere, "E-SCENE-TARGET");
+    scene_.targets = parseTargets(targets);  // each checked against allTargetNames() above
     if (auto level = f_.string("/optimization"))
       if (isOneOf(*level, {"O0", "O1", "O2"}, "optimization level", "/optimization", "E-SCENE-OPTIMIZATION"))
         parseOptimizationLevel(*level, scene_.optimization);

@@ -6,16 +6,17 @@
 #include <sstream>
 
 #include "compile/engine_includes.hpp"
+#include "core/target.hpp"
 #include "write/package_parts.hpp"
 
 namespace mb {
 
 std::string crossIncludePath(const std::string& key, const std::string& target) {
-  return "include/" + key + (target == "msl" ? ".metal" : ".hlsl");
+  return "include/" + key + targetInfo(target).includeExtension;
 }
 
 std::string crossInclude(const PackagedPermutation& p, const std::string& target, const std::string& body) {
-  const bool msl = target == "msl";
+  const bool msl = targetInfo(target).language == TargetLanguage::Msl;
   std::ostringstream out;
   out << includeOrigin(p, msl ? "MSL" : "HLSL")
       << "// Made by SPIRV-Cross from the SPIR-V of the GLSL include's code (no inlining), so both\n"

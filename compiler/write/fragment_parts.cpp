@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "compile/targets.hpp"
+#include "core/target.hpp"
 #include "core/descriptor_bindings.hpp"
 #include "core/diagnostics.hpp"
 #include "emit/fragment_shader.hpp"
@@ -75,7 +75,7 @@ std::string frameTypes() {
 }  // namespace
 
 std::string fragmentPath(const std::string& target, const std::string& hash) {
-  return "fragment/" + target + "/" + hash + fragmentExtension(target);
+  return "fragment/" + target + "/" + hash + targetInfo(target).fragmentExtension;
 }
 
 nlohmann::json fragmentEntryJson(const PackagedPermutation& p) {

@@ -90,8 +90,9 @@ void ManifestWriter::add(const PackagedPermutation& p) {
 
 void ManifestWriter::write(std::ostream& out) const {
   nlohmann::json targets = nlohmann::json::array();
-  for (const auto& t : allTargets())
-    if (t == "spirv" || std::find(in_.targets.begin(), in_.targets.end(), t) != in_.targets.end()) targets.push_back(t);
+  for (Target t : allTargets())
+    if (t == Target::Spirv || std::find(in_.targets.begin(), in_.targets.end(), t) != in_.targets.end())
+      targets.push_back(targetName(t));
   // The permutations are spliced in where this placeholder is printed: the document is what
   // nlohmann's dump(2) gives for the whole manifest, without holding it in memory.
   const std::string placeholder = "@@matbricks-permutations@@";

@@ -19,12 +19,13 @@ namespace {
 template <typename PathOf>
 void addStageFiles(PackageWriter& pkg, const StageArtifacts& a, bool fresh, PathOf pathOf,
                    std::map<std::string, std::string>& files) {
-  for (const auto& target : allTargets()) {
-    const bool isSpirv = target == "spirv";
-    auto text = a.targets.find(target);
+  for (Target target : allTargets()) {
+    const bool isSpirv = target == Target::Spirv;
+    const std::string& name = targetName(target);
+    auto text = a.targets.find(name);
     if (!isSpirv && text == a.targets.end()) continue;
     const std::string path = pathOf(target);
-    files[target] = path;
+    files[name] = path;
     if (!fresh) continue;
     if (isSpirv)
       pkg.addFile(path, a.spirv);
@@ -48,7 +49,7 @@ void PackageStream::add(const Permutation& perm, const BuiltPermutation& built) 
   if (!hash.empty()) {
     const bool fresh = written_.insert(hash).second;
     addStageFiles(
-        pkg_, built.artifacts, fresh, [&](const std::string& t) { return t + "/" + hash + targetExtension(t); },
+        pkg_, built.artifacts, fresh, [&](Target t) { return targetName(t) + "/" + hash + targetExtension(t); },
         p.files);
   }
   // The fragment shader (docs/fragment-stage.md), deduplicated by its own hash.
@@ -56,7 +57,7 @@ void PackageStream::add(const Permutation& perm, const BuiltPermutation& built) 
     const bool freshFragment = written_.insert("fragment/" + built.fragmentHash).second;
     addStageFiles(
         pkg_, built.artifacts.fragment, freshFragment,
-        [&](const std::string& t) { return fragmentPath(t, built.fragmentHash); }, p.fragmentFiles);
+        [&](Target t) { return fragmentPath(targetName(t), built.fragmentHash); }, p.fragmentFiles);
   }
   p.include = "include/" + built.shader.key + ".glsl";
   pkg_.addFile(p.include, engineInclude(p));

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "compile/build.hpp"
+#include "core/target.hpp"
 #include "library/shader_library.hpp"
 #include "permute/scene_plan.hpp"
 #include "write/package_writer.hpp"
@@ -25,7 +26,7 @@ struct PackageInputs {
   const ShaderLibrary* lib = nullptr;
   const ScenePlan* plan = nullptr;
   const std::vector<BuiltPermutation>* built = nullptr;  // same order as plan->required
-  std::vector<std::string> targets{"spirv"};
+  std::vector<Target> targets{Target::Spirv};
   OptimizationLevel optimization = OptimizationLevel::O2;  // the build's (BuildOptions::optimization)
   PackageStages stages;                                    // the build's (BuildOptions::stages)
   std::string sceneFile;                                   // empty for `compile MATERIAL...`
