@@ -22,6 +22,21 @@ std::vector<uint32_t> shippedModule(const ProbeProgram& p) {
   return compileComputeGlsl(p.shader.glsl, p.shader.fileName, o).spirv;
 }
 
+// The package target whose text a language runs.
+Target targetOf(ProbeLanguage language) {
+  switch (language) {
+    case ProbeLanguage::Spirv:
+      return Target::Spirv;
+    case ProbeLanguage::Hlsl:
+      return Target::Hlsl;
+    case ProbeLanguage::Glsl450:
+      return Target::Glsl450;
+    case ProbeLanguage::Essl310:
+      return Target::Essl310;
+  }
+  return Target::Spirv;
+}
+
 }  // namespace
 
 const std::vector<std::string>& executableLanguages() {
@@ -66,7 +81,7 @@ LanguageProbe translateProbe(ProbeProgram program, ProbeLanguage language, const
   ProbeProgram& p = out.program;
   if (language == ProbeLanguage::Spirv) return out;
   const auto t0 = std::chrono::steady_clock::now();
-  const std::string target = languageName(language);
+  const Target target = targetOf(language);
   const std::string& name = p.shader.fileName;
   if (language == ProbeLanguage::Essl310 && p.precision == ShaderPrecision::Fp16) {
     if (!mediumpForm)
