@@ -10,7 +10,9 @@
 //      `matbricks bench`), and the three SPIR-V instruction counts;
 //   e. (--breakdown) where one permutation's time goes, stage by stage, on one thread;
 //   f. (--recipes=FILE) spirv-opt recipes against RegisterPerformancePasses: time, instructions;
-//   g. (--levels) the optimization levels -O0/-O1/-O2: compile time, where it goes, run time.
+//   g. (--levels) the optimization levels -O0/-O1/-O2: compile time, where it goes, run time;
+//   h. the levels' compile time on a scene of 60 distinct materials with IBL + directional +
+//      point light at fp32 and fp16 (120 permutations), the shape the -O0 target is set on.
 // Usage: mb_bench_compile REPEATS MAX_SIZE OUT_DIR SCENE [--breakdown] [--recipes=FILE] [--levels]
 //        [--sections=LETTERS]  (writes OUT_DIR/compile.{json,md}).
 // Medians of REPEATS runs (fewer for the largest sizes; the JSON records how many).
@@ -243,6 +245,54 @@ json benchScaling(const ShaderLibrary& lib, const MaterialDesc& base, size_t max
     std::cerr << "  scaling: " << n << " permutations, " << m << " ms\n";
   }
   return rows;
+}
+
+// The scene the -O0 target is stated on: 60 distinct materials, each shaded by a directional
+// and a point light under ibl_lut, at fp32 and fp16: 120 permutations. The shipped materials
+// in turn, each copy's first scalar input made a constant that differs per copy (as section c
+// does), so that no two emit the same GLSL.
+json levelCompileTimes(const ShaderLibrary& lib, const std::vector<Permutation>& perms, int repeats);
+
+std::vector<MaterialDesc> sixtyMaterials(const ShaderLibrary& lib, const std::vector<MaterialDesc>& shipped) {
+  auto has = [](const std::vector<std::string>& v, const std::string& x) {
+    return std::find(v.begin(), v.end(), x) != v.end();
+  };
+  std::vector<const MaterialDesc*> bases;
+  for (const auto& m : shipped) {
+    const ShadingModel* model = lib.findModel(m.model);
+    if (has(model->environments, "ibl_lut") && has(model->lights, "dir") && has(model->lights, "point"))
+      bases.push_back(&m);
+  }
+  std::vector<MaterialDesc> out;
+  for (size_t i = 0; i < 60; ++i) {
+    MaterialDesc m = *bases[i % bases.size()];
+    m.name = "m" + std::to_string(i);
+    for (auto& p : m.params)
+      if (!p.constant && !p.user && p.type == ValueType::Float) {
+        p.constant = true;
+        p.value = {0.2 + 0.6 * double(i) / 60.0};
+        break;
+      }
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+json benchSceneShape(const ShaderLibrary& lib, const std::vector<MaterialDesc>& sixty, int repeats) {
+  std::vector<Permutation> perms;
+  for (const std::string precision : {"fp32", "fp16"})
+    for (const auto& m : sixty) {
+      Permutation p;
+      p.material = &m;
+      p.lights = {"dir", "point"};
+      p.environment = "ibl_lut";
+      p.precision = precision;
+      perms.push_back(p);
+    }
+  return json{{"permutations", perms.size()},
+              {"materials", sixty.size()},
+              {"repeats", repeats},
+              {"compile", levelCompileTimes(lib, perms, repeats)}};
 }
 
 // One form's cost as bench measures it (compiler/bench_engine/bench_runner.hpp measurePermutationCost):
@@ -586,8 +636,9 @@ json benchRecipes(const ShaderLibrary& lib, const std::vector<Permutation>& perm
 // `kernel`); the kernels' compile stages on one thread (glslang, spirv-val, spirv-opt), which
 // says where the remaining time goes; SPIR-V instructions; and the run-time cost of three
 // materials' bench kernels compiled at each level, as `bench -O` measures it.
-json benchLevels(const ShaderLibrary& lib, const std::vector<MaterialDesc>& materials,
-                 const std::vector<Permutation>& perms, int repeats) {
+// Each level's compile time per permutation (-j1, -j2, -j2 with one stage) and where a
+// kernel's time goes on one thread, medians of `repeats` runs interleaved across levels.
+json levelCompileTimes(const ShaderLibrary& lib, const std::vector<Permutation>& perms, int repeats) {
   const OptimizationLevel levels[] = {OptimizationLevel::O0, OptimizationLevel::O1, OptimizationLevel::O2};
   std::vector<EmittedShader> kernels;
   for (const auto& p : perms) kernels.push_back(emitPermutation(lib, p, false, EmitMode::Engine));
@@ -615,10 +666,11 @@ json benchLevels(const ShaderLibrary& lib, const std::vector<MaterialDesc>& mate
         ms[name][stages.kernel ? "build_j2_kernel_only" : "build_j2_fragment_only"].push_back(msSince(t0));
       }
       CompileStageTimes sum;
-      CompileOptions co;
-      co.optimization = level;
-      for (const auto& k : kernels) {
-        const CompileStageTimes t = compileComputeGlsl(k.glsl, k.fileName, co).stages;
+      for (size_t i = 0; i < kernels.size(); ++i) {
+        // fp16 kernels are never optimized (docs/fp16.md), as a package builds them.
+        CompileOptions co;
+        co.optimization = perms[i].precision == "fp16" ? OptimizationLevel::O0 : level;
+        const CompileStageTimes t = compileComputeGlsl(kernels[i].glsl, kernels[i].fileName, co).stages;
         sum.parseMs += t.parseMs + t.linkMs + t.codegenMs;
         sum.validateMs += t.validateMs + t.validateOptimizedMs;
         sum.optimizeMs += t.optimizeMs;
@@ -639,6 +691,13 @@ json benchLevels(const ShaderLibrary& lib, const std::vector<MaterialDesc>& mate
     compile.push_back(row);
     std::cerr << "  " << name << ": -j2 " << row["build_j2_permutations_per_s"].get<double>() << " permutations/s\n";
   }
+  return compile;
+}
+
+json benchLevels(const ShaderLibrary& lib, const std::vector<MaterialDesc>& materials,
+                 const std::vector<Permutation>& perms, int repeats) {
+  const OptimizationLevel levels[] = {OptimizationLevel::O0, OptimizationLevel::O1, OptimizationLevel::O2};
+  const json compile = levelCompileTimes(lib, perms, repeats);
 
   harness::VulkanHarness gpu;
   bench::CostOptions o;
@@ -669,21 +728,36 @@ json benchLevels(const ShaderLibrary& lib, const std::vector<MaterialDesc>& mate
               {"runtime", runtime}};
 }
 
-std::string markdownLevels(const json& g) {
-  std::string s = "## g. Optimization levels (" + std::to_string(g["permutations"].get<size_t>()) +
-                  " permutations, SPIR-V with fragment shaders, no cache, median of " +
-                  std::to_string(g["repeats"].get<int>()) +
-                  " repeats interleaved across levels)\n\n"
-                  "| level | perm/s -j1 | perm/s -j2 | perm/s -j2 fragment only | perm/s -j2 kernel only | ms/perm "
-                  "-j2 | kernel glslang ms | kernel spirv-val ms | kernel spirv-opt ms | SPIR-V instructions "
-                  "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  for (const auto& row : g["compile"])
+// The levels' compile table of sections g and h.
+std::string markdownLevelCompile(const json& compile) {
+  std::string s =
+      "| level | perm/s -j1 | perm/s -j2 | perm/s -j2 fragment only | perm/s -j2 kernel only | ms/perm "
+      "-j2 | kernel glslang ms | kernel spirv-val ms | kernel spirv-opt ms | SPIR-V instructions "
+      "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const auto& row : compile)
     s += "| " + row["level"].get<std::string>() + " | " + fmt(row["build_j1_permutations_per_s"]) + " | " +
          fmt(row["build_j2_permutations_per_s"]) + " | " + fmt(row["build_j2_fragment_only_permutations_per_s"]) +
          " | " + fmt(row["build_j2_kernel_only_permutations_per_s"]) + " | " + fmt(row["build_j2_ms_per_permutation"]) +
          " | " + fmt(row["kernel_glslang_ms_per_permutation"]) + " | " +
          fmt(row["kernel_spirv_val_ms_per_permutation"]) + " | " + fmt(row["kernel_spirv_opt_ms_per_permutation"]) +
          " | " + std::to_string(row["spirv_instructions_total"].get<size_t>()) + " |\n";
+  return s;
+}
+
+std::string markdownSceneShape(const json& h) {
+  return "## h. Optimization levels on " + std::to_string(h["materials"].get<size_t>()) + " materials, " +
+         std::to_string(h["permutations"].get<size_t>()) +
+         " permutations (directional + point + ibl_lut, fp32 and fp16; SPIR-V with fragment shaders, no cache, "
+         "median of " +
+         std::to_string(h["repeats"].get<int>()) + " repeats interleaved across levels)\n\n" +
+         markdownLevelCompile(h["compile"]);
+}
+
+std::string markdownLevels(const json& g) {
+  std::string s = "## g. Optimization levels (" + std::to_string(g["permutations"].get<size_t>()) +
+                  " permutations, SPIR-V with fragment shaders, no cache, median of " +
+                  std::to_string(g["repeats"].get<int>()) + " repeats interleaved across levels)\n\n" +
+                  markdownLevelCompile(g["compile"]);
   s += "\nRun time of the bench kernel compiled at each level on " + g["device"].get<std::string>() +
        " (cost per evaluation, median of " + std::to_string(g["runtime_repeats"].get<int>()) +
        " paired repeats with its 95 % interval; ratio to O2 with bounds from the intervals' ends):\n\n"
@@ -783,6 +857,7 @@ std::string markdown(const json& r) {
   }
   if (r.contains("breakdown")) s += "\n" + markdownBreakdown(r["breakdown"]);
   if (r.contains("levels")) s += "\n" + markdownLevels(r["levels"]);
+  if (r.contains("scene_shape")) s += "\n" + markdownSceneShape(r["scene_shape"]);
   if (r.contains("recipes")) {
     s += "\n## f. spirv-opt recipes against RegisterPerformancePasses (one thread, median)\n\n"
          "| recipe | passes | spirv-opt ms per permutation | instructions, all permutations | permutations with more | "
@@ -869,6 +944,11 @@ int main(int argc, char** argv) {
     if (want('g')) {
       std::cerr << "g. optimization levels\n";
       r["levels"] = benchLevels(lib, materials, perms, repeats);
+    }
+    if (want('h')) {
+      std::cerr << "h. optimization levels on 60 materials, 120 permutations\n";
+      const std::vector<MaterialDesc> sixty = sixtyMaterials(lib, materials);
+      r["scene_shape"] = benchSceneShape(lib, sixty, repeats);
     }
     fs::remove_all(tmp);
     fs::create_directories(outDir);
