@@ -90,20 +90,25 @@ const MaterialDesc& byName(const std::vector<MaterialDesc>& materials, const std
   throw std::runtime_error("no example material " + name);
 }
 
+// Whether a material's model shades these lights together in this environment.
+bool shades(const ShaderLibrary& lib, const MaterialDesc& m, const std::string& env,
+            const std::vector<std::string>& lights) {
+  const ShadingModel* model = lib.findModel(m.model);
+  auto has = [](const std::vector<std::string>& v, const std::string& x) {
+    return std::find(v.begin(), v.end(), x) != v.end();
+  };
+  return has(model->environments, env) &&
+         std::all_of(lights.begin(), lights.end(), [&](const std::string& l) { return has(model->lights, l); });
+}
+
 // A realistic list: every example material at one and at three light types, with no
 // environment and with SH, where its model shades them.
 std::vector<Permutation> throughputList(const ShaderLibrary& lib, const std::vector<MaterialDesc>& materials) {
   std::vector<Permutation> perms;
   for (const auto& m : materials) {
-    const ShadingModel* model = lib.findModel(m.model);
-    auto has = [](const std::vector<std::string>& v, const std::string& x) {
-      return std::find(v.begin(), v.end(), x) != v.end();
-    };
     for (std::vector<std::string> lights : {std::vector<std::string>{"dir"}, {"dir", "point", "spot"}})
       for (std::string env : {"none", "sh"}) {
-        if (!has(model->environments, env) ||
-            !std::all_of(lights.begin(), lights.end(), [&](auto& l) { return has(model->lights, l); }))
-          continue;
+        if (!shades(lib, m, env, lights)) continue;
         Permutation p;
         p.material = &m;
         p.lights = lights;
@@ -247,22 +252,16 @@ json benchScaling(const ShaderLibrary& lib, const MaterialDesc& base, size_t max
   return rows;
 }
 
+json levelCompileTimes(const ShaderLibrary& lib, const std::vector<Permutation>& perms, int repeats);
+
 // The scene the -O0 target is stated on: 60 distinct materials, each shaded by a directional
 // and a point light under ibl_lut, at fp32 and fp16: 120 permutations. The shipped materials
 // in turn, each copy's first scalar input made a constant that differs per copy (as section c
 // does), so that no two emit the same GLSL.
-json levelCompileTimes(const ShaderLibrary& lib, const std::vector<Permutation>& perms, int repeats);
-
 std::vector<MaterialDesc> sixtyMaterials(const ShaderLibrary& lib, const std::vector<MaterialDesc>& shipped) {
-  auto has = [](const std::vector<std::string>& v, const std::string& x) {
-    return std::find(v.begin(), v.end(), x) != v.end();
-  };
   std::vector<const MaterialDesc*> bases;
-  for (const auto& m : shipped) {
-    const ShadingModel* model = lib.findModel(m.model);
-    if (has(model->environments, "ibl_lut") && has(model->lights, "dir") && has(model->lights, "point"))
-      bases.push_back(&m);
-  }
+  for (const auto& m : shipped)
+    if (shades(lib, m, "ibl_lut", {"dir", "point"})) bases.push_back(&m);
   std::vector<MaterialDesc> out;
   for (size_t i = 0; i < 60; ++i) {
     MaterialDesc m = *bases[i % bases.size()];
