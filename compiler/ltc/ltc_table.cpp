@@ -1,5 +1,6 @@
 #include "ltc/ltc_table.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -28,6 +29,30 @@ std::string number(float x) {
 
 ref::ltc::Mat3 TableEntry::minv() const {
   return ref::ltc::Mat3{{{double(m00), 0.0, double(m02)}, {0.0, 1.0, 0.0}, {double(m20), 0.0, double(m22)}}};
+}
+
+TableSample sampleBilinear(const Table& t, double perceptualRoughness, double NoV) {
+  const double last = t.size - 1.0;
+  const double x = std::clamp(perceptualRoughness, 0.0, 1.0) * last;
+  const double y = std::sqrt(std::clamp(1.0 - NoV, 0.0, 1.0)) * last;
+  const uint32_t i0 = std::min(static_cast<uint32_t>(x), t.size - 2),
+                 j0 = std::min(static_cast<uint32_t>(y), t.size - 2);
+  const double fx = x - i0, fy = y - j0;
+  double v[kColumns] = {};
+  auto add = [&](uint32_t i, uint32_t j, double w) {
+    const TableEntry& e = t.at(i, j);
+    const float c[kColumns] = {e.m00, e.m02, e.m20, e.m22, e.norm, e.fresnel};
+    for (size_t k = 0; k < kColumns; ++k) v[k] += w * c[k];
+  };
+  add(i0, j0, (1 - fx) * (1 - fy));
+  add(i0, j0 + 1, (1 - fx) * fy);
+  add(i0 + 1, j0, fx * (1 - fy));
+  add(i0 + 1, j0 + 1, fx * fy);
+  TableSample s;
+  s.minv = ref::ltc::Mat3{{{v[0], 0.0, v[1]}, {0.0, 1.0, 0.0}, {v[2], 0.0, v[3]}}};
+  s.norm = v[4];
+  s.fresnel = v[5];
+  return s;
 }
 
 TableEntry toTableEntry(const LtcEntry& e) {

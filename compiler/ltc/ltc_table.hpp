@@ -26,6 +26,15 @@ struct Table {
   const TableEntry& at(uint32_t i, uint32_t j) const { return entries[size_t{i} * size + j]; }
 };
 
+// The table read as a GPU reads a texture of it with bilinear filtering and clamp-to-edge,
+// in double: the four entries around (roughness, u = sqrt(1 - n.v)) on the grid i / (size - 1),
+// weighted linearly (the table's axes, ltc_fit.hpp).
+struct TableSample {
+  ref::ltc::Mat3 minv{};
+  double norm = 0, fresnel = 0;
+};
+TableSample sampleBilinear(const Table& t, double perceptualRoughness, double NoV);
+
 TableEntry toTableEntry(const LtcEntry& e);
 Table makeTable(uint32_t size, const FitSettings& settings, const std::vector<LtcEntry>& fitted);
 

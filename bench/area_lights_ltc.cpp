@@ -1,0 +1,166 @@
+#include "area_lights_ltc.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <sstream>
+
+#include "brick_call.hpp"
+#include "common/area_light_truth.hpp"
+#include "common/ltc_reference.hpp"
+#include "ratio_summary.hpp"
+
+namespace mb::bench {
+namespace {
+
+using namespace mb::ref;
+using nlohmann::json;
+
+Vec3 unitAt(double cosTheta, double phi) {
+  double s = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+  return {s * std::cos(phi), s * std::sin(phi), cosTheta};
+}
+
+Vec3 aroundDir(const Vec3& a, double angle, double phi) {
+  return lights::onCone(a, lights::frameAround(a), std::cos(angle), std::sin(angle), phi);
+}
+
+const ref::ltc::Mat3 kIdentity{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+
+// The standard model's sphere light by its default bricks (standard.json, standard_lights.glsl):
+// D at tube_point_karis's direction times norm_sphere_karis, V at the centre, both times the
+// exact horizon wrap; specular and diffuse as integrals over the light's radiance, so that they
+// compare with the brute force (E = L pi sin^2 a).
+struct RepresentativeSphere {
+  double specular = 0, diffuse = 0;
+};
+RepresentativeSphere representativeSphere(const Geometry& gc, double alpha, double sinA) {
+  RepresentativeSphere out;
+  std::vector<double> args = pack(gc);
+  args.push_back(sinA);
+  double wrap = callBrick("horizon_wrap_accurate", args)[0];
+  double E = kPi * sinA * sinA;
+  out.diffuse = wrap * E;
+  std::vector<double> p = pack(gc);
+  append(p, gc.l);
+  append(p, gc.l);
+  p.push_back(sinA);
+  std::vector<double> l = callBrick("tube_point_karis", p);
+  Geometry gD = makeGeometry(gc.n, gc.v, Vec3{l[0], l[1], l[2]});
+  if (!(gD.NoH > 1e-4)) return out;  // mb_facing
+  std::vector<double> k = pack(gc);
+  k.insert(k.end(), {alpha, sinA});
+  double norm = callBrick("norm_sphere_karis", k)[0];
+  out.specular =
+      lights::ggxD(gD.NoH, alpha) * norm * smithGgxCorrelatedV(std::max(gc.NoV, kMinNoV), gc.NoL, alpha) * wrap * E;
+  return out;
+}
+
+}  // namespace
+
+json measureLtcAreaLights(const mb::ltc::Table& table, int sphereSamples, int tubeSamples, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  const Vec3 n{0, 0, 1};
+  std::map<std::string, Summary> sphere, tube;
+  for (int i = 0; i < sphereSamples; ++i) {
+    double roughness = 0.05 + 0.95 * U(rng), alpha = roughness * roughness;
+    double sinA = std::exp(std::log(0.01) + (std::log(0.5) - std::log(0.01)) * U(rng));
+    double NoV = 0.05 + 0.95 * U(rng);
+    Vec3 v = unitAt(NoV, 2 * kPi * U(rng));
+    Vec3 r = n * (2 * NoV) - v;
+    bool nearMirror = i % 2;
+    Vec3 c = nearMirror ? aroundDir(r, (alpha + std::asin(sinA)) * 2.0 * U(rng), 2 * kPi * U(rng))
+                        : unitAt(-sinA + (1 + sinA) * U(rng), 2 * kPi * U(rng));
+    if (dot(n, c) <= -sinA + 1e-3) continue;  // no part above the horizon
+    Geometry gc = makeGeometry(n, v, c);
+    char where[160];
+    std::snprintf(where, sizeof where, "r %.4g, sin a %.4g, n.v %.4g, n.c %.4g, angle(r, c) %.4g rad", roughness, sinA,
+                  NoV, dot(n, c), std::acos(std::clamp(dot(normalize(r), c), -1.0, 1.0)));
+    arealights::LobeIntegrals truth = arealights::sphereLobe(gc, alpha, sinA, 32);
+    mb::ltc::TableSample s = mb::ltc::sampleBilinear(table, roughness, NoV);
+    ref::ltc::ViewFrame fr = ref::ltc::viewFrame(n, v);
+    std::vector<Vec3> polygon = ref::ltc::spherePolygon(c, sinA, n);
+    RepresentativeSphere rep = representativeSphere(gc, alpha, sinA);
+    if (truth.diffuse > 1e-12) {
+      sphere["diffuse: LTC, 8-gon"].add(kPi * ref::ltc::polygonIntegral(kIdentity, fr, polygon) / truth.diffuse, where);
+      sphere["diffuse: representative point (horizon_wrap_accurate)"].add(rep.diffuse / truth.diffuse, where);
+    }
+    if (!(truth.specular > 1e-6 * kPi * sinA * sinA)) continue;
+    double ltcSpec = s.norm * ref::ltc::polygonIntegral(s.minv, fr, polygon);
+    sphere["specular: LTC, 8-gon"].add(ltcSpec / truth.specular, where);
+    if (nearMirror) sphere["specular: LTC, 8-gon, lights near the mirror ray"].add(ltcSpec / truth.specular, where);
+    double exactCap = lights::capIntegral(
+        gc, alpha, sinA, [&](const Vec3& l) { return l.z > 0.0 ? ref::ltc::density(s.minv, fr.toLocal(l)) : 0.0; }, 32);
+    sphere["specular: LTC, exact cap (no polygon)"].add(s.norm * exactCap / truth.specular, where);
+    sphere["specular: representative point (tube_point_karis + norm_sphere_karis)"].add(rep.specular / truth.specular,
+                                                                                        where);
+  }
+  for (int i = 0; i < tubeSamples; ++i) {
+    double roughness = 0.05 + 0.95 * U(rng), alpha = roughness * roughness;
+    double NoV = 0.05 + 0.95 * U(rng);
+    Vec3 v = unitAt(NoV, 2 * kPi * U(rng));
+    Vec3 r = n * (2 * NoV) - v;
+    Vec3 c = i % 2 ? aroundDir(r, 0.5 * U(rng), 2 * kPi * U(rng)) : unitAt(-0.2 + 1.2 * U(rng), 2 * kPi * U(rng));
+    Vec3 axis = normalize(Vec3{U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5});
+    double halfLength = 0.05 + 1.5 * U(rng), R = std::exp(std::log(0.005) + (std::log(0.2) - std::log(0.005)) * U(rng));
+    Vec3 L0 = c - axis * halfLength, L1 = c + axis * halfLength;
+    // The shading point inside the capsule (a surface inside the light) means nothing.
+    double t = std::clamp(-dot(L0, L1 - L0) / dot(L1 - L0, L1 - L0), 0.0, 1.0);
+    if (length(L0 + (L1 - L0) * t) <= R) continue;
+    if (dot(n, L0) < -R && dot(n, L1) < -R) continue;  // no part above the horizon
+    Geometry gv = makeGeometry(n, v, n);
+    char where[200];
+    std::snprintf(where, sizeof where, "r %.4g, n.v %.4g, length %.4g, radius %.4g, n.L0 %.3g, n.L1 %.3g", roughness,
+                  NoV, 2 * halfLength, R, dot(n, L0), dot(n, L1));
+    arealights::LobeIntegrals truth = arealights::tubeLobe(gv, alpha, L0, L1, R);
+    if (!(truth.diffuse > 0.0)) continue;
+    mb::ltc::TableSample s = mb::ltc::sampleBilinear(table, roughness, NoV);
+    ref::ltc::ViewFrame fr = ref::ltc::viewFrame(n, v);
+    std::vector<Vec3> polygon = ref::ltc::tubePolygon(L0, L1, R, n);
+    double diffuse = kPi * ref::ltc::polygonIntegral(kIdentity, fr, polygon);
+    tube["diffuse: LTC, capsule polygon"].add(diffuse / truth.diffuse, where);
+    if (!(truth.specular > 1e-9 * truth.diffuse)) continue;
+    double spec = s.norm * ref::ltc::polygonIntegral(s.minv, fr, polygon);
+    tube["specular: LTC, capsule polygon"].add(spec / truth.specular, where);
+    if (i % 2) tube["specular: LTC, capsule polygon, lights near the mirror ray"].add(spec / truth.specular, where);
+    if (diffuse > 0.0)
+      tube["specular over diffuse: LTC, capsule polygon"].add((spec / diffuse) / (truth.specular / truth.diffuse),
+                                                              where);
+  }
+  auto rows = [](const std::map<std::string, Summary>& m) {
+    json out = json::array();
+    for (const auto& [key, summary] : m) {
+      json row = summary.toJson();
+      row["method"] = key;
+      out.push_back(row);
+    }
+    return out;
+  };
+  return {{"table", "shaderlib/ltc/ggx.json"}, {"seed", seed}, {"sphere", rows(sphere)}, {"tube", rows(tube)}};
+}
+
+std::string ltcMarkdown(const json& section) {
+  std::ostringstream md;
+  auto num = [](double x) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.3g", x);
+    return std::string(b);
+  };
+  for (const char* shape : {"sphere", "tube"}) {
+    md << "**" << (shape[0] == 's' ? "Sphere" : "Tube") << ", LTC and representative point** (ratio to the brute-force "
+       << "integral; partly below the horizon included)\n\n"
+       << "| method | samples | median ratio | median \\|ratio − 1\\| | 95 % \\|ratio − 1\\| | min | max |\n"
+       << "|---|---:|---:|---:|---:|---:|---:|\n";
+    for (const auto& r : section.at(shape))
+      md << "| " << r.at("method").get<std::string>() << " | " << r.at("samples").get<int>() << " | "
+         << num(r.at("ratio_median")) << " | " << num(r.at("rel_error_median")) << " | " << num(r.at("rel_error_p95"))
+         << " | " << num(r.at("ratio_min")) << " | " << num(r.at("ratio_max")) << " |\n";
+    md << "\n";
+  }
+  return md.str();
+}
+
+}  // namespace mb::bench

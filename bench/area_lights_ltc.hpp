@@ -1,0 +1,22 @@
+// Linearly transformed cosines (Heitz, Dupuy, Hill & Neubelt 2016) for sphere and tube lights
+// against the brute-force integrals (shaderlib/common/area_light_truth.hpp), beside the
+// representative-point method the standard model composes today, on the same configurations:
+// perceptual roughness 0.05 to 1, n.v 0.05 to 1, sin of the light's angular radius 0.01 to 0.5,
+// half of the lights near the mirror ray, the other half anywhere a part of them is above the
+// horizon (partly below it included). All in double, the table read as a bilinear texture
+// (ltc::sampleBilinear), the shapes as polygons (common/ltc_reference.hpp).
+#pragma once
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "ltc/ltc_table.hpp"
+
+namespace mb::bench {
+
+nlohmann::json measureLtcAreaLights(const ltc::Table& table, int sphereSamples, int tubeSamples, uint64_t seed);
+
+// The section's tables as Markdown (docs/models/lights.md).
+std::string ltcMarkdown(const nlohmann::json& section);
+
+}  // namespace mb::bench
