@@ -29,6 +29,16 @@ Vec3 aroundDir(const Vec3& a, double angle, double phi) {
 
 const ref::ltc::Mat3 kIdentity{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
 
+// The fan quadrature of the lobe itself over the horizon-clipped polygon, without the LTC: what
+// the control variate adds is measured against it.
+double quadratureAlone(const ref::ltc::ViewFrame& fr, const Vec3& v, double alpha, const std::vector<Vec3>& polygon) {
+  std::vector<Vec3> local;
+  for (const Vec3& w : polygon) local.push_back(fr.toLocal(w));
+  const Vec3 vl = fr.toLocal(v);
+  return ref::ltc::fanQuadrature(ref::ltc::clipToHalfSpace(local, Vec3{0, 0, 1}),
+                                 [&](const Vec3& l) { return ref::ltc::ggxLobeLocal(vl, alpha, l); });
+}
+
 // The standard model's sphere light by its default bricks (standard.json, standard_lights.glsl):
 // D at tube_point_karis's direction times norm_sphere_karis, V at the centre, both times the
 // exact horizon wrap; specular and diffuse as integrals over the light's radiance, so that they
@@ -97,6 +107,12 @@ json measureLtcAreaLights(const mb::ltc::Table& table, int sphereSamples, int tu
     sphere["specular: LTC, exact cap (no polygon)"].add(s.norm * exactCap / truth.specular, where);
     sphere["specular: representative point (tube_point_karis + norm_sphere_karis)"].add(rep.specular / truth.specular,
                                                                                         where);
+    double cv = ref::ltc::polygonSpecularWithResidual(s.minv, s.norm, alpha, fr, v, polygon);
+    sphere["specular: LTC + residual quadrature (sphere_ltc_cv)"].add(cv / truth.specular, where);
+    if (nearMirror)
+      sphere["specular: LTC + residual quadrature, lights near the mirror ray"].add(cv / truth.specular, where);
+    sphere["specular: the residual's quadrature alone (no LTC)"].add(
+        quadratureAlone(fr, v, alpha, polygon) / truth.specular, where);
   }
   for (int i = 0; i < tubeSamples; ++i) {
     double roughness = 0.05 + 0.95 * U(rng), alpha = roughness * roughness;
@@ -126,6 +142,16 @@ json measureLtcAreaLights(const mb::ltc::Table& table, int sphereSamples, int tu
     double spec = s.norm * ref::ltc::polygonIntegral(s.minv, fr, polygon);
     tube["specular: LTC, capsule polygon"].add(spec / truth.specular, where);
     if (i % 2) tube["specular: LTC, capsule polygon, lights near the mirror ray"].add(spec / truth.specular, where);
+    double cv = ref::ltc::polygonSpecularWithResidual(s.minv, s.norm, alpha, fr, v, polygon);
+    // The residual's quadrature on 4 and 16 sub-triangles per fan triangle (not what the brick
+    // does: 4x and 16x its lobe evaluations): how much of tube_ltc_cv's error is the quadrature's.
+    for (int levels : {1, 2})
+      tube["specular: LTC + residual on " + std::to_string(1 << (2 * levels)) + "x the sub-triangles"].add(
+          ref::ltc::polygonSpecularWithResidual(s.minv, s.norm, alpha, fr, v, polygon, levels) / truth.specular, where);
+    tube["specular: LTC + residual quadrature (tube_ltc_cv)"].add(cv / truth.specular, where);
+    if (i % 2) tube["specular: LTC + residual quadrature, lights near the mirror ray"].add(cv / truth.specular, where);
+    tube["specular: the residual's quadrature alone (no LTC)"].add(
+        quadratureAlone(fr, v, alpha, polygon) / truth.specular, where);
     if (diffuse > 0.0)
       tube["specular over diffuse: LTC, capsule polygon"].add((spec / diffuse) / (truth.specular / truth.diffuse),
                                                               where);

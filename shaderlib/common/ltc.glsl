@@ -48,12 +48,11 @@ float mb_ltc_edge_sum(int count) {
     return abs(sum) * (0.5 / MB_PI);
 }
 
-// Int of D_M over the polygon mbLtcPoly[0, count) (points relative to the shading point, world
-// space) above the horizon, for M^-1 = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]] in the table's
-// frame: n = z, v in the x-z plane on the +x side (compiler/ltc). Clipped twice: to the horizon,
-// where the lobe D_M stands for ends while D_M does not, then to D_M's own support
-// (M^-1 w).z >= 0. Overwrites mbLtcPoly.
-float mb_ltc_integrate(vec3 n, vec3 v, float m00, float m02, float m20, float m22, int count) {
+// Moves mbLtcPoly[0, count) (points relative to the shading point, world space) into the
+// table's frame, n = z and v in the x-z plane on the +x side (compiler/ltc), and clips it to the
+// horizon: the lobe D_M stands for ends there, D_M does not. Returns the new count; v in that
+// frame through vLocal.
+int mb_ltc_to_local(vec3 n, vec3 v, int count, out vec3 vLocal) {
     vec3 t1 = v - n * dot(n, v);
     float len = length(t1);
     vec3 t2;
@@ -68,7 +67,14 @@ float mb_ltc_integrate(vec3 n, vec3 v, float m00, float m02, float m20, float m2
         vec3 w = mbLtcPoly[i];
         mbLtcPoly[i] = vec3(dot(w, t1), dot(w, t2), dot(w, n));
     }
-    count = mb_ltc_clip(count);
+    vLocal = vec3(dot(v, t1), dot(v, t2), dot(v, n));
+    return mb_ltc_clip(count);
+}
+
+// Int of D_M over the local, horizon-clipped mbLtcPoly[0, count), for
+// M^-1 = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]: mapped by M^-1, clipped to D_M's support
+// (M^-1 w).z >= 0, summed. Overwrites mbLtcPoly.
+float mb_ltc_local_integral(float m00, float m02, float m20, float m22, int count) {
     for (int i = 0; i < count; ++i) {
         vec3 p = mbLtcPoly[i];
         mbLtcPoly[i] = vec3(m00 * p.x + m02 * p.z, p.y, m20 * p.x + m22 * p.z);
@@ -77,8 +83,145 @@ float mb_ltc_integrate(vec3 n, vec3 v, float m00, float m02, float m20, float m2
     return count < 3 ? 0.0 : mb_ltc_edge_sum(count);
 }
 
+// Int of D_M over the light polygon mbLtcPoly[0, count) above the horizon. Overwrites mbLtcPoly.
+float mb_ltc_integrate(vec3 n, vec3 v, float m00, float m02, float m20, float m22, int count) {
+    vec3 vLocal;
+    count = mb_ltc_to_local(n, v, count, vLocal);
+    return mb_ltc_local_integral(m00, m02, m20, m22, count);
+}
+
+// D_M at the unit direction l of the table's frame (Heitz et al. 2016 eq. 2 with the Jacobian
+// of l_o = M^-1 l / |M^-1 l|).
+float mb_ltc_density(float m00, float m02, float m20, float m22, vec3 l) {
+    vec3 o = vec3(m00 * l.x + m02 * l.z, l.y, m20 * l.x + m22 * l.z);
+    float len2 = dot(o, o);
+    float len = sqrt(len2);
+    if (!(o.z > 0.0)) return 0.0;
+    return (o.z / len) * abs(m00 * m22 - m02 * m20) / (MB_PI * len2 * len);
+}
+
+// The lobe the table was fitted to (F = 1) at the unit l of the table's frame (n = z): GGX D,
+// the exact height-correlated Smith V (Heitz 2014 eq. 99) and n.l, 0 below the horizon. D from
+// the unnormalized half vector H = v + l: with n = z, 1 - (n.h)^2 is (H.x^2 + H.y^2) / |H|^2
+// exactly, so D = a^2 / (pi u^2) with u = (H.x^2 + H.y^2 + a^2 H.z^2) / |H|^2 has none of the
+// cancellation of 1 - NoH^2 at the peak of a sharp lobe.
+float mb_ltc_lobe(vec3 v, float alpha, vec3 l) {
+    if (!(l.z > 0.0)) return 0.0;
+    vec3 H = v + l;
+    float a2 = alpha * alpha;
+    float HH = dot(H, H);
+    if (!(HH > 0.0)) return 0.0;  // l = -v: no half vector (and no light: l.z > 0 > v.z there)
+    // u = 1 - (1 - a^2) (n.h)^2 in [a^2, 1], divided out one factor at a time: t^2 underflowed in
+    // half precision where H is short (l near -v) and a^2 |H|^4 / 0 was Inf (stress, fp16).
+    float u = (dot(H.xy, H.xy) + a2 * H.z * H.z) / HH;
+    float D = (a2 / u) / (MB_PI * u);
+    float NoV = max(v.z, MB_MIN_N_DOT_V);
+    float NoL = l.z;
+    // V n.l in one quotient: V alone reaches 0.5 / (n.v alpha), beyond half precision's range at
+    // grazing views, and Inf - Inf in the residual was NaN (stress, fp16). The product is capped
+    // at the half range, as the models cap their radiance (MB_SATURATE_MEDIUMP).
+    float VNoL = 0.5 * NoL / (NoL * sqrt(NoV * NoV * (1.0 - a2) + a2) + NoV * sqrt(NoL * NoL * (1.0 - a2) + a2));
+    return MB_SATURATE_MEDIUMP(D * VNoL);
+}
+
+float mb_ltc_residual(vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22, vec3 l) {
+    return mb_ltc_lobe(v, alpha, l) - norm * mb_ltc_density(m00, m02, m20, m22, l);
+}
+
+// The LTC as a control variate (common/ltc_reference.hpp, polygonSpecularWithResidual): what
+// norm D_M misses of the lobe, Int (lobe - norm D_M), integrated over the local, horizon-clipped
+// mbLtcPoly[0, count) by triangles fanned from the vertices' mean direction, each its solid
+// angle (Van Oosterom & Strackee 1983) times the mean at three interior points (barycentric
+// 2/3, 1/6, 1/6).
+float mb_ltc_fan_residual(vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22, int count) {
+    vec3 centre = vec3(0.0);
+    for (int i = 0; i < count; ++i) centre += normalize(mbLtcPoly[i]);
+    centre = normalize(centre);
+    float sum = 0.0;
+    for (int k = 0; k < count; ++k) {
+        vec3 a = centre;
+        vec3 b = normalize(mbLtcPoly[k]);
+        vec3 c = normalize(mbLtcPoly[k + 1 == count ? 0 : k + 1]);
+        float omega = 2.0 * atan(abs(dot(a, cross(b, c))), 1.0 + dot(a, b) + dot(b, c) + dot(c, a));
+        // One call site in a loop: three inlined calls tripled lavapipe's JIT time.
+        float mean = 0.0;
+        for (int j = 0; j < 3; ++j) {
+            vec3 corner = j == 0 ? a : (j == 1 ? b : c);
+            vec3 l = normalize(corner * 0.5 + (a + b + c) * (1.0 / 6.0));  // 2/3 corner + 1/6 others
+            mean += mb_ltc_residual(v, alpha, norm, m00, m02, m20, m22, l);
+        }
+        sum += omega * mean * (1.0 / 3.0);
+    }
+    return sum;
+}
+
+// Int of the lobe (F = 1) over the light polygon mbLtcPoly[0, count) above the horizon: norm times
+// D_M's integral plus the residual's quadrature. Overwrites mbLtcPoly.
+float mb_ltc_specular_cv(vec3 n, vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22, int count) {
+    vec3 vLocal;
+    count = mb_ltc_to_local(n, v, count, vLocal);
+    if (count < 3) return 0.0;
+    float residual = mb_ltc_fan_residual(vLocal, alpha, norm, m00, m02, m20, m22, count);
+    // The integral of a non-negative lobe: a quadrature that overshoots a small result is cut at 0.
+    return max(norm * mb_ltc_local_integral(m00, m02, m20, m22, count) + residual, 0.0);
+}
+
 // The sine of a ball's angular radius; inside the ball the bound of the representative-point
 // bricks (standard_lights.glsl's MB_AREA_LIGHT_MAX_SIN_ALPHA).
 float mb_ltc_sin_alpha(float d, float radius) {
     return d > 0.0 ? min(radius / max(d, radius), 0.95) : 0.0;
+}
+
+// The sphere light as the area-matched regular 8-gon of the disk that faces the shading point
+// and whose rim is the sphere's cap rim (centre c cos a, radius sin a at unit distance; D_M and
+// the lobe integrate over directions, so that disk is the sphere exactly, as Heitz & Hill 2017
+// shade spheres), oriented by Duff et al.'s basis about c as the reference (spherePolygon).
+// Fills mbLtcPoly; returns its count.
+int mb_ltc_sphere_polygon(vec3 n, vec3 toCenter, float radius) {
+    float d = length(toCenter);
+    vec3 c = d > 0.0 ? toCenter / d : n;
+    float sinA = mb_ltc_sin_alpha(d, radius);
+    float cosA = sqrt(1.0 - sinA * sinA);
+    vec3 e1, e2;
+    mb_orthonormal_basis(c, e1, e2);
+    const float r = 0.70710678118654752;  // cos(pi / 4)
+    const vec2 rim[8] = vec2[8](vec2(1.0, 0.0), vec2(r, r), vec2(0.0, 1.0), vec2(-r, r), vec2(-1.0, 0.0), vec2(-r, -r),
+                                vec2(0.0, -1.0), vec2(r, -r));
+    float s = sinA * 1.05390926;  // the 8-gon's area scale, sqrt(2 pi / (8 sin(pi / 4)))
+    for (int i = 0; i < 8; ++i) mbLtcPoly[i] = c * cosA + (e2 * rim[i].x + e1 * rim[i].y) * s;
+    return 8;
+}
+
+// The tube (capsule) light's silhouette from the shading point: each end ball's cap rim as a
+// half 4-gon (the half away from the other end, stretched across the axis by pi / (4 sin(pi / 4))
+// so that its area is the half disk's) joined by the cylinder's sides, which run from +w to -w
+// at each end, w perpendicular to the axis and the end's direction. Vertex for vertex the
+// reference's tubePolygon. Fills mbLtcPoly; returns its count.
+int mb_ltc_tube_polygon(vec3 n, vec3 L0, vec3 L1, float radius) {
+    vec3 axis = L1 - L0;
+    float axisLength = length(axis);
+    const float r = 0.70710678118654752;  // cos(pi / 4)
+    const vec2 half4[5] = vec2[5](vec2(1.0, 0.0), vec2(r, r), vec2(0.0, 1.0), vec2(-r, r), vec2(-1.0, 0.0));
+    const float stretch = 1.11072073;  // pi / (4 sin(pi / 4))
+    for (int end = 0; end < 2; ++end) {
+        vec3 E = end == 0 ? L0 : L1;
+        float d = length(E);
+        vec3 c = d > 0.0 ? E / d : n;
+        float sinA = mb_ltc_sin_alpha(d, radius);
+        float cosA = sqrt(1.0 - sinA * sinA);
+        vec3 w = cross(axis, c);
+        float wl = length(w);
+        vec3 e1, e2;
+        mb_orthonormal_basis(c, e1, e2);
+        w = wl > 1e-12 ? w / wl : e1;
+        // Away from the other end; seen end-on (or with no length) the ends take opposite
+        // halves, so that a zero-length tube is its sphere's disk.
+        vec3 o = cross(c, w);
+        float away = dot(o, end == 0 ? -axis : axis);
+        if (away < -1e-9 * axisLength || (!(away > 1e-9 * axisLength) && end == 1)) o = -o;
+        float side = end == 0 ? 1.0 : -1.0;
+        for (int i = 0; i < 5; ++i)
+            mbLtcPoly[end * 5 + i] = c * cosA + (w * (side * half4[i].x) + o * (stretch * half4[i].y)) * sinA;
+    }
+    return 10;
 }
