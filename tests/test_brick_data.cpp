@@ -18,6 +18,7 @@
 #include "fake_library.hpp"
 #include "load/gltf_import.hpp"
 #include "lut/lut_kernel.hpp"
+#include "preview/preview.hpp"
 #include "stress/stress_run.hpp"
 #include "support/gltf_support.hpp"
 #include "support/harness_support.hpp"
@@ -362,6 +363,35 @@ TEST_CASE("the shipped library's kernel roles are the bricks the C++ named", "[l
                                                               "v_smith_ggx_correlated", "d_charlie", "v_ashikhmin"});
   REQUIRE(lib.brickForKernelRole("prefilter_d") != nullptr);
   CHECK(lib.brickForKernelRole("prefilter_d")->id == "d_ggx");
+  REQUIRE(lib.brickForKernelRole("multiscatter") != nullptr);
+  CHECK(lib.brickForKernelRole("multiscatter")->id == "energy_compensation_filament");
+  REQUIRE(lib.brickForKernelRole("preview_tonemap") != nullptr);
+  CHECK(lib.brickForKernelRole("preview_tonemap")->id == "tonemap_aces_narkowicz");
+}
+
+TEST_CASE("the preview's default tonemap is the brick with kernel role preview_tonemap",
+          "[library][brick-data][preview]") {
+  ScratchLibrary scratch;
+  const std::string role = "\"kernel_roles\": [\"preview_tonemap\"],\n      ";
+  scratch.edit("tonemap/slot.json", role, "");
+  SECTION("moved to another tonemap brick: taken there, with no C++ change") {
+    scratch.edit("tonemap/slot.json", "\"file\": \"tonemap_aces_hill.glsl\",",
+                 role + "\"file\": \"tonemap_aces_hill.glsl\",");
+    auto lib = ShaderLibrary::load(scratch.root());
+    REQUIRE(lib.brickForKernelRole("preview_tonemap") != nullptr);
+    CHECK(lib.brickForKernelRole("preview_tonemap")->id == "tonemap_aces_hill");
+    CHECK_NOTHROW(preview::checkPreviewOptions(lib, {}, preview::PreviewOptions{}));
+  }
+  SECTION("taken by no brick: the preview needs --tonemap, and says so") {
+    auto lib = ShaderLibrary::load(scratch.root());
+    auto ds = test::diagnosticsOf([&] { preview::checkPreviewOptions(lib, {}, preview::PreviewOptions{}); });
+    REQUIRE(ds.size() == 1);
+    CHECK(ds[0].code == "E-PREVIEW-TONEMAP");
+    CHECK_THAT(ds[0].message, Contains("kernel role 'preview_tonemap'"));
+    preview::PreviewOptions named;
+    named.tonemap = "tonemap_aces_hill";
+    CHECK_NOTHROW(preview::checkPreviewOptions(lib, {}, named));
+  }
 }
 
 namespace {
