@@ -16,8 +16,11 @@
 #include "emit/precision.hpp"
 #include "energy/energy_checks.hpp"
 #include "fake_library.hpp"
+#include "load/gltf_import.hpp"
 #include "lut/lut_kernel.hpp"
+#include "preview/preview.hpp"
 #include "stress/stress_run.hpp"
+#include "support/gltf_support.hpp"
 #include "support/harness_support.hpp"
 #include "support/pipeline_support.hpp"
 #include "validate/brick_catalogue.hpp"
@@ -123,11 +126,22 @@ class ScratchLibrary {
     doc["bricks"].push_back(nlohmann::ordered_json::parse(test::readFile(entryFile)));
     std::ofstream(root_ / slot / "slot.json", std::ios::binary) << doc.dump(2) << "\n";
   }
-  // Keeps only these slots, and no models, in manifest.json (a smaller catalogue).
+  // Replaces the first `from` in the library file `relative` by `to`; returns the new text.
+  std::string edit(const std::string& relative, const std::string& from, const std::string& to) const {
+    std::string text = test::readFile(root_ / relative);
+    auto pos = text.find(from);
+    REQUIRE(pos != std::string::npos);
+    text.replace(pos, from.size(), to);
+    std::ofstream(root_ / relative, std::ios::binary) << text;
+    return text;
+  }
+  // Keeps only these slots, and no models (nor the glTF defaults, which name one), in
+  // manifest.json (a smaller catalogue).
   void keepSlots(const std::vector<std::string>& slots) const {
     auto doc = nlohmann::ordered_json::parse(test::readFile(root_ / "manifest.json"));
     doc["slots"] = slots;
     doc["models"] = nlohmann::ordered_json::array();
+    doc.erase("gltf_defaults");
     std::ofstream(root_ / "manifest.json", std::ios::binary) << doc.dump(2) << "\n";
   }
 
@@ -349,6 +363,156 @@ TEST_CASE("the shipped library's kernel roles are the bricks the C++ named", "[l
                                                               "v_smith_ggx_correlated", "d_charlie", "v_ashikhmin"});
   REQUIRE(lib.brickForKernelRole("prefilter_d") != nullptr);
   CHECK(lib.brickForKernelRole("prefilter_d")->id == "d_ggx");
+  REQUIRE(lib.brickForKernelRole("multiscatter") != nullptr);
+  CHECK(lib.brickForKernelRole("multiscatter")->id == "energy_compensation_filament");
+  REQUIRE(lib.brickForKernelRole("preview_tonemap") != nullptr);
+  CHECK(lib.brickForKernelRole("preview_tonemap")->id == "tonemap_aces_narkowicz");
+}
+
+TEST_CASE("the preview's default tonemap is the brick with kernel role preview_tonemap",
+          "[library][brick-data][preview]") {
+  ScratchLibrary scratch;
+  const std::string role = "\"kernel_roles\": [\"preview_tonemap\"],\n      ";
+  scratch.edit("tonemap/slot.json", role, "");
+  SECTION("moved to another tonemap brick: taken there, with no C++ change") {
+    scratch.edit("tonemap/slot.json", "\"file\": \"tonemap_aces_hill.glsl\",",
+                 role + "\"file\": \"tonemap_aces_hill.glsl\",");
+    auto lib = ShaderLibrary::load(scratch.root());
+    REQUIRE(lib.brickForKernelRole("preview_tonemap") != nullptr);
+    CHECK(lib.brickForKernelRole("preview_tonemap")->id == "tonemap_aces_hill");
+    CHECK_NOTHROW(preview::checkPreviewOptions(lib, {}, preview::PreviewOptions{}));
+  }
+  SECTION("taken by no brick: the preview needs --tonemap, and says so") {
+    auto lib = ShaderLibrary::load(scratch.root());
+    auto ds = test::diagnosticsOf([&] { preview::checkPreviewOptions(lib, {}, preview::PreviewOptions{}); });
+    REQUIRE(ds.size() == 1);
+    CHECK(ds[0].code == "E-PREVIEW-TONEMAP");
+    CHECK_THAT(ds[0].message, Contains("kernel role 'preview_tonemap'"));
+    preview::PreviewOptions named;
+    named.tonemap = "tonemap_aces_hill";
+    CHECK_NOTHROW(preview::checkPreviewOptions(lib, {}, named));
+  }
+}
+
+namespace {
+
+// A glTF material with the sheen and anisotropy extensions, for the glTF defaults below.
+const char* kSheenGltf = R"({"asset": {"version": "2.0"}, "materials": [{"name": "Velvet", "extensions": {
+  "KHR_materials_sheen": {"sheenColorFactor": [0.5, 0.5, 0.5]},
+  "KHR_materials_anisotropy": {"anisotropyStrength": 0.5}}}]})";
+
+std::map<std::string, std::string> bricksOf(const MaterialSource& s) {
+  std::map<std::string, std::string> out;
+  for (const auto& [role, id] : s.bricks) out[role.value] = id.value;
+  return out;
+}
+
+// The only diagnostic of loading `root`, with its code, at the first `needle` (after `after`)
+// of gltf_defaults.json's `text`.
+Diagnostic onlyGltfDefaultsError(const fs::path& root, const std::string& text, const std::string& code,
+                                 const std::string& needle, const std::string& after = "") {
+  std::vector<Diagnostic> ds;
+  try {
+    ShaderLibrary::load(root);
+  } catch (const DiagnosticError& e) {
+    ds = e.diagnostics();
+  }
+  INFO("diagnostics:\n" << (ds.empty() ? std::string("(none)") : DiagnosticError(ds).what()));
+  REQUIRE(ds.size() == 1);
+  CHECK(ds[0].code == code);
+  CHECK(fs::path(ds[0].where.file) == (root / "gltf_defaults.json").lexically_normal());
+  auto [line, column] = test::positionOf(text, needle, after);
+  CHECK(ds[0].where.line == line);
+  CHECK(ds[0].where.column == column);
+  return ds[0];
+}
+
+}  // namespace
+
+TEST_CASE("glTF defaults: read from the library's gltf_defaults.json, checked at file:line:column",
+          "[library][brick-data][gltf]") {
+  ScratchLibrary scratch;
+  SECTION("a binding declared in the data is bound, with no C++ change") {
+    scratch.edit("gltf_defaults.json", R"({"role": "diffuse", "brick": "diffuse_lambert"})",
+                 R"({"role": "diffuse", "brick": "diffuse_disney_burley"})");
+    scratch.edit(
+        "gltf_defaults.json", "\"features\": [",
+        R"("features": [{"feature": "sheen", "why": "test", "bricks": [{"role": "sheen_v", "brick": "v_charlie"}]},)");
+    auto lib = ShaderLibrary::load(scratch.root());
+    auto ms = parseGltf(kSheenGltf, "t.gltf", lib);
+    REQUIRE(ms.size() == 1);
+    auto bricks = bricksOf(ms[0].source);
+    CHECK(bricks.at("diffuse") == "diffuse_disney_burley");
+    CHECK(bricks.at("sheen_v") == "v_charlie");
+    CHECK(bricks.at("anisotropy_alpha") == "aniso_alpha_gltf");
+    MaterialDesc d = resolveMaterial(ms[0].source, lib);
+    CHECK(d.bricks.at("sheen_v") == "v_charlie");
+    CHECK(d.bricks.at("diffuse") == "diffuse_disney_burley");
+  }
+  // Each mistake in the file: what it replaces, the error, where, and what the message says.
+  struct Mistake {
+    const char* what;
+    const char* from;
+    const char* to;
+    const char* code;
+    const char* at;     // the error's position: the first occurrence, after `after`
+    const char* after;  // (empty: from the start)
+    const char* says;   // in the message or its suggestion
+  };
+  const Mistake mistakes[] = {
+      {"a brick of another slot", "\"aniso_alpha_gltf\"", "\"d_ggx\"", "E-UNKNOWN-BRICK", "\"d_ggx\"",
+       "anisotropy_alpha", "'d_ggx' is not a brick of slot 'anisotropy_alpha'"},
+      {"an unknown brick id", "\"f_schlick_nov\"", "\"f_schlick_now\"", "E-UNKNOWN-BRICK", "\"f_schlick_now\"", "",
+       "did you mean 'f_schlick_nov'"},
+      {"an unknown role", "\"role\": \"fresnel\"", "\"role\": \"fresnell\"", "E-UNKNOWN-ROLE", "\"fresnell\"", "",
+       "did you mean 'fresnel'?"},
+      {"a feature's role in 'always': a role the material may not have",
+       "\"role\": \"fresnel\", \"brick\": \"f_schlick\"", "\"role\": \"clearcoat_fresnel\", \"brick\": \"f_schlick\"",
+       "E-INVALID-VALUE", "\"clearcoat_fresnel\"", "", "exists only with feature 'clearcoat'"},
+      {"a feature the model does not have", "\"feature\": \"anisotropy\"", "\"feature\": \"anisotropic\"",
+       "E-UNKNOWN-NAME", "\"anisotropic\"", "", "did you mean 'anisotropy'?"},
+      {"a missing field", "\"model\": \"standard\",", "", "E-MISSING-FIELD", "{", "", "model"},
+  };
+  for (const Mistake& m : mistakes) {
+    DYNAMIC_SECTION(m.what) {
+      std::string text = scratch.edit("gltf_defaults.json", m.from, m.to);
+      auto d = onlyGltfDefaultsError(scratch.root(), text, m.code, m.at, m.after);
+      CHECK_THAT(d.message + " " + d.suggestion, Contains(m.says));
+    }
+  }
+  SECTION("a library without glTF defaults loads, and refuses glTF import at its manifest") {
+    scratch.edit("manifest.json", ",\n  \"gltf_defaults\": \"gltf_defaults.json\"", "");
+    auto lib = ShaderLibrary::load(scratch.root());
+    CHECK(lib.gltfDefaults().model.empty());
+    auto ds = test::diagnosticsOf([&] { parseGltf(kSheenGltf, "t.gltf", lib); });
+    REQUIRE(ds.size() == 1);
+    CHECK(ds[0].code == "E-GLTF-NO-DEFAULTS");
+    CHECK(fs::path(ds[0].where.file) == scratch.root() / "manifest.json");
+    CHECK(ds[0].where.line == 1);
+  }
+}
+
+TEST_CASE("the shipped glTF defaults are the bricks the C++ named", "[library][brick-data][gltf]") {
+  const GltfDefaults& d = test::shippedLibrary().gltfDefaults();
+  CHECK(d.file == "gltf_defaults.json");
+  CHECK(d.model == "standard");
+  auto pairs = [](const std::vector<GltfBinding>& v) {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& b : v) out.emplace_back(b.role, b.brick);
+    return out;
+  };
+  using Pairs = std::vector<std::pair<std::string, std::string>>;
+  CHECK(pairs(d.always) == Pairs{{"roughness", "roughness_clamped"},
+                                 {"diffuse", "diffuse_lambert"},
+                                 {"specular_d", "d_ggx"},
+                                 {"specular_v", "v_smith_ggx_correlated"},
+                                 {"fresnel", "f_schlick"}});
+  REQUIRE(d.features.size() == 2);
+  CHECK(pairs(d.features.at("clearcoat")) == Pairs{{"clearcoat_v", "v_smith_ggx_correlated"},
+                                                   {"clearcoat_fresnel", "f_schlick_nov"},
+                                                   {"f0_clearcoat", "f0_clearcoat_none"},
+                                                   {"clearcoat_base_roughness", "coat_base_roughness_keep"}});
+  CHECK(pairs(d.features.at("anisotropy")) == Pairs{{"anisotropy_alpha", "aniso_alpha_gltf"}});
 }
 
 TEST_CASE("a new D brick from three files joins validation, stress, energy and the catalogue", "[brick-data][vulkan]") {

@@ -61,7 +61,7 @@ const std::string kRoot = R"({"asset": {"version": "2.0"}, )";
 TEST_CASE("pbrMetallicRoughness with textures: constants, texture inputs, surface code", "[gltf]") {
   std::string file = example("textured_props.gltf");
   std::string text = test::readFile(file);
-  std::vector<GltfMaterial> ms = readGltf(file);
+  std::vector<GltfMaterial> ms = readGltf(file, test::shippedLibrary());
   REQUIRE(ms.size() == 4);
 
   const MaterialSource& wood = ms[0].source;
@@ -139,7 +139,7 @@ TEST_CASE("pbrMetallicRoughness with textures: constants, texture inputs, surfac
 }
 
 TEST_CASE("KHR extensions: clear coat, sheen, anisotropy, specular + ior, emissive strength", "[gltf]") {
-  std::vector<GltfMaterial> ms = readGltf(example("showroom.gltf"));
+  std::vector<GltfMaterial> ms = readGltf(example("showroom.gltf"), test::shippedLibrary());
   REQUIRE(ms.size() == 5);
   for (const auto& m : ms) {
     INFO(m.source.name.value);
@@ -181,8 +181,8 @@ TEST_CASE("the .glb example gives the same materials as its .gltf", "[gltf]") {
   // examples/gltf/make_glb.py).
   CHECK(test::readFile(example("showroom.glb")) == packGlb(gltfText));
 
-  std::vector<GltfMaterial> a = readGltf(example("showroom.gltf"));
-  std::vector<GltfMaterial> b = readGltf(example("showroom.glb"));
+  std::vector<GltfMaterial> a = readGltf(example("showroom.gltf"), test::shippedLibrary());
+  std::vector<GltfMaterial> b = readGltf(example("showroom.glb"), test::shippedLibrary());
   REQUIRE(a.size() == b.size());
   for (size_t i = 0; i < a.size(); ++i) {
     const MaterialSource &x = a[i].source, &y = b[i].source;
@@ -202,13 +202,13 @@ TEST_CASE("the .glb example gives the same materials as its .gltf", "[gltf]") {
   }
   // A BIN chunk and chunks of unknown type are skipped.
   std::string withBin = packGlb(gltfText, std::string(10, '\x7f'));
-  CHECK(parseGltf(withBin, "x.glb").size() == a.size());
+  CHECK(parseGltf(withBin, "x.glb", test::shippedLibrary()).size() == a.size());
 }
 
 TEST_CASE("unsupported extensions: a warning when used, an error when required", "[gltf]") {
   std::string file = example("unsupported_used.gltf");
   std::string text = test::readFile(file);
-  std::vector<MaterialSource> ms = readGltfMaterials(file);
+  std::vector<MaterialSource> ms = readGltfMaterials(file, test::shippedLibrary());
   REQUIRE(ms.size() == 1);
   REQUIRE(ms[0].warnings.size() == 2);
   // The file-level one (listed, used by no material) first, then the material's own use.
@@ -226,7 +226,7 @@ TEST_CASE("unsupported extensions: a warning when used, an error when required",
   std::string required = example("unsupported_required.gltf");
   std::vector<Diagnostic> ds;
   try {
-    readGltf(required);
+    readGltf(required, test::shippedLibrary());
     FAIL("an unsupported required extension must fail");
   } catch (const DiagnosticError& e) {
     ds = e.diagnostics();
@@ -244,7 +244,7 @@ TEST_CASE("material names become unique identifiers", "[gltf]") {
     {"name": "Material.001"}, {"name": "Material.001"}, {"name": "Material_001"}, {},
     {"name": "1st coat"}, {"name": "gl_Paint"}, {"name": "Mat\u00e9riau  blau"}, {"name": "..."}]})";
   std::vector<MaterialSource> ms;
-  for (auto& m : parseGltf(text, "dir/My Scene.gltf")) ms.push_back(m.source);
+  for (auto& m : parseGltf(text, "dir/My Scene.gltf", test::shippedLibrary())) ms.push_back(m.source);
   std::vector<std::string> names;
   for (const auto& m : ms) names.push_back(m.name.value);
   CHECK(names == std::vector<std::string>{"Material_001", "Material_001_2", "Material_001_3", "My_Scene_material3",
@@ -263,7 +263,7 @@ TEST_CASE("texture-dependent warnings and combinations", "[gltf]") {
       "KHR_materials_sheen": {"sheenRoughnessTexture": {"index": 0}}
     }
   }]})";
-  std::vector<GltfMaterial> ms = parseGltf(text, "t.gltf");
+  std::vector<GltfMaterial> ms = parseGltf(text, "t.gltf", test::shippedLibrary());
   REQUIRE(ms.size() == 1);
   const MaterialSource& s = ms[0].source;
   // The resolver puts features in the model's order; here the set matters.

@@ -159,7 +159,7 @@ TEST_CASE("no prefix or byte flip of a valid .glb or .gltf crashes the import", 
   size_t failures = 0;
   auto attempt = [&](const std::string& bytes) {
     try {
-      parseGltf(bytes, "t.glb");
+      parseGltf(bytes, "t.glb", test::shippedLibrary());
     } catch (const DiagnosticError& e) {
       ++failures;
       REQUIRE_FALSE(e.diagnostics().empty());
@@ -176,14 +176,15 @@ TEST_CASE("no prefix or byte flip of a valid .glb or .gltf crashes the import", 
       flipped[i] = static_cast<char>(flipped[i] ^ bit);
       attempt(flipped);
     }
-  CHECK_NOTHROW(parseGltf(glb, "t.glb"));
+  CHECK_NOTHROW(parseGltf(glb, "t.glb", test::shippedLibrary()));
 }
 
 TEST_CASE("a missing file is E-FILE-NOT-FOUND; a directory or a device E-FILE-NOT-REGULAR, without hanging", "[gltf]") {
-  test::theOne(test::diagnosticsOf([&] { readGltf("/nonexistent/scene.gltf"); }), "E-FILE-NOT-FOUND");
+  test::theOne(test::diagnosticsOf([&] { readGltf("/nonexistent/scene.gltf", test::shippedLibrary()); }),
+               "E-FILE-NOT-FOUND");
   for (const char* path : {"/tmp", "/dev/zero"}) {
     INFO(path);
-    test::theOne(test::diagnosticsOf([&] { readGltf(path); }), "E-FILE-NOT-REGULAR");
+    test::theOne(test::diagnosticsOf([&] { readGltf(path, test::shippedLibrary()); }), "E-FILE-NOT-REGULAR");
   }
 }
 

@@ -201,7 +201,9 @@ Command addPreviewCommand(CLI::App& app, GlobalOptions& g) {
       ->check(CLI::IsMember(allPrecisions()));
   cmd->add_option("--sweep", args->options.sweep, "A row of spheres sweeping this parameter over its range");
   cmd->add_option("--sweep-count", args->options.sweepCount, "Spheres in a sweep (default 5, 2..16)");
-  cmd->add_option("--tonemap", args->options.tonemap, "Tonemap brick (default: tonemap_aces_narkowicz)");
+  cmd->add_option(
+      "--tonemap", args->options.tonemap,
+      "Tonemap brick (default: the library's brick with kernel role preview_tonemap, tonemap_aces_narkowicz)");
   cmd->add_option("--exposure", args->options.exposure, "Radiance scale before the tonemap (default 1)");
   cmd->add_option("-j,--threads", args->options.threads, "Reference render threads (default: all cores)");
   cmd->add_flag("--json", args->json, "JSON report");

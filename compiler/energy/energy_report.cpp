@@ -218,10 +218,10 @@ std::string energyMarkdown(const EnergyReport& r, const std::string& command) {
   if (!r.compensation.cells.empty()) {
     s +=
         fmt("\n## Multiscatter compensation\n\n`d_ggx * v_smith_ggx_correlated` at f0 = 1 times "
-            "`energy_compensation_filament` (GPU) fed with DFG channel 1 from the CPU quadrature "
+            "`%s` (GPU) fed with DFG channel 1 from the CPU quadrature "
             "(`dfgIntegrals`). Max |1 − albedo| = %.2e; the derived per-cell margin (multiscatter.hpp) is at most "
             "%.2e; %s. Compensated albedo:\n\n",
-            r.compensation.maxDeviation(), r.compensation.maxMargin(),
+            r.compensation.brick.c_str(), r.compensation.maxDeviation(), r.compensation.maxMargin(),
             r.compensation.passed() ? "every cell is within its margin" : "SOME CELLS ARE OUTSIDE THEIR MARGIN");
     s += gridTable(g, "E·comp", [&](size_t c) { return fmt("%.6f", r.compensation.cells[c].compensated); });
     double worst = 0;

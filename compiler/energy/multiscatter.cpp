@@ -26,7 +26,8 @@ bool CompensationResult::passed() const {
 
 CompensationResult multiscatterCompensation(harness::VulkanHarness& gpu, ProbeCache& probes, const ShaderLibrary& lib,
                                             const LobeAlbedo& ggx, const EnergyGrid& grid) {
-  const Brick* brick = lib.findBrick("energy_compensation_filament");
+  // The brick the check is about is the one that takes its kernel role (slot.json).
+  const Brick* brick = lib.brickForKernelRole("multiscatter");
   if (!brick) return {};
   const std::vector<GridCell> cells = gridCells(grid);
   std::vector<double> dfg(cells.size()), dfgConv(cells.size());
@@ -44,6 +45,7 @@ CompensationResult multiscatterCompensation(harness::VulkanHarness& gpu, ProbeCa
   });
 
   CompensationResult r;
+  r.brick = brick->id;
   for (size_t c = 0; c < cells.size(); ++c) {
     const AlbedoCell& a = ggx.cells[c];
     CompensationCell m;

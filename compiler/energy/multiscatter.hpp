@@ -1,6 +1,7 @@
 // Multiple-scattering compensation at f0 = 1: the single-scattering GGX lobe
 // (d_ggx * v_smith_ggx_correlated, albedo E from the white furnace on the GPU) times the
-// energy_compensation_filament brick run on the GPU with E_dfg = DFG channel 1 from the CPU
+// brick with kernel role "multiscatter" (energy_compensation_filament in the shipped library,
+// slot.json) run on the GPU with E_dfg = DFG channel 1 from the CPU
 // quadrature (common/ibl_reference.hpp dfgIntegrals). The factor is 1 + f0 (1/E_dfg - 1),
 // i.e. 1/E_dfg at f0 = 1, so the compensated albedo E * comp should be 1 (Filament sec.
 // 5.3.4.7, after Kulla & Conty 2017).
@@ -22,13 +23,14 @@ struct CompensationCell {
   double NoV = 0, perceptualRoughness = 0;
   double albedo = 0;          // E_gpu, single scattering
   double dfgY = 0;            // E_dfg, CPU quadrature
-  double compensation = 0;    // GPU output of energy_compensation_filament
+  double compensation = 0;    // GPU output of the compensation brick
   double compensated = 0;     // albedo * compensation
   double margin = 0;          // derived bound on |compensated - 1|
   double referenceVsDfg = 0;  // A_ref - E_dfg: two independent quadratures of one integral
 };
 
 struct CompensationResult {
+  std::string brick;  // the brick with kernel role "multiscatter" (energy_compensation_filament)
   std::vector<CompensationCell> cells;
   double maxDeviation() const;  // max |1 - compensated|
   double maxMargin() const;

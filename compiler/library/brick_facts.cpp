@@ -110,11 +110,13 @@ const std::vector<KernelRole>& brickKernelRoles() {
       {"dfg_visibility", "specular_v", "the DFG LUT's GGX channels"},
       {"cloth_dfg_d", "specular_d", "the DFG LUT's cloth channel"},
       {"cloth_dfg_v", "specular_v", "the DFG LUT's cloth channel"},
-      {"prefilter_d", "specular_d", "the environment prefilter"}};
+      {"prefilter_d", "specular_d", "the environment prefilter"},
+      {"multiscatter", "energy_compensation", "the energy checks' multiscatter compensation"},
+      {"preview_tonemap", "tonemap", "the preview's default tonemap"}};
   return v;
 }
 
-// "kernel_roles": the library's own kernels (lut/, preview/) find their bricks by these, so a
+// "kernel_roles": the library's own kernels (lut/, preview/, energy/) find their bricks by these, so a
 // role names a slot (the signature the kernel calls) and is taken by one brick only.
 void LibraryLoader::readKernelRoles(JsonFields& f, const std::string& ptr, const Slot& slot, Brick& b) {
   if (!f.find(ptr)) return;

@@ -45,12 +45,14 @@ LibraryData LibraryLoader::run() {
   auto manifest = loadJson("manifest.json", {});
   if (!manifest) return std::move(data_);
   JsonFields f(*manifest, sink_);
-  if (!f.object("", {"schema", "units", "slots", "models"}, {}, "the library manifest")) return std::move(data_);
+  if (!f.object("", {"schema", "units", "slots", "models"}, {"gltf_defaults"}, "the library manifest"))
+    return std::move(data_);
   checkSchema(f);
   readUnits(f);
   forEachName(f, "/slots", "slot", [&](const std::string& n, const SourceLocation& at) { readSlot(n, at); });
   checkBrickReferences();
   forEachName(f, "/models", "model", [&](const std::string& n, const SourceLocation& at) { readModel(n, at); });
+  readGltfDefaults(f);
   checkRoughnessKinds();
   return std::move(data_);
 }

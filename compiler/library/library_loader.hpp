@@ -24,6 +24,7 @@ struct LibraryData {
   std::vector<ShadingModel> models;
   std::map<std::string, RoughnessKind> roughnessKinds;  // input name -> its kind (not None)
   std::map<std::string, std::string> sources;           // relative file -> text
+  GltfDefaults gltfDefaults;
 };
 
 // The whole file (core/input_file.hpp, at most a library file's limit), or nullopt when it
@@ -120,6 +121,11 @@ class LibraryLoader {
   const Brick* findLoadedBrick(const std::string& id) const;
   std::vector<std::string> loadedBricksOf(const std::string& slot) const;
   std::vector<ModelInput> readModelInputs(JsonFields& f, const ShadingModel& m);
+
+  // --- glTF defaults (gltf_defaults.cpp) ----------------------------------------------
+  void readGltfDefaults(JsonFields& manifest);
+  std::vector<GltfBinding> readGltfBindings(JsonFields& f, const std::string& ptr, const ShadingModel& m,
+                                            const std::string& feature);
 
   std::filesystem::path root_;
   DiagnosticSink& sink_;

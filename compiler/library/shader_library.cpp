@@ -52,6 +52,7 @@ ShaderLibrary ShaderLibrary::load(const fs::path& root) {
   lib.bricks_ = std::move(data.bricks);
   lib.models_ = std::move(data.models);
   lib.roughnessKinds_ = std::move(data.roughnessKinds);
+  lib.gltfDefaults_ = std::move(data.gltfDefaults);
   // Every GLSL file was read during validation; keep it so source() rarely touches disk.
   lib.sources_ = std::move(data.sources);
   return lib;

@@ -184,6 +184,21 @@ struct ShadingModel {
   std::vector<std::string> coreRoles() const;
 };
 
+// The bricks glTF import binds (shaderlib/gltf_defaults.json, docs/formats.md): the glTF
+// spec's BRDF where the model's defaults are the seed's or where the model leaves the choice
+// to the material. Data, so that a brick taking one of these roles changes no C++.
+struct GltfBinding {
+  std::string role;
+  std::string brick;
+};
+struct GltfDefaults {
+  std::string file;                 // relative to the shaderlib root; empty when the library declares none
+  std::string model;                // the model every glTF material maps to
+  std::vector<GltfBinding> always;  // bound for every material, in file order
+  // Feature -> bound when a material enables it (its glTF extension is present).
+  std::map<std::string, std::vector<GltfBinding>> features;
+};
+
 // Light types and environment modes every model draws from (docs/models.md).
 const std::vector<std::string>& allLightTypes();        // dir, point, spot, sphere, tube
 const std::vector<std::string>& allEnvironmentModes();  // none, sh, ibl_lut, ibl_analytic
@@ -214,6 +229,8 @@ class ShaderLibrary {
   // The brick that takes a kernel role (brickKernelRoles), or nullptr.
   const Brick* brickForKernelRole(const std::string& role) const;
   const std::map<std::string, RoughnessKind>& roughnessKinds() const { return roughnessKinds_; }
+  // Manifest "gltf_defaults" (empty file and model when the library declares none).
+  const GltfDefaults& gltfDefaults() const { return gltfDefaults_; }
 
   // Reads a file under the root (cached). Throws DiagnosticError if missing.
   const std::string& source(const std::string& relativeFile) const;
@@ -227,6 +244,7 @@ class ShaderLibrary {
   std::vector<ShadingModel> models_;
   std::vector<Unit> units_;
   std::map<std::string, RoughnessKind> roughnessKinds_;  // only inputs with a kind
+  GltfDefaults gltfDefaults_;
   mutable std::map<std::string, std::string> sources_;
 };
 

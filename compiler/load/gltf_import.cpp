@@ -137,14 +137,24 @@ void checkBinChunk(JsonFields& f, const GltfContainerInfo& info, std::vector<Dia
                           "or images will fail; materials do not read it"});
 }
 
-std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc, const GltfContainerInfo* container) {
+std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc, const ShaderLibrary& lib,
+                                          const GltfContainerInfo* container) {
+  const GltfDefaults& defaults = lib.gltfDefaults();
+  if (defaults.model.empty())
+    throw DiagnosticError({{Severity::Error,
+                            "E-GLTF-NO-DEFAULTS",
+                            {(lib.root() / "manifest.json").string(), 1, 1},
+                            "the shader library declares no 'gltf_defaults' (the model and bricks glTF "
+                            "materials map to), so '" +
+                                doc.file() + "' cannot be imported",
+                            ""}});
   DiagnosticSink sink;
   JsonFields f(doc, sink);
   std::vector<GltfMaterial> materials;
   if (!f.isObject("")) throwInFileOrder(sink, doc.file());
   checkAsset(f);
 
-  FileContext ctx;
+  FileContext ctx(defaults);
   ctx.file = doc.file();
   ctx.stem = stemOf(doc.file());
   std::vector<std::string> used = f.strings("/extensionsUsed").value_or(std::vector<std::string>{});
@@ -191,26 +201,26 @@ std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc, const GltfCon
   return materials;
 }
 
-std::vector<GltfMaterial> readGltf(const std::string& path) {
+std::vector<GltfMaterial> readGltf(const std::string& path, const ShaderLibrary& lib) {
   GltfContainerInfo info;
   JsonDocument doc = loadGltfMaterialJson(path, info);
-  return mapGltfDocument(doc, &info);
+  return mapGltfDocument(doc, lib, &info);
 }
 
-std::vector<GltfMaterial> parseGltf(const std::string& bytes, const std::string& file) {
+std::vector<GltfMaterial> parseGltf(const std::string& bytes, const std::string& file, const ShaderLibrary& lib) {
   GltfContainerInfo info;
   JsonDocument doc = parseGltfJson(bytes, file, info);
-  return mapGltfDocument(doc, &info);
+  return mapGltfDocument(doc, lib, &info);
 }
 
-std::vector<MaterialSource> readGltfMaterials(const std::string& path) {
+std::vector<MaterialSource> readGltfMaterials(const std::string& path, const ShaderLibrary& lib) {
   std::vector<MaterialSource> out;
-  for (auto& m : readGltf(path)) out.push_back(std::move(m.source));
+  for (auto& m : readGltf(path, lib)) out.push_back(std::move(m.source));
   return out;
 }
 
 std::vector<MaterialDesc> importGltfMaterials(const std::string& path, const ShaderLibrary& lib) {
-  std::vector<MaterialSource> sources = readGltfMaterials(path);
+  std::vector<MaterialSource> sources = readGltfMaterials(path, lib);
   DiagnosticSink sink;
   if (sources.empty())
     sink.error("E-GLTF-NO-MATERIALS", {path, 1, 1}, "the glTF file defines no materials: there is nothing to compile");

@@ -1,5 +1,6 @@
 // glTF 2.0 material import (docs/gltf.md): every material of a .gltf or .glb becomes a
-// MaterialSource of the `standard` model, with features clearcoat / anisotropy / sheen from
+// MaterialSource of the library's glTF model (`standard`, with the bricks of
+// shaderlib/gltf_defaults.json), with features clearcoat / anisotropy / sheen from
 // KHR_materials_clearcoat / _anisotropy / _sheen. Factors become constants; each texture
 // becomes a parameter input that carries the sampled texel (the engine samples, the shader
 // combines), with generated surface code doing the glTF combination. Only the JSON is read:
@@ -50,17 +51,19 @@ struct GltfMaterial {
 // Throws DiagnosticError (file:line:column; docs/gltf.md) for malformed files and for
 // extensions in extensionsRequired that are not supported. Warnings (unsupported extension
 // used, alpha not shaded, ...) go into each MaterialSource::warnings; warnings about the file
-// as a whole go to the first material.
-std::vector<GltfMaterial> readGltf(const std::string& path);
-std::vector<GltfMaterial> parseGltf(const std::string& bytes, const std::string& file);
+// as a whole go to the first material. The model and the bricks bound come from the
+// library's glTF defaults (E-GLTF-NO-DEFAULTS when it declares none).
+std::vector<GltfMaterial> readGltf(const std::string& path, const ShaderLibrary& lib);
+std::vector<GltfMaterial> parseGltf(const std::string& bytes, const std::string& file, const ShaderLibrary& lib);
 // The same on a document already read (loadGltfJson / parseGltfJson), for readers that also
 // look at other parts of the file (load/scene_gltf.cpp).
 // `container` (optional) lets it check a .glb's BIN chunk against the buffer it declares.
 struct GltfContainerInfo;
-std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc, const GltfContainerInfo* container = nullptr);
+std::vector<GltfMaterial> mapGltfDocument(const JsonDocument& doc, const ShaderLibrary& lib,
+                                          const GltfContainerInfo* container = nullptr);
 
 // readGltf without the texture records.
-std::vector<MaterialSource> readGltfMaterials(const std::string& path);
+std::vector<MaterialSource> readGltfMaterials(const std::string& path, const ShaderLibrary& lib);
 
 // Reads and resolves every material against the library; collects the diagnostics of all
 // materials before throwing once. A file without materials is an error (E-GLTF-NO-MATERIALS):

@@ -25,13 +25,6 @@ const char* kIor = "KHR_materials_ior";
 const char* kEmissiveStrength = "KHR_materials_emissive_strength";
 const char* kTextureTransform = "KHR_texture_transform";
 
-// Filament-like choices for the roles the model leaves to the material (docs/gltf.md).
-const std::vector<std::pair<std::string, std::string>> kRequiredBricks = {{"roughness", "roughness_clamped"},
-                                                                          {"diffuse", "diffuse_lambert"},
-                                                                          {"specular_d", "d_ggx"},
-                                                                          {"specular_v", "v_smith_ggx_correlated"},
-                                                                          {"fresnel", "f_schlick"}};
-
 std::string vec3Literal(const std::vector<double>& v) {
   return "vec3(" + glslFloat(v[0], FloatDigits::Nine) + ", " + glslFloat(v[1], FloatDigits::Nine) + ", " +
          glslFloat(v[2], FloatDigits::Nine) + ")";
@@ -49,8 +42,8 @@ class MaterialMapper {
 
   GltfMaterial run(std::set<std::string>& usedExtensions) {
     MaterialSource& s = out_.source;
-    s.model = {"standard", where_};
-    for (const auto& [role, brick] : kRequiredBricks) s.bricks.push_back({{role, where_}, {brick, where_}});
+    s.model = {ctx_.defaults.model, where_};
+    for (const auto& b : ctx_.defaults.always) s.bricks.push_back({{b.role, where_}, {b.brick, where_}});
     if (!f_.isObject(ptr_)) return out_;
     out_.gltfName = f_.string(JsonFields::member(ptr_, "name")).value_or("");
     readExtensionsUsed(usedExtensions);
@@ -330,14 +323,14 @@ class MaterialMapper {
     }
   }
 
+  // Enables the feature and binds the library's glTF defaults for it (the glTF spec's
+  // convention where the model's default is the seed's), all at the extension's key.
   void enable(const char* extension, const std::string& feature) {
-    out_.source.features.push_back({feature, f_.keyAt(ext(extension))});
-  }
-
-  // Binds the glTF spec's convention where the model's default is the seed's (issue 18).
-  void bind(const char* extension, const std::string& role, const std::string& brick) {
     SourceLocation at = f_.keyAt(ext(extension));
-    out_.source.bricks.push_back({{role, at}, {brick, at}});
+    out_.source.features.push_back({feature, at});
+    auto bindings = ctx_.defaults.features.find(feature);
+    if (bindings == ctx_.defaults.features.end()) return;
+    for (const auto& b : bindings->second) out_.source.bricks.push_back({{b.role, at}, {b.brick, at}});
   }
 
   // One row of docs/gltf.md's table: model input = glTF factor (constant, glTF default when
@@ -364,14 +357,9 @@ class MaterialMapper {
   }
 
   void readClearcoat() {
+    // Its bricks (the core specular_brdf as clearcoat_brdf, Schlick at n_c.v, the base left
+    // as it is) are the library's glTF defaults (shaderlib/gltf_defaults.json).
     enable(kClearcoat, "clearcoat");
-    // KHR_materials_clearcoat: clearcoat_brdf is the core specular_brdf (GGX D, height-
-    // correlated Smith V, Appendix B), fresnel_coat weighs it by Schlick at n_c.v, and the base
-    // material stays as it is (no F0ClearCoatToSurface, no roughness raise: seed 000's).
-    bind(kClearcoat, "clearcoat_v", "v_smith_ggx_correlated");
-    bind(kClearcoat, "clearcoat_fresnel", "f_schlick_nov");
-    bind(kClearcoat, "f0_clearcoat", "f0_clearcoat_none");
-    bind(kClearcoat, "clearcoat_base_roughness", "coat_base_roughness_keep");
     std::string e = ext(kClearcoat);
     apply(e, {"clearCoat", "clearcoatFactor", {0.0}, "clearcoatTexture", "r", false, ""});
     apply(e, {"clearCoatRoughness", "clearcoatRoughnessFactor", {0.0}, "clearcoatRoughnessTexture", "g", false, ""});
@@ -394,10 +382,9 @@ class MaterialMapper {
   }
 
   void readAnisotropy() {
+    // KHR_materials_anisotropy's alphas (alpha_t = mix(alpha, 1, s^2)) are the library's glTF
+    // default for anisotropy_alpha (shaderlib/gltf_defaults.json).
     enable(kAnisotropy, "anisotropy");
-    // KHR_materials_anisotropy: alpha_t = mix(alpha, 1, s^2), alpha_b = alpha (not Filament's
-    // alpha (1 +- s), the model's default).
-    bind(kAnisotropy, "anisotropy_alpha", "aniso_alpha_gltf");
     std::string e = ext(kAnisotropy);
     // Direction in R, G (for the engine's tangent), strength in B (KHR_materials_anisotropy).
     apply(e, {"anisotropy", "anisotropyStrength", {0.0}, "anisotropyTexture", "rgb", false, ".b"});

@@ -6,17 +6,21 @@
 #include <vector>
 
 #include "core/json_fields.hpp"
+#include "library/shader_library.hpp"
 #include "load/gltf_import.hpp"
 
 namespace mb::gltf {
 
 // What every material of a file shares.
 struct FileContext {
+  explicit FileContext(const GltfDefaults& d) : defaults(d) {}
   std::string file;
   std::string stem;                // file name without directory and extension
   std::set<std::string> required;  // extensionsRequired (already reported if unsupported)
   size_t textureCount = 0;         // size of `textures` (0 if absent or malformed)
   size_t imageCount = 0;           // size of `images`
+  // The library's model and bricks for glTF materials (shaderlib/gltf_defaults.json).
+  const GltfDefaults& defaults;
 };
 
 // Extensions a material may use that the import maps (docs/gltf.md).

@@ -140,7 +140,7 @@ GltfSceneContents readGltfScene(const std::string& path, const ShaderLibrary& li
   out.imageBased = std::find(used.begin(), used.end(), "EXT_lights_image_based") != used.end();
   sink.throwIfErrors();
 
-  std::vector<GltfMaterial> all = mapGltfDocument(doc, &container);
+  std::vector<GltfMaterial> all = mapGltfDocument(doc, lib, &container);
   for (auto& m : all) {
     if (!walker.materials.count(static_cast<size_t>(m.index))) continue;
     SceneMaterial sm;

@@ -158,11 +158,20 @@ harness::GraphicsJob sphereJob(const PreviewOptions& o, const MaterialDesc& m, c
 // Display values: exposure, the tonemap brick, the sRGB OETF. The GPU image goes through the
 // brick's GLSL on the device (its compute probe), the reference image through its C++
 // reference in double.
+// The tonemap brick: --tonemap, else the library's brick with kernel role "preview_tonemap"
+// (empty when it has none: checkPreviewOptions refuses that).
+std::string tonemapBrick(const ShaderLibrary& lib, const PreviewOptions& o) {
+  if (!o.tonemap.empty()) return o.tonemap;
+  const Brick* b = lib.brickForKernelRole("preview_tonemap");
+  return b ? b->id : std::string();
+}
+
 Image8 tonemapGpu(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const PreviewOptions& o,
                   const std::vector<float>& rgb, uint32_t width, uint32_t height) {
-  const ProbeProgram probe = buildBrickProbe(lib, *lib.findBrick(o.tonemap));
+  const std::string id = tonemapBrick(lib, o);
+  const ProbeProgram probe = buildBrickProbe(lib, *lib.findBrick(id));
   if (probe.shader.layout.inStride != 3 || probe.shader.layout.outStride != 3)
-    throw std::logic_error("tonemap brick '" + o.tonemap + "' is not vec3 -> vec3");
+    throw std::logic_error("tonemap brick '" + id + "' is not vec3 -> vec3");
   std::vector<float> in(rgb.size());
   for (size_t i = 0; i < rgb.size(); ++i) in[i] = static_cast<float>(rgb[i] * o.exposure);
   const ProbeRun run = runProbeOnGpu(gpu, probe, std::move(in));
@@ -171,9 +180,11 @@ Image8 tonemapGpu(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const P
   return image;
 }
 
-Image8 tonemapReference(const PreviewOptions& o, const std::vector<double>& rgb, uint32_t width, uint32_t height) {
-  const ref::Reference* tonemap = ref::Registry::references().find(o.tonemap);
-  if (!tonemap) throw std::logic_error("tonemap brick '" + o.tonemap + "' has no reference");
+Image8 tonemapReference(const ShaderLibrary& lib, const PreviewOptions& o, const std::vector<double>& rgb,
+                        uint32_t width, uint32_t height) {
+  const std::string id = tonemapBrick(lib, o);
+  const ref::Reference* tonemap = ref::Registry::references().find(id);
+  if (!tonemap) throw std::logic_error("tonemap brick '" + id + "' has no reference");
   Image8 image{width, height, 3, std::vector<uint8_t>(rgb.size())};
   for (size_t p = 0; p < rgb.size() / 3; ++p) {
     const double in[3] = {rgb[p * 3] * o.exposure, rgb[p * 3 + 1] * o.exposure, rgb[p * 3 + 2] * o.exposure};
@@ -257,11 +268,16 @@ void checkPreviewOptions(const ShaderLibrary& lib, const std::vector<const Mater
     optionError("E-PREVIEW-SIZE",
                 "--size " + std::to_string(o.size) + " is outside 1.." + std::to_string(kMaxPreviewSize) + " pixels");
   defaultLights(o.lights);  // throws E-PREVIEW-LIGHT
-  const Brick* tonemap = lib.findBrick(o.tonemap);
+  const Brick* tonemap = lib.findBrick(tonemapBrick(lib, o));
   if (!tonemap || tonemap->slot != "tonemap") {
     std::vector<std::string> valid;
     for (const auto& b : lib.bricks())
       if (b.slot == "tonemap") valid.push_back(b.id);
+    if (o.tonemap.empty())
+      optionError("E-PREVIEW-TONEMAP",
+                  "no --tonemap given, and no brick of the library has kernel role 'preview_tonemap' (valid: " +
+                      joined(valid) + ")",
+                  "");
     optionError("E-PREVIEW-TONEMAP", "unknown tonemap brick '" + o.tonemap + "' (valid: " + joined(valid) + ")",
                 didYouMean(o.tonemap, valid));
   }
@@ -394,7 +410,7 @@ PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& li
 
   t0 = Clock::now();
   r.gpuImage = tonemapGpu(gpu, lib, o, r.gpu, r.width, r.height);
-  r.referenceImage = tonemapReference(o, r.reference, r.width, r.height);
+  r.referenceImage = tonemapReference(lib, o, r.reference, r.width, r.height);
   r.diffImage = heatmap(r);
   r.tonemapMs = msSince(t0);
   return r;

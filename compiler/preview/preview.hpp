@@ -38,9 +38,10 @@ struct PreviewOptions {
   std::string precision = "fp32";
   std::string sweep;  // a non-constant parameter of every material; empty: one sphere
   uint32_t sweepCount = kDefaultSweepCount;
-  std::string tonemap = "tonemap_aces_narkowicz";  // a brick of the tonemap slot
-  double exposure = 1.0;                           // radiance scale before the tonemap
-  unsigned threads = 0;                            // reference render threads; 0: all cores
+  // A brick of the tonemap slot; empty: the one with kernel role "preview_tonemap" (slot.json).
+  std::string tonemap;
+  double exposure = 1.0;  // radiance scale before the tonemap
+  unsigned threads = 0;   // reference render threads; 0: all cores
   // Test hook: model inputs that the reference render alone takes at these values (a wrong
   // reference, which the comparison must catch). Empty in every real use.
   std::map<std::string, std::vector<double>> referenceOverrides;

@@ -75,7 +75,8 @@ std::vector<std::string> compileInputs(const ShaderLibrary& lib, const std::vect
   files.insert(absolutePath(lib.root() / "manifest.json"));
   // Every permutation's fragment shader includes the frame block (emit/fragment_shader.cpp).
   files.insert(absolutePath(lib.root() / "common" / "engine_frame.glsl"));
-  // ShaderLibrary::load reads every slot's slot.json.
+  // ShaderLibrary::load reads every slot's slot.json, and the glTF defaults it declares.
+  if (!lib.gltfDefaults().file.empty()) files.insert(absolutePath(lib.root() / lib.gltfDefaults().file));
   for (const auto& entry : fs::directory_iterator(lib.root()))
     if (entry.is_directory() && fs::exists(entry.path() / "slot.json"))
       files.insert(absolutePath(entry.path() / "slot.json"));

@@ -18,7 +18,7 @@ void addGlslInputs(const ShaderLibrary& lib, const std::string& glsl, std::set<s
 
 // Absolute, sorted, each once: `extra` (the scene file), every permutation's material source,
 // its macro-form #includes and surface file, the shader library's manifest.json, slot.json
-// files and model JSONs, and `glslInputs` (addGlslInputs over the emitted permutations).
+// files, glTF defaults and model JSONs, and `glslInputs` (addGlslInputs over the emitted permutations).
 std::vector<std::string> compileInputs(const ShaderLibrary& lib, const std::vector<Permutation>& perms,
                                        const std::set<std::string>& glslInputs, const std::vector<std::string>& extra);
 

@@ -91,7 +91,7 @@ void materialMacro(const uint8_t* data, size_t size) {
 void gltf(const uint8_t* data, size_t size) {
   static const std::string file = (dataRoot() / "examples" / "gltf" / "fuzz.gltf").string();
   expectLoadOrDiagnostics([&] {
-    std::vector<GltfMaterial> materials = parseGltf(text(data, size), file);
+    std::vector<GltfMaterial> materials = parseGltf(text(data, size), file, library());
     DiagnosticSink sink;
     for (const auto& m : materials) resolveMaterialInto(m.source, library(), sink);
     throwInFileOrder(sink, file);

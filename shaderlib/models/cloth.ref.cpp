@@ -8,6 +8,7 @@
 #include <algorithm>
 
 #include "common/model_reference.hpp"
+#include "common/sh_diffuse_reference.hpp"
 
 namespace mb::ref::cloth {
 
@@ -57,10 +58,8 @@ double spotCone(const SpotLight& s, const Vec3& l) {
 
 Vec3 environment(const ModelEvalInput& in, const Pixel& px, const Environment& env) {
   const Vec3 n = in.frame.n, v = in.frame.v;
-  Args sh = Args() << n;
-  for (const Vec3& c : env.sh) sh << c;
   const double ao = env.ao * px.ambientOcclusion;
-  const Vec3 diffuse = px.diffuseColor * nonNegative(in.vec3("sh_irradiance", sh)) * (ao / kPi);
+  const Vec3 diffuse = shDiffuse(in, px.diffuseColor, env, ao);
   if (env.mode != "ibl_lut") return diffuse;
   // Directional albedo of the sheen: sheenColor times the LUT's cloth channel (Filament's
   // cloth specularDFG); the diffuse keeps the rest.

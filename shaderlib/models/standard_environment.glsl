@@ -33,13 +33,7 @@ void mb_environment_prepare(inout ShadingPixel px, ShadingFrame f) {
 #ifndef MB_ENV_NONE
 vec3 mb_shade_environment(ShadingPixel px, ShadingFrame f, Environment env) {
     float ao = env.ao * px.ambientOcclusion;
-    // Clamped at 0, as Filament's Irradiance_SphericalHarmonics: a truncated SH expansion rings
-    // below 0 away from a bright direction, and irradiance (hence radiance) is never negative
-    // (issue 18: validate fails a permutation on any negative output).
-    vec3 irradiance = max(MB_SLOT_sh_irradiance(f.n, env.sh[0], env.sh[1], env.sh[2], env.sh[3], env.sh[4],
-                                                env.sh[5], env.sh[6], env.sh[7], env.sh[8]),
-                          0.0);
-    vec3 diffuse = px.diffuseColor * irradiance * (ao * (1.0 / MB_PI));
+    vec3 diffuse = mb_sh_diffuse(px.diffuseColor, f.n, env, ao);  // common/sh_diffuse.glsl
 #ifdef MB_ENV_IBL
     // Mirror direction about the shading normal, or about the Far Cry 4 bent normal of an
     // anisotropic surface (seed 000 "Anisotropic").

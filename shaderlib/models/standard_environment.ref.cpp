@@ -7,6 +7,7 @@
 // (ibl_lut) or an analytic fit (ibl_analytic); r the mirror direction of v.
 #include <algorithm>
 
+#include "common/sh_diffuse_reference.hpp"
 #include "models/standard_reference.hpp"
 
 namespace mb::ref::standard {
@@ -35,12 +36,8 @@ void environmentPrepare(const ModelEvalInput& in, Pixel& px) {
 
 Vec3 shadeEnvironment(const ModelEvalInput& in, const Pixel& px, const Environment& env) {
   const Vec3 n = in.frame.n, v = in.frame.v;
-  Args sh = Args() << n;
-  for (const Vec3& c : env.sh) sh << c;
   const double ao = env.ao * px.ambientOcclusion;
-  // Irradiance E(n) of the SH9 radiance, clamped at 0 (a truncated expansion rings below it;
-  // Filament clamps too); a Lambertian surface reflects E / pi.
-  const Vec3 diffuse = px.diffuseColor * nonNegative(in.vec3("sh_irradiance", sh)) * (ao / kPi);
+  const Vec3 diffuse = shDiffuse(in, px.diffuseColor, env, ao);
   if (!env.ibl()) return diffuse;
 
   const Vec3 m = in.has("anisotropy") ? anisotropyIblNormal(in, px.anisotropy, px.perceptualRoughness) : n;

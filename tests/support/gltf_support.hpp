@@ -10,12 +10,13 @@
 
 #include "load/gltf_import.hpp"
 #include "material_fixtures.hpp"  // diagnosticsOf, theOne
+#include "pipeline_support.hpp"   // shippedLibrary
 
 namespace mb::test {
 
 // All diagnostics of parsing `bytes` as `file` (empty if it parses).
 inline std::vector<Diagnostic> gltfDiagnostics(const std::string& bytes, const std::string& file = "t.gltf") {
-  return diagnosticsOf([&] { parseGltf(bytes, file); });
+  return diagnosticsOf([&] { parseGltf(bytes, file, shippedLibrary()); });
 }
 
 // 1-based line and column of the first occurrence of `needle` in `text` (after `after`).
