@@ -61,9 +61,8 @@ TEST_CASE("validity rules: one reason per invalid axis value", "[scene]") {
   p.features = {"clearcoat"};
   CHECK(invalidReason(model("cloth"), p));
   CHECK(!invalidReason(model("standard"), p));
-  p.precision = "fp64";
-  CHECK(invalidReason(model("standard"), p));
-  p.precision = "fp16";
+  CHECK(!parsePrecision("fp64"));  // an unknown precision is refused where it is read
+  p.precision = Precision::Fp16;
   p.quality = "ultra";
   CHECK(invalidReason(model("standard"), p));
   p.quality = "low";
@@ -79,7 +78,7 @@ TEST_CASE("valid combination counts equal a brute-force enumeration of the produ
     for (const auto& fs : subsets(features))
       for (const auto& ls : subsets(allLightTypes()))
         for (const auto& e : allEnvironmentModes())
-          for (const auto& pr : allPrecisions())
+          for (Precision pr : allPrecisions())
             for (const auto& q : allQualityLevels()) brute += !invalidReason(m, AxisPoint{fs, ls, e, pr, q});
     INFO(m.name);
     CHECK(validCombinationCount(m) == brute);

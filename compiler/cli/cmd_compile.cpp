@@ -15,6 +15,7 @@
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
 #include "core/cpp_identifiers.hpp"
+#include "core/json_fields.hpp"
 #include "core/package_stages.hpp"
 #include "load/scene_desc.hpp"
 #include "permute/scene_plan.hpp"
@@ -140,6 +141,12 @@ void compileArgsFromJson(const nlohmann::json& c, const std::string& file, Compi
     throw notReadable("'stages': " + why);
   for (const auto& t : a.targets)
     if (!parseTarget(t)) throw notReadable("'targets': '" + t + "' is not a target");
+  if (!parsePrecision(a.precision))
+    throw DiagnosticError({{Severity::Error,
+                            "E-PRECISION",
+                            {file, 0, 0},
+                            "unknown precision '" + a.precision + "'",
+                            "one of " + quotedList(allPrecisionNames())}});
   checkHeaderName(a.headerName, {file, 0, 0});
 }
 
@@ -188,7 +195,7 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
     AxisPoint axes;
     axes.lights = canonicalLights(a.lights);
     axes.environment = a.environment;
-    axes.precision = a.precision;
+    axes.precision = *parsePrecision(a.precision);  // checked by CLI11 or compileArgsFromJson
     axes.quality = a.quality;
     plan = planMaterials(materials, axes, lib);
     std::vector<const MaterialDesc*> sources;
@@ -311,7 +318,7 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
   args->axisOptions[1] = cmd->add_option("--environment", args->environment, "Environment mode (default: none)")
                              ->check(CLI::IsMember(allEnvironmentModes()));
   args->axisOptions[2] =
-      cmd->add_option("--precision", args->precision, "fp32 or fp16")->check(CLI::IsMember(allPrecisions()));
+      cmd->add_option("--precision", args->precision, "fp32 or fp16")->check(CLI::IsMember(allPrecisionNames()));
   args->axisOptions[3] = cmd->add_option("--quality", args->quality, "low, medium or high (default: high)")
                              ->check(CLI::IsMember(allQualityLevels()));
   cmd->add_option(

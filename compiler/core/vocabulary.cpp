@@ -2,11 +2,6 @@
 
 namespace mb {
 
-const std::vector<std::string>& allPrecisions() {
-  static const std::vector<std::string> v{"fp32", "fp16"};
-  return v;
-}
-
 const std::vector<std::string>& allQualityLevels() {
   static const std::vector<std::string> v{"low", "medium", "high"};
   return v;

@@ -38,8 +38,6 @@ std::optional<std::string> invalidReason(const ShadingModel& model, const AxisPo
       return m + " does not shade '" + t + "' lights (it shades " + quotedList(model.lights) + ")";
   if (!contains(model.environments, point.environment))
     return m + " has no environment mode '" + point.environment + "' (it has " + quotedList(model.environments) + ")";
-  if (!contains(allPrecisions(), point.precision))
-    return "unknown precision '" + point.precision + "' (expected " + quotedList(allPrecisions()) + ")";
   if (!contains(allQualityLevels(), point.quality))
     return "unknown quality level '" + point.quality + "' (expected " + quotedList(allQualityLevels()) + ")";
   if (!definesQuality(model, point.quality))
@@ -94,7 +92,7 @@ SourceLocation invalidLocation(const ShadingModel& model, const Permutation& per
       auto chosen = perm.material->brickLocations.find(role);
       if (chosen != perm.material->brickLocations.end()) return chosen->second;
     }
-  // A light, environment, feature, precision or quality the model lacks: at the model's name.
+  // A light, environment, feature or quality the model lacks: at the model's name.
   if (perm.material->modelWhere.line > 0) return perm.material->modelWhere;
   return SourceLocation(perm.material->sourceFile, 0, 0);
 }
@@ -128,7 +126,7 @@ size_t validCombinationCount(const ShadingModel& model) {
   size_t envs = 0;
   for (const auto& e : allEnvironmentModes()) envs += validWith([&](AxisPoint& p) { p.environment = e; });
   size_t precisions = 0;
-  for (const auto& x : allPrecisions()) precisions += validWith([&](AxisPoint& p) { p.precision = x; });
+  for (Precision x : allPrecisions()) precisions += validWith([&](AxisPoint& p) { p.precision = x; });
   size_t qualities = 0;
   for (const auto& q : allQualityLevels()) qualities += validWith([&](AxisPoint& p) { p.quality = q; });
   if (!validWith([](AxisPoint&) {})) return 0;

@@ -15,7 +15,8 @@ bool Permutation::hasLight(const std::string& type) const {
 }
 
 std::string Permutation::key() const {
-  std::string k = material->name + "." + material->model + "." + lightsKey() + "." + environment + "." + precision;
+  std::string k =
+      material->name + "." + material->model + "." + lightsKey() + "." + environment + "." + precisionName(precision);
   if (quality != "high") k += "." + quality;
   for (const auto& f : folded) k += ".without-" + f;
   return k;

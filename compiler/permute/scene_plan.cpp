@@ -40,7 +40,7 @@ void reportInvalid(const SceneDesc& scene, const SceneMaterial& sm, const Shadin
   AxisPoint base = point;
   base.lights.clear();
   base.environment = "none";
-  base.precision = "fp32";
+  base.precision = Precision::Fp32;
   base.quality = "high";
   bool named = report(base, "its features", sm.where);
   for (const auto& l : scene.lights) {
@@ -53,7 +53,7 @@ void reportInvalid(const SceneDesc& scene, const SceneMaterial& sm, const Shadin
   named |= report(p, "environment '" + point.environment + "'", scene.environmentWhere);
   p = base;
   p.precision = point.precision;
-  named |= report(p, "precision '" + point.precision + "'", scene.precisionWhere);
+  named |= report(p, "precision '" + precisionName(point.precision) + "'", scene.precisionWhere);
   p = base;
   p.quality = point.quality;
   named |= report(p, "quality '" + point.quality + "'", scene.qualityWhere);
@@ -111,7 +111,7 @@ ScenePlan planScene(const SceneDesc& scene, const ShaderLibrary& lib) {
     std::set<std::string> said;
     bool valid = true;
     for (const auto& env : scene.environments)
-      for (const auto& precision : scene.precisions)
+      for (Precision precision : scene.precisions)
         for (const auto& quality : scene.qualities) {
           AxisPoint point{sm.material.features, lights, env, precision, quality};
           if (!invalidReason(model, point)) continue;
@@ -137,7 +137,7 @@ ScenePlan planScene(const SceneDesc& scene, const ShaderLibrary& lib) {
       const MaterialDesc& spec = plan.specialized.back();
       noteQuality(note, base, spec, quality);
       for (const auto& env : scene.environments)
-        for (const auto& precision : scene.precisions) {
+        for (Precision precision : scene.precisions) {
           Permutation p;
           p.material = &spec;
           p.lights = lights;

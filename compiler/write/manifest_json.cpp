@@ -37,7 +37,7 @@ nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutatio
                        {"folded_features", perm.folded},
                        {"lights", perm.lights},
                        {"environment", perm.environment},
-                       {"precision", perm.precision},
+                       {"precision", precisionName(perm.precision)},
                        {"quality", perm.quality},
                        {"bricks", nlohmann::json::object()},
                        {"bricks_included", b.shader.bricks},
