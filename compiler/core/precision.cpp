@@ -1,35 +1,23 @@
 #include "core/precision.hpp"
 
-#include <stdexcept>
+#include "core/axis_names.hpp"
 
 namespace mb {
+namespace {
 
-const std::vector<Precision>& allPrecisions() {
-  static const std::vector<Precision> v{Precision::Fp32, Precision::Fp16};
-  return v;
+const AxisNames<Precision>& axis() {
+  static const AxisNames<Precision> a{{Precision::Fp32, Precision::Fp16}, {"fp32", "fp16"}};
+  return a;
 }
 
-const std::vector<std::string>& allPrecisionNames() {
-  static const std::vector<std::string> v{"fp32", "fp16"};
-  return v;
-}
+}  // namespace
 
-const std::string& precisionName(Precision p) { return allPrecisionNames().at(static_cast<size_t>(p)); }
-
-std::optional<Precision> parsePrecision(std::string_view name) {
-  for (Precision p : allPrecisions())
-    if (name == precisionName(p)) return p;
-  return std::nullopt;
-}
-
+const std::string& precisionName(Precision p) { return axis().name(p); }
+const std::vector<Precision>& allPrecisions() { return axis().values; }
+const std::vector<std::string>& allPrecisionNames() { return axis().names; }
+std::optional<Precision> parsePrecision(std::string_view name) { return axis().parse(name); }
 std::vector<Precision> parsePrecisions(const std::vector<std::string>& names) {
-  std::vector<Precision> out;
-  for (const auto& n : names) {
-    auto p = parsePrecision(n);
-    if (!p) throw std::invalid_argument("not a precision: '" + n + "'");
-    out.push_back(*p);
-  }
-  return out;
+  return axis().parseAll(names, "precision");
 }
 
 }  // namespace mb

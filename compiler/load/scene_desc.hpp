@@ -10,6 +10,7 @@
 #include "core/diagnostics.hpp"
 #include "core/optimization_level.hpp"
 #include "core/precision.hpp"
+#include "core/quality.hpp"
 #include "core/target.hpp"
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
@@ -42,7 +43,7 @@ struct SceneDesc {
   std::vector<SceneLight> lights;
   std::vector<std::string> environments{"none"};  // one permutation set per mode
   std::vector<Precision> precisions{Precision::Fp32};
-  std::vector<std::string> qualities{"high"};
+  std::vector<Quality> qualities{Quality::High};
   std::vector<Target> targets{Target::Spirv};  // see compile/targets.hpp
   // "optimization": "O0" | "O1" | "O2"; `compile -O` overrides it (docs/scenes.md).
   OptimizationLevel optimization = OptimizationLevel::O2;

@@ -74,7 +74,9 @@ class SceneJsonReader {
     std::vector<std::string> precisions{precisionName(Precision::Fp32)};
     readAxis("/precision", allPrecisionNames(), "precision", precisions, scene_.precisionWhere);
     scene_.precisions = parsePrecisions(precisions);  // each checked against allPrecisionNames() above
-    readAxis("/quality", allQualityLevels(), "quality level", scene_.qualities, scene_.qualityWhere);
+    std::vector<std::string> qualities{qualityName(Quality::High)};
+    readAxis("/quality", allQualityNames(), "quality level", qualities, scene_.qualityWhere);
+    scene_.qualities = parseQualities(qualities);  // each checked against allQualityNames() above
     std::vector<std::string> targets{targetName(Target::Spirv)};
     readAxis("/targets", allTargetNames(), "target", targets, scene_.targetsWhere, "E-SCENE-TARGET");
     scene_.targets = parseTargets(targets);  // each checked against allTargetNames() above

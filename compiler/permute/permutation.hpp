@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/precision.hpp"
+#include "core/quality.hpp"
 #include "library/light_order.hpp"  // canonicalLights(): the order of `lights`
 #include "load/material_desc.hpp"
 
@@ -18,7 +19,7 @@ struct Permutation {
   std::vector<std::string> lights{"dir"};  // light types, in allLightTypes() order
   std::string environment = "none";        // one of allEnvironmentModes()
   Precision precision = Precision::Fp32;
-  std::string quality = "high";  // one of allQualityLevels()
+  Quality quality = Quality::High;
   // Features of the loaded material that the scene proved constant at their neutral value
   // and that were folded away (no lobe emitted), in the model's feature order.
   std::vector<std::string> folded;

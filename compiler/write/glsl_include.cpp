@@ -40,7 +40,7 @@ std::string includeOrigin(const PackagedPermutation& p, const std::string& langu
       << ". Do not edit.\n"
       << "// Material '" << perm.material->name << "' (" << oneLineText(perm.material->sourceFile) << "), model '"
       << perm.material->model << "', lights " << perm.lightsKey() << ", environment " << perm.environment
-      << ", precision " << precisionName(perm.precision) << ", quality " << perm.quality << ".\n";
+      << ", precision " << precisionName(perm.precision) << ", quality " << qualityName(perm.quality) << ".\n";
   return out.str();
 }
 

@@ -38,7 +38,7 @@ nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutatio
                        {"lights", perm.lights},
                        {"environment", perm.environment},
                        {"precision", precisionName(perm.precision)},
-                       {"quality", perm.quality},
+                       {"quality", qualityName(perm.quality)},
                        {"bricks", nlohmann::json::object()},
                        {"bricks_included", b.shader.bricks},
                        {"parameters", nlohmann::json::array()},
