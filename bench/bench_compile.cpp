@@ -279,7 +279,7 @@ std::vector<MaterialDesc> sixtyMaterials(const ShaderLibrary& lib, const std::ve
 
 json benchSceneShape(const ShaderLibrary& lib, const std::vector<MaterialDesc>& sixty, int repeats) {
   std::vector<Permutation> perms;
-  for (const std::string precision : {"fp32", "fp16"})
+  for (Precision precision : allPrecisions())
     for (const auto& m : sixty) {
       Permutation p;
       p.material = &m;
@@ -453,7 +453,7 @@ json benchBreakdown(const ShaderLibrary& lib, const std::vector<Permutation>& pe
                                      {s.glsl, "", "", ""});
       });
       CompileOptions lean;
-      lean.optimization = p.precision == "fp32" ? OptimizationLevel::O2 : OptimizationLevel::O0;
+      lean.optimization = p.precision == Precision::Fp32 ? OptimizationLevel::O2 : OptimizationLevel::O0;
       CompileResult c = compileComputeGlsl(s.glsl, s.fileName, lean);
       clock.add("glslang parse", c.stages.parseMs);
       clock.add("glslang link", c.stages.linkMs);
@@ -485,7 +485,7 @@ json benchBreakdown(const ShaderLibrary& lib, const std::vector<Permutation>& pe
       for (Target target : allTargets()) {
         const std::string& t = targetName(target);
         const TargetInfo& info = targetInfo(target);
-        if (target == Target::Spirv || (!info.float16 && p.precision != "fp32")) continue;
+        if (target == Target::Spirv || (!info.float16 && p.precision != Precision::Fp32)) continue;
         std::string out =
             clock.time("SPIRV-Cross + check: " + t, [&] { return crossCompile(a.spirv, target, s.fileName); });
         if (info.language == TargetLanguage::Glsl)
@@ -668,7 +668,7 @@ json levelCompileTimes(const ShaderLibrary& lib, const std::vector<Permutation>&
       for (size_t i = 0; i < kernels.size(); ++i) {
         // fp16 kernels are never optimized (docs/fp16.md), as a package builds them.
         CompileOptions co;
-        co.optimization = perms[i].precision == "fp16" ? OptimizationLevel::O0 : level;
+        co.optimization = perms[i].precision == Precision::Fp16 ? OptimizationLevel::O0 : level;
         const CompileStageTimes t = compileComputeGlsl(kernels[i].glsl, kernels[i].fileName, co).stages;
         sum.parseMs += t.parseMs + t.linkMs + t.codegenMs;
         sum.validateMs += t.validateMs + t.validateOptimizedMs;

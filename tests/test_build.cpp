@@ -17,7 +17,7 @@ TEST_CASE("output is bit-identical at -j1 and -j4, every target", "[build]") {
   const auto& mats = test::loadedMaterials(lib, {"brushed_metal", "clearcoat_metal", "filament_plastic", "satin_sheen",
                                                  "worn_car_paint", "frostbite_dielectric"});
   auto perms = test::permutationsOf(mats, {"dir", "point", "sphere"}, "ibl_lut");
-  for (const auto& p : test::permutationsOf(mats, {"dir"}, "sh", "fp16")) perms.push_back(p);
+  for (const auto& p : test::permutationsOf(mats, {"dir"}, "sh", Precision::Fp16)) perms.push_back(p);
   BuildOptions o;
   o.targets = {Target::Spirv, Target::Glsl450, Target::Hlsl, Target::Msl};
   o.jobs = 1;
@@ -51,8 +51,8 @@ TEST_CASE("identical emitted GLSL is compiled once; unique SPIR-V is counted", "
 
 TEST_CASE("fp16 permutations skip spirv-opt and still validate", "[build][fp16]") {
   const ShaderLibrary& lib = test::shippedLibrary();
-  auto perms =
-      test::permutationsOf(test::loadedMaterials(lib, {"worn_car_paint"}), {"dir", "point"}, "ibl_lut", "fp16");
+  auto perms = test::permutationsOf(test::loadedMaterials(lib, {"worn_car_paint"}), {"dir", "point"}, "ibl_lut",
+                                    Precision::Fp16);
   auto built = buildPermutations(lib, perms, {});
   spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
   CHECK(tools.Validate(built[0].artifacts.spirv));
@@ -106,7 +106,7 @@ TEST_CASE("a streamed build in small windows writes the same package as one wind
                                                  "worn_car_paint", "ue4_metal", "velvet_green"});
   ScenePlan plan;
   plan.required = test::permutationsOf(mats, {"dir", "point"}, "sh");
-  for (const auto& p : test::permutationsOf(mats, {"dir"}, "none", "fp16")) plan.required.push_back(p);
+  for (const auto& p : test::permutationsOf(mats, {"dir"}, "none", Precision::Fp16)) plan.required.push_back(p);
   const test::ScratchDir dir("stream_windows");
   PackageInputs in;
   in.lib = &lib;

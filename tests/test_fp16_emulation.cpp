@@ -215,7 +215,7 @@ StressResult stressMaterial(harness::VulkanHarness& gpu, const ShaderLibrary& li
   Permutation perm;
   perm.material = &m;
   perm.lights = lights;
-  perm.precision = "fp16";
+  perm.precision = Precision::Fp16;
   return stressProbe(gpu, buildPermutationProbe(lib, perm, true), "permutation", name, {256, 1});
 }
 

@@ -33,7 +33,7 @@ std::vector<MaterialDesc> shippedFragmentMaterials() {
 std::vector<Permutation> withPrecisions(const std::vector<Permutation>& perms) {
   std::vector<Permutation> out;
   for (const auto& p : perms)
-    for (const char* precision : {"fp32", "fp16"}) {
+    for (Precision precision : allPrecisions()) {
       Permutation q = p;
       q.precision = precision;
       out.push_back(q);
@@ -44,8 +44,9 @@ std::vector<Permutation> withPrecisions(const std::vector<Permutation>& perms) {
 CompileOptions fragmentOptions(const Permutation& perm) {
   CompileOptions o;
   o.stage = ShaderStage::Fragment;
-  o.optimization = perm.precision == "fp32" ? OptimizationLevel::O2
-                                            : OptimizationLevel::O0;  // as the package builds (build.cpp unitFor)
+  o.optimization = perm.precision == Precision::Fp32
+                       ? OptimizationLevel::O2
+                       : OptimizationLevel::O0;  // as the package builds (build.cpp unitFor)
   return o;
 }
 
@@ -80,7 +81,7 @@ TEST_CASE("Every shipped permutation's fragment shader compiles, validates and r
       CHECK(spirvValidationErrors(spirv, SPV_ENV_VULKAN_1_1).empty());
       const nlohmann::json r = reflectSpirv(spirv);
       ++count;
-      covered.insert(perm.environment + "/" + perm.precision);
+      covered.insert(perm.environment + "/" + precisionName(perm.precision));
       for (const auto& l : perm.lights) covered.insert(l);
 
       CHECK(r.at("entry_point") == "main");

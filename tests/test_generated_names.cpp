@@ -178,7 +178,7 @@ void compilesWithEveryFreeName(MaterialDesc base) {
   INFO(base.model << ": " << accepted << " user parameters");
   REQUIRE(accepted > 40);  // the library's locals and parameters are not reserved
   for (Permutation perm : validationPermutationsFor(base, lib)) {
-    for (const std::string precision : {"fp32", "fp16"}) {
+    for (Precision precision : allPrecisions()) {
       perm.precision = precision;
       EmittedShader s = emitPermutation(lib, perm);
       INFO(s.key);

@@ -72,7 +72,7 @@ TEST_CASE("HLSL and MSL includes of every shipped material compile in their wrap
   std::vector<Permutation> perms;
   for (const auto& m : materials)
     for (Permutation p : validationPermutationsFor(m, test::shippedLibrary()))
-      for (const char* precision : {"fp32", "fp16"}) {
+      for (Precision precision : allPrecisions()) {
         p.precision = precision;
         perms.push_back(p);
       }

@@ -40,8 +40,8 @@ const std::vector<ProbeLanguage> kTranslated = {ProbeLanguage::Hlsl, ProbeLangua
 
 // The languages that run fp16 here: glsl450 needs GL_AMD_gpu_shader_half_float, which llvmpipe
 // lacks (checked below).
-std::vector<ProbeLanguage> languagesAt(const std::string& precision) {
-  if (precision == "fp32") return kTranslated;
+std::vector<ProbeLanguage> languagesAt(Precision precision) {
+  if (precision == Precision::Fp32) return kTranslated;
   return {ProbeLanguage::Hlsl, ProbeLanguage::Essl310};
 }
 
@@ -59,7 +59,7 @@ void checkPermutation(const ShaderLibrary& lib, const Permutation& perm, ProbeLa
 }
 
 Permutation permutationOf(const MaterialDesc& m, std::vector<std::string> lights, const std::string& environment,
-                          const std::string& precision) {
+                          Precision precision) {
   Permutation perm;
   perm.material = &m;
   perm.lights = std::move(lights);
@@ -96,7 +96,7 @@ TEST_CASE("a representative permutation validates in every executable language",
     const MaterialDesc m = test::shippedMaterial(name);
     const std::vector<Permutation> perms = validationPermutationsFor(m, lib);
     REQUIRE(!perms.empty());
-    for (const char* precision : {"fp32", "fp16"}) {
+    for (Precision precision : allPrecisions()) {
       Permutation perm = perms.front();
       perm.precision = precision;
       for (ProbeLanguage language : languagesAt(precision)) checkPermutation(lib, perm, language, 1024);
@@ -117,7 +117,7 @@ void sweepLanguage(ProbeLanguage language) {
       std::vector<std::vector<std::string>> lightSets = {perm.lights};
       for (const auto& light : perm.lights) lightSets.push_back({light});
       for (const auto& lights : lightSets)
-        for (const char* precision : {"fp32", "fp16"}) {
+        for (Precision precision : allPrecisions()) {
           const auto at = languagesAt(precision);
           if (std::find(at.begin(), at.end(), language) == at.end()) continue;
           checkPermutation(lib, permutationOf(m, lights, perm.environment, precision), language, 1024);
@@ -150,7 +150,8 @@ TEST_CASE("glsl450 at fp16 is refused on llvmpipe with the missing extension nam
   REQUIRE(!glContext(gl::GlApi::Gl45Core).hasExtension("GL_AMD_gpu_shader_half_float"));
   const ShaderLibrary& lib = test::shippedLibrary();
   const MaterialDesc m = test::shippedMaterial("filament_plastic");
-  LanguageProbe p = buildPermutationProbeIn(lib, permutationOf(m, {"dir"}, "none", "fp16"), ProbeLanguage::Glsl450);
+  LanguageProbe p =
+      buildPermutationProbeIn(lib, permutationOf(m, {"dir"}, "none", Precision::Fp16), ProbeLanguage::Glsl450);
   CHECK(p.source.find("#extension GL_AMD_gpu_shader_half_float") != std::string::npos);
   CHECK_THROWS_WITH(runProbeOn(devicesFor(ProbeLanguage::Glsl450), p, {}),
                     Catch::Contains("lacks GL_AMD_gpu_shader_half_float"));
@@ -162,7 +163,7 @@ TEST_CASE("a wrong translation is caught in every executable language", "[langua
   // else.
   const ShaderLibrary& lib = test::shippedLibrary();
   const MaterialDesc m = test::shippedMaterial("filament_plastic");
-  const Permutation perm = permutationOf(m, {"dir"}, "none", "fp32");
+  const Permutation perm = permutationOf(m, {"dir"}, "none", Precision::Fp32);
   for (ProbeLanguage language : kTranslated) {
     LanguageProbe p = buildPermutationProbeIn(lib, perm, language);
     INFO(languageName(language));
@@ -216,9 +217,9 @@ TEST_CASE("llvmpipe runs ESSL mediump at 16 bits: the essl310 fp16 kernel is tru
   // lavapipe is again (it runs at fp32).
   const ShaderLibrary& lib = test::shippedLibrary();
   const MaterialDesc m = test::shippedMaterial("velvet_green");
-  Permutation perm = permutationOf(m, {"dir", "point", "spot"}, "none", "fp32");
+  Permutation perm = permutationOf(m, {"dir", "point", "spot"}, "none", Precision::Fp32);
   const Tolerance fp32 = buildPermutationProbe(lib, perm).tolerance;
-  perm.precision = "fp16";
+  perm.precision = Precision::Fp16;
   LanguageProbe es = buildPermutationProbeIn(lib, perm, ProbeLanguage::Essl310);
   REQUIRE(es.source.find("mediump") != std::string::npos);
   LanguageProbe highp = es;

@@ -214,15 +214,15 @@ TEST_CASE("fp16 conversion rounds to nearest even", "[lut]") {
 
 TEST_CASE("raw LUT layout: little-endian, row-major from the smoothest row, channels interleaved", "[lut][vulkan]") {
   const LutTable& t = smallLut().table;
-  for (Precision p : {Precision::Fp32, Precision::Fp16}) {
+  for (lut::Precision p : {lut::Precision::Fp32, lut::Precision::Fp16}) {
     const std::string raw = encodeLut(t, OutputFormat::Raw, p);
-    const size_t bytes = p == Precision::Fp32 ? 4 : 2;
+    const size_t bytes = p == lut::Precision::Fp32 ? 4 : 2;
     REQUIRE(raw.size() == kTestSize * kTestSize * kChannels * bytes);
     for (uint32_t j = 0; j < kTestSize; ++j)
       for (uint32_t i = 0; i < kTestSize; ++i)
         for (uint32_t c = 0; c < kChannels; ++c) {
           size_t at = ((size_t(j) * kTestSize + i) * kChannels + c) * bytes;
-          float v = p == Precision::Fp32 ? std::bit_cast<float>(le32(raw, at)) : halfToFloat(le16(raw, at));
+          float v = p == lut::Precision::Fp32 ? std::bit_cast<float>(le32(raw, at)) : halfToFloat(le16(raw, at));
           REQUIRE(v == storedValue(t.at(i, j, c), p));
         }
   }
@@ -230,13 +230,13 @@ TEST_CASE("raw LUT layout: little-endian, row-major from the smoothest row, chan
 
 TEST_CASE("KTX2 LUT parses back: identifier, header, index, DFD, key/values, texels", "[lut][vulkan]") {
   const LutTable& t = smallLut().table;
-  for (Precision p : {Precision::Fp32, Precision::Fp16}) {
+  for (lut::Precision p : {lut::Precision::Fp32, lut::Precision::Fp16}) {
     const std::string f = encodeLut(t, OutputFormat::Ktx2, p);
-    const uint32_t bits = p == Precision::Fp32 ? 32 : 16, texelBytes = 4 * bits / 8;
+    const uint32_t bits = p == lut::Precision::Fp32 ? 32 : 16, texelBytes = 4 * bits / 8;
     const char id[12] = {'\xAB', 'K', 'T', 'X', ' ', '2', '0', '\xBB', '\r', '\n', '\x1A', '\n'};
     REQUIRE(std::memcmp(f.data(), id, 12) == 0);
-    CHECK(le32(f, 12) == (p == Precision::Fp32 ? 109u : 97u));  // VK_FORMAT_R32G32B32A32/R16G16B16A16_SFLOAT
-    CHECK(le32(f, 16) == bits / 8);                             // typeSize
+    CHECK(le32(f, 12) == (p == lut::Precision::Fp32 ? 109u : 97u));  // VK_FORMAT_R32G32B32A32/R16G16B16A16_SFLOAT
+    CHECK(le32(f, 16) == bits / 8);                                  // typeSize
     CHECK(le32(f, 20) == kTestSize);
     CHECK(le32(f, 24) == kTestSize);
     CHECK(le32(f, 28) == 0);  // pixelDepth
@@ -291,7 +291,7 @@ TEST_CASE("KTX2 LUT parses back: identifier, header, index, DFD, key/values, tex
 
 TEST_CASE("CSV LUT reads back with texel-centre coordinates", "[lut][vulkan]") {
   const LutTable& t = smallLut().table;
-  std::istringstream in(encodeLut(t, OutputFormat::Csv, Precision::Fp32));
+  std::istringstream in(encodeLut(t, OutputFormat::Csv, lut::Precision::Fp32));
   std::string line;
   std::getline(in, line);
   CHECK(line.rfind("#", 0) == 0);
@@ -314,7 +314,7 @@ TEST_CASE("CSV LUT reads back with texel-centre coordinates", "[lut][vulkan]") {
 
 TEST_CASE("C header LUT has its size constants and every value", "[lut][vulkan]") {
   const LutTable& t = smallLut().table;
-  const std::string h = encodeLut(t, OutputFormat::Header, Precision::Fp32);
+  const std::string h = encodeLut(t, OutputFormat::Header, lut::Precision::Fp32);
   CHECK(h.find("#define MB_DFG_LUT_SIZE 16\n") != std::string::npos);
   CHECK(h.find("#define MB_DFG_LUT_CHANNELS 3\n") != std::string::npos);
   CHECK(h.find("#define MB_DFG_LUT_SAMPLES 64 ") != std::string::npos);
@@ -331,7 +331,7 @@ TEST_CASE("C header LUT has its size constants and every value", "[lut][vulkan]"
     while (*p == ',' || *p == ' ' || *p == '\n') ++p;
   }
   CHECK(std::string(p) == "};\n");
-  const std::string h16 = encodeLut(t, OutputFormat::Header, Precision::Fp16);
+  const std::string h16 = encodeLut(t, OutputFormat::Header, lut::Precision::Fp16);
   CHECK(h16.find("static const uint16_t mb_dfg_lut[") != std::string::npos);
 }
 

@@ -145,7 +145,7 @@ size_t checkScene(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const S
     // fp16 permutations have no fp32 error bound to judge by (fp16Tolerance() only rejects
     // NaN/Inf): their quality selection and folding, which do not depend on the precision,
     // are checked at fp32.
-    perm.precision = "fp32";
+    perm.precision = Precision::Fp32;
     if (!isPruned(perm, lib) || !seen.insert(perm.key()).second) continue;
     auto sm = std::find_if(scene.materials.begin(), scene.materials.end(),
                            [&](const SceneMaterial& m) { return m.material.name == perm.material->name; });

@@ -37,7 +37,7 @@ TEST_CASE("a low-quality and a folded scene permutation validate on lavapipe", "
   // Low quality: sh_l1_irradiance and no energy compensation in place of the defaults. fp32,
   // so the reference's tolerance applies (the mobile scene itself ships fp16).
   SceneDesc mobile = loadScene((test::sourceDir() / "examples/scenes/mobile.json").string(), lib);
-  mobile.precisions = {"fp32"};
+  mobile.precisions = {Precision::Fp32};
   mobile.environments = {"ibl_lut"};
   ScenePlan low = planScene(mobile, lib);
   const Permutation& plastic = requiredKey(low, "filament_plastic.standard.dir+point.ibl_lut.fp32.low");

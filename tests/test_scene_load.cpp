@@ -44,8 +44,8 @@ TEST_CASE("scene JSON: axes, lights and uses are read", "[scene]") {
   CHECK(s.name == "t");
   CHECK(s.lightTypes() == std::vector<std::string>{"dir", "point"});
   CHECK(s.environments == std::vector<std::string>{"sh", "ibl_lut"});  // canonical order
-  CHECK(s.precisions == std::vector<std::string>{"fp16"});
-  CHECK(s.qualities == std::vector<std::string>{"low", "high"});
+  CHECK(s.precisions == std::vector<Precision>{Precision::Fp16});
+  CHECK(s.qualities == std::vector<Quality>{Quality::Low, Quality::High});
   CHECK(targetNames(s.targets) == std::vector<std::string>{"spirv", "glsl450"});
   REQUIRE(s.materials.size() == 1);
   REQUIRE(s.materials[0].uses.size() == 1);
@@ -114,8 +114,8 @@ TEST_CASE("glTF scene: referenced lights and the materials meshes use", "[scene]
   // "Unused Gold" is used by no mesh: not part of the scene.
   CHECK(names == std::vector<std::string>{"Lacquered_Oak", "Car_Paint", "Brushed_Steel", "Plaster"});
   CHECK(s.environments == std::vector<std::string>{"none"});
-  CHECK(s.precisions == std::vector<std::string>{"fp32"});
-  CHECK(s.qualities == std::vector<std::string>{"high"});
+  CHECK(s.precisions == std::vector<Precision>{Precision::Fp32});
+  CHECK(s.qualities == std::vector<Quality>{Quality::High});
   CHECK(targetNames(s.targets) == std::vector<std::string>{"spirv"});
   // clearcoatFactor 0 became the constant 0 of an enabled clear coat.
   const MaterialParam* cc = s.materials[0].material.param("clearCoat");

@@ -61,12 +61,10 @@ TEST_CASE("validity rules: one reason per invalid axis value", "[scene]") {
   p.features = {"clearcoat"};
   CHECK(invalidReason(model("cloth"), p));
   CHECK(!invalidReason(model("standard"), p));
-  p.precision = "fp64";
-  CHECK(invalidReason(model("standard"), p));
-  p.precision = "fp16";
-  p.quality = "ultra";
-  CHECK(invalidReason(model("standard"), p));
-  p.quality = "low";
+  CHECK(!parsePrecision("fp64"));  // an unknown precision is refused where it is read
+  p.precision = Precision::Fp16;
+  CHECK(!parseQuality("ultra"));  // an unknown quality level is refused where it is read
+  p.quality = Quality::Low;
   CHECK(!invalidReason(model("standard"), p));
 }
 
@@ -79,8 +77,8 @@ TEST_CASE("valid combination counts equal a brute-force enumeration of the produ
     for (const auto& fs : subsets(features))
       for (const auto& ls : subsets(allLightTypes()))
         for (const auto& e : allEnvironmentModes())
-          for (const auto& pr : allPrecisions())
-            for (const auto& q : allQualityLevels()) brute += !invalidReason(m, AxisPoint{fs, ls, e, pr, q});
+          for (Precision pr : allPrecisions())
+            for (Quality q : allQualities()) brute += !invalidReason(m, AxisPoint{fs, ls, e, pr, q});
     INFO(m.name);
     CHECK(validCombinationCount(m) == brute);
     CHECK(brute <= product);
@@ -95,16 +93,16 @@ TEST_CASE("quality: defaulted roles follow the table, chosen roles keep the mate
   const ShaderLibrary& lib = test::shippedLibrary();
   CHECK(model("standard").quality.at("low").at("sh_irradiance") == "sh_l1_irradiance");
   MaterialDesc m = material("filament_plastic");
-  MaterialDesc low = applyQuality(m, "low", lib);
+  MaterialDesc low = applyQuality(m, Quality::Low, lib);
   CHECK(low.bricks.at("sh_irradiance") == "sh_l1_irradiance");
   CHECK(low.bricks.at("energy_compensation") == "energy_compensation_none");
-  CHECK(applyQuality(m, "high", lib).bricks == m.bricks);
-  CHECK(applyQuality(m, "medium", lib).bricks.at("sphere_horizon_wrap") == "horizon_wrap_hermite");
+  CHECK(applyQuality(m, Quality::High, lib).bricks == m.bricks);
+  CHECK(applyQuality(m, Quality::Medium, lib).bricks.at("sphere_horizon_wrap") == "horizon_wrap_hermite");
   // The material chose this role itself: quality leaves it alone.
   MaterialDesc chose = m;
   chose.bricks["sh_irradiance"] = "sh9_irradiance";
   chose.brickLocations["sh_irradiance"] = SourceLocation("x.json", 3, 4);
-  CHECK(applyQuality(chose, "low", lib).bricks.at("sh_irradiance") == "sh9_irradiance");
+  CHECK(applyQuality(chose, Quality::Low, lib).bricks.at("sh_irradiance") == "sh9_irradiance");
 }
 
 namespace {
@@ -183,16 +181,16 @@ TEST_CASE("brick rules: an incompatible pair is invalid only where both roles ar
     CHECK(!invalidReason(standard, p));
   }
   // Low quality binds energy_compensation_none: the pair is gone.
-  MaterialDesc low = applyQuality(m, "low", lib);
+  MaterialDesc low = applyQuality(m, Quality::Low, lib);
   p.material = &low;
   p.environment = "ibl_analytic";
-  p.quality = "low";
+  p.quality = Quality::Low;
   CHECK(!brokenBrickRule(standard, p));
   // The UE4-layout LUT with the DESIGN.md-layout compensation, in ibl_lut only.
   MaterialDesc ue4Lut = material("ue4_metal");
   ue4Lut.bricks["dfg_lut"] = "dfg_lut_ue4";
   p.material = &ue4Lut;
-  p.quality = "high";
+  p.quality = Quality::High;
   p.environment = "ibl_lut";
   CHECK(brokenBrickRule(standard, p));
   // Not chosen in the file: at the model's name.
@@ -308,7 +306,7 @@ TEST_CASE("example scenes: required counts, far below possible, sorted keys, det
   CHECK(std::count(mk.begin(), mk.end(), "velvet_green.cloth.dir+point.sh.fp16.low") == 1);
   CHECK(std::count(mk.begin(), mk.end(), "velvet_green.cloth.dir+point.sh.fp16.medium") == 1);
   for (const auto& p : mobile.required)
-    if (p.quality == "low") CHECK(p.material->bricks.at("sh_irradiance") == "sh_l1_irradiance");
+    if (p.quality == Quality::Low) CHECK(p.material->bricks.at("sh_irradiance") == "sh_l1_irradiance");
   ScenePlan gallery = planScene(exampleScene("gallery.gltf"), lib);
   CHECK(std::count_if(gallery.required.begin(), gallery.required.end(), [](const Permutation& p) {
           return p.key() == "Lacquered_Oak.standard.dir+point.none.fp32.without-clearcoat";

@@ -172,7 +172,7 @@ TEST_CASE("stress over the whole library: no in-domain NaN/Inf at fp32 or emulat
     INFO(m.name);
     Permutation perm;
     perm.material = &m;
-    perm.precision = "fp16";
+    perm.precision = Precision::Fp16;
     fp16.push_back(stressProbe(gpu, buildPermutationProbe(lib, perm, true), "permutation", m.sourceFile, {}));
     if (!fp16.back().passed()) UNSCOPED_INFO(toJson(fp16.back(), "matbricks").dump(2));
     CHECK(fp16.back().passed());

@@ -60,7 +60,7 @@ TEST_CASE("fp16: GLSL 450, HLSL (min16float) and MSL from the half module, ESSL 
           "[targets][fp16]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   auto perms = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic", "clearcoat_metal"}),
-                                    {"dir", "point"}, "ibl_lut", "fp16");
+                                    {"dir", "point"}, "ibl_lut", Precision::Fp16);
   BuildOptions o;
   o.targets = allTargets();
   auto built = buildPermutations(lib, perms, o);

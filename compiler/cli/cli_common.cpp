@@ -84,8 +84,8 @@ void checkKnownNames(const std::vector<std::string>& names, const std::vector<st
 
 std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const ShaderLibrary& lib,
                                                 const std::vector<std::string>& lights,
-                                                const std::vector<std::string>& environments,
-                                                const std::string& precision, std::vector<std::string>& notes) {
+                                                const std::vector<std::string>& environments, Precision precision,
+                                                std::vector<std::string>& notes) {
   std::vector<Permutation> out;
   for (auto perm : validationPermutationsFor(m, lib)) {
     if (!environments.empty() &&

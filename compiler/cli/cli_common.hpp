@@ -63,8 +63,8 @@ void checkKnownNames(const std::vector<std::string>& names, const std::vector<st
 // modes); asked for, it is an error when the probe is built.
 std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const ShaderLibrary& lib,
                                                 const std::vector<std::string>& lights,
-                                                const std::vector<std::string>& environments,
-                                                const std::string& precision, std::vector<std::string>& notes);
+                                                const std::vector<std::string>& environments, Precision precision,
+                                                std::vector<std::string>& notes);
 
 std::unique_ptr<harness::VulkanHarness> openDevice(const GlobalOptions& g);
 // Prints validation-layer messages to stderr; returns true if there were any.

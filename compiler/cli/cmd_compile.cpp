@@ -15,6 +15,7 @@
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
 #include "core/cpp_identifiers.hpp"
+#include "core/json_fields.hpp"
 #include "core/package_stages.hpp"
 #include "load/scene_desc.hpp"
 #include "permute/scene_plan.hpp"
@@ -140,6 +141,17 @@ void compileArgsFromJson(const nlohmann::json& c, const std::string& file, Compi
     throw notReadable("'stages': " + why);
   for (const auto& t : a.targets)
     if (!parseTarget(t)) throw notReadable("'targets': '" + t + "' is not a target");
+  // An axis value the emitter (precision) or the quality selection (quality) refused before
+  // the axes were types: the same code and message, now where the shard is read.
+  auto unknownAxisValue = [&](const std::string& code, const std::string& what, const std::string& value,
+                              const std::vector<std::string>& names) {
+    return DiagnosticError(
+        {{Severity::Error, code, {file, 0, 0}, "unknown " + what + " '" + value + "'", "one of " + quotedList(names)}});
+  };
+  if (!parsePrecision(a.precision))
+    throw unknownAxisValue("E-PRECISION", "precision", a.precision, allPrecisionNames());
+  if (!parseQuality(a.quality))
+    throw unknownAxisValue("E-PERMUTATION-INVALID", "quality level", a.quality, allQualityNames());
   checkHeaderName(a.headerName, {file, 0, 0});
 }
 
@@ -188,8 +200,8 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
     AxisPoint axes;
     axes.lights = canonicalLights(a.lights);
     axes.environment = a.environment;
-    axes.precision = a.precision;
-    axes.quality = a.quality;
+    axes.precision = *parsePrecision(a.precision);  // checked by CLI11 or compileArgsFromJson
+    axes.quality = *parseQuality(a.quality);        // checked by CLI11 or compileArgsFromJson
     plan = planMaterials(materials, axes, lib);
     std::vector<const MaterialDesc*> sources;
     for (const auto& p : plan.required) sources.push_back(p.material);
@@ -311,9 +323,9 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
   args->axisOptions[1] = cmd->add_option("--environment", args->environment, "Environment mode (default: none)")
                              ->check(CLI::IsMember(allEnvironmentModes()));
   args->axisOptions[2] =
-      cmd->add_option("--precision", args->precision, "fp32 or fp16")->check(CLI::IsMember(allPrecisions()));
+      cmd->add_option("--precision", args->precision, "fp32 or fp16")->check(CLI::IsMember(allPrecisionNames()));
   args->axisOptions[3] = cmd->add_option("--quality", args->quality, "low, medium or high (default: high)")
-                             ->check(CLI::IsMember(allQualityLevels()));
+                             ->check(CLI::IsMember(allQualityNames()));
   cmd->add_option(
          "--targets", args->targets,
          "Output languages (default: the scene's, else spirv): " +

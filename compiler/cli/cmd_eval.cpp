@@ -148,12 +148,12 @@ int runEval(const EvalArgs& a, const GlobalOptions& g) {
                               "unknown brick '" + a.brick + "'",
                               didYouMean(a.brick, lib.brickIds())}});
     }
-    program = buildBrickProbe(lib, *b, false, *parsePrecision(a.precision));
+    program = buildBrickProbe(lib, *b, false, shaderPrecision(*parsePrecision(a.precision)));
   } else {
     // `materials` outlives the probe build: the permutation points into it.
     materials = {pickMaterial(loadMaterials({a.material}, lib, g), a)};
     Permutation perm = permutationsFor(materials).front();
-    perm.precision = a.precision;
+    perm.precision = *parsePrecision(a.precision);  // checked by --precision's IsMember
     // An illuminance column (illuminance.x, .y, .z) is optional; without it the light has
     // unit illuminance. `stress` prints such columns in its replay rows.
     program =

@@ -20,6 +20,7 @@ struct PreviewArgs {
   std::string output;
   std::string referenceImage, diffImage;  // with a .png output: only when named
   std::string environment = "studio";
+  std::string precision = "fp32";  // options.precision, parsed once the command line is read
   preview::PreviewOptions options;
   bool json = false;
 };
@@ -87,6 +88,7 @@ void printResult(const preview::PreviewResult& r, const std::string& gpuPng) {
 }
 
 int runPreview(PreviewArgs& a, const GlobalOptions& g) {
+  a.options.precision = *parsePrecision(a.precision);  // checked by --precision's IsMember
   const ShaderLibrary lib = loadLibrary(g);
   const std::vector<MaterialDesc> materials = loadMaterials(a.materials, lib, g);
   std::vector<const MaterialDesc*> pointers;
@@ -197,8 +199,8 @@ Command addPreviewCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--environment-mode", args->options.environmentMode,
                   "The permutation's environment mode (default: ibl_lut)")
       ->check(CLI::IsMember(allEnvironmentModes()));
-  cmd->add_option("--precision", args->options.precision, "The permutation's precision (default: fp32)")
-      ->check(CLI::IsMember(allPrecisions()));
+  cmd->add_option("--precision", args->precision, "The permutation's precision (default: fp32)")
+      ->check(CLI::IsMember(allPrecisionNames()));
   cmd->add_option("--sweep", args->options.sweep, "A row of spheres sweeping this parameter over its range");
   cmd->add_option("--sweep-count", args->options.sweepCount, "Spheres in a sweep (default 5, 2..16)");
   cmd->add_option(

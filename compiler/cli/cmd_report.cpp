@@ -42,7 +42,7 @@ std::vector<report::MaterialPermutations> materialPermutations(const std::vector
   std::vector<report::MaterialPermutations> out;
   for (const auto& m : materials) {
     report::MaterialPermutations mp{&m, {}, {}};
-    mp.permutations = permutationsToValidate(m, lib, a.lights, a.environments, "fp32", mp.notes);
+    mp.permutations = permutationsToValidate(m, lib, a.lights, a.environments, Precision::Fp32, mp.notes);
     out.push_back(std::move(mp));
   }
   return out;

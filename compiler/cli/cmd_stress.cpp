@@ -24,9 +24,9 @@ struct StressArgs {
   std::string output;
 };
 
-std::vector<ShaderPrecision> precisions(const std::string& name) {
-  if (name == "all") return {ShaderPrecision::Fp32, ShaderPrecision::Fp16};
-  return {*parsePrecision(name)};
+std::vector<Precision> precisions(const std::string& name) {
+  if (name == "all") return allPrecisions();
+  return {*parsePrecision(name)};  // checked by --precision's IsMember
 }
 
 // Builds the probe; at fp16 a brick that does not compile is a result, not an input error.
@@ -77,7 +77,8 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
   options.seed = a.seed;
 
   std::vector<StressResult> results;
-  for (ShaderPrecision p : precisions(a.precision)) {
+  for (Precision axis : precisions(a.precision)) {
+    const ShaderPrecision p = shaderPrecision(axis);
     for (const Brick* b : bricks) {
       ProbeProgram program;
       StressResult failed;
@@ -94,7 +95,7 @@ int runStress(const StressArgs& a, const GlobalOptions& g) {
     for (size_t m = 0; m < materials.size(); ++m) {
       Permutation perm;
       perm.material = &materials[m];
-      perm.precision = precisionName(p);
+      perm.precision = axis;
       ProbeProgram program;
       StressResult failed;
       // One file can hold many materials (glTF): each is named by its own source file and

@@ -59,12 +59,13 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
     glContext =
         std::make_unique<gl::GlCompute>(language == ProbeLanguage::Essl310 ? gl::GlApi::Es31 : gl::GlApi::Gl45Core);
   const ProbeDevices devices{gpu.get(), glContext.get()};
-  const ShaderPrecision precision = *parsePrecision(a.precision);
+  const Precision axis = *parsePrecision(a.precision);  // checked by --precision's IsMember
+  const ShaderPrecision precision = shaderPrecision(axis);
 
   std::vector<Permutation> perms;
   for (const auto& m : materials) {
     std::vector<std::string> notes;
-    for (auto& perm : permutationsToValidate(m, lib, a.lights, a.environments, a.precision, notes))
+    for (auto& perm : permutationsToValidate(m, lib, a.lights, a.environments, axis, notes))
       perms.push_back(std::move(perm));
     if (!a.quiet)
       for (const auto& n : notes) std::fprintf(stderr, "%s: note: %s\n", m.sourceFile.c_str(), n.c_str());

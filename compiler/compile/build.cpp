@@ -377,7 +377,7 @@ class StreamingBuild {
     CompileUnit u;
     // fp16 skips spirv-opt: SPIRV-Tools v2023.1's constant folding emits invalid 16-bit
     // constants (spirv-val then rejects the module), so fp16 ships glslang's SPIR-V as is.
-    u.compile.optimization = perm.precision == "fp32" ? options_.optimization : OptimizationLevel::O0;
+    u.compile.optimization = perm.precision == Precision::Fp32 ? options_.optimization : OptimizationLevel::O0;
     u.level = options_.optimization;
     u.compile.pipeline = options_.pipeline;
     u.glsl = shader.glsl;
@@ -388,7 +388,7 @@ class StreamingBuild {
     try {
       // The fragment shader (docs/fragment-stage.md) comes from the kernel's emitted text.
       if (fragment) setFragment(u, fragmentShaderOf(lib_, perm, shader, false), false);
-      if (perm.precision == "fp16" && needsMediump(targets_)) {
+      if (perm.precision == Precision::Fp16 && needsMediump(targets_)) {
         EmittedShader relaxed = emitPermutation(lib_, perm, false, options_.mode, true);
         if (fragment) setFragment(u, fragmentShaderOf(lib_, perm, relaxed, true), true);
         if (u.kernel) {

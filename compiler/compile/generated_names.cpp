@@ -207,9 +207,9 @@ Generated derive(const ShaderLibrary& lib, const ShadingModel* model, const Mate
   // shader: fp16 differs there only in types and in brick variants, which wrapper code never
   // calls by name (the skeleton calls MB_SLOT_<role>, a macro the text scan finds).
   for (Permutation perm : validationPermutationsFor(placeholder, lib)) {
-    for (const std::string& precision : allPrecisions()) {
+    for (Precision precision : allPrecisions()) {
       perm.precision = precision;
-      const bool fp32 = precision == allPrecisions().front();
+      const bool fp32 = precision == Precision::Fp32;
       tryEmit([&] {
         EmittedShader probe = emitPermutation(lib, perm);
         scanText(probe.glsl, probe.fileName, text);

@@ -263,14 +263,7 @@ ProbeLayout materialProbeLayout(const Permutation& perm, bool illuminanceInput) 
   return layout;
 }
 
-ShaderPrecision precisionOf(const Permutation& perm) {
-  if (auto p = parsePrecision(perm.precision)) return *p;
-  throw DiagnosticError({{Severity::Error,
-                          "E-PRECISION",
-                          {perm.material->sourceFile, 0, 0},
-                          "unknown precision '" + perm.precision + "'",
-                          "one of 'fp32', 'fp16'"}});
-}
+ShaderPrecision precisionOf(const Permutation& perm) { return shaderPrecision(perm.precision); }
 
 std::string boundBrick(const ShaderLibrary& lib, const Permutation& perm, const std::string& role) {
   return brickForPrecision(lib, perm.material->bricks.at(role), precisionOf(perm));

@@ -68,7 +68,7 @@ EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
 // for targets without 16-bit types; an fp32 one is unchanged.
 EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput = false,
                               EmitMode mode = EmitMode::Probe, bool mediump = false);
-// Permutation::precision as an enum; throws DiagnosticError for an unknown name.
+// What Permutation::precision emits (emit/precision.hpp shaderPrecision).
 ShaderPrecision precisionOf(const Permutation& perm);
 // The brick bound to `role` in this permutation (the material's choice, adjusted for the
 // precision by brickForPrecision).

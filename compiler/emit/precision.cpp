@@ -4,12 +4,6 @@ namespace mb {
 
 const char* precisionName(ShaderPrecision p) { return isHalf(p) ? "fp16" : "fp32"; }
 
-std::optional<ShaderPrecision> parsePrecision(const std::string& name) {
-  if (name == "fp32") return ShaderPrecision::Fp32;
-  if (name == "fp16") return ShaderPrecision::Fp16;
-  return std::nullopt;
-}
-
 const char* fp16ModeName(Fp16Mode m) { return m == Fp16Mode::Emulated ? "emulated" : "driver"; }
 
 std::optional<Fp16Mode> parseFp16Mode(const std::string& name) {

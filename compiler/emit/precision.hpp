@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "core/precision.hpp"
 #include "library/shader_library.hpp"
 
 namespace mb {
@@ -14,14 +15,17 @@ namespace mb {
 // Fp16Mediump is the fp16 axis value written for targets without 16-bit types (ESSL 3.10):
 // fp32 types under `precision mediump float;` (SPIR-V RelaxedPrecision), with MB_FP16's
 // guards and the fp16 roughness floor. Only the emitter produces it; a permutation's
-// precision is "fp32" or "fp16".
+// precision is Precision::Fp32 or Precision::Fp16 (core/precision.hpp).
 enum class ShaderPrecision { Fp32, Fp16, Fp16Mediump };
+// What a permutation's precision emits before the target asks for mediump.
+inline ShaderPrecision shaderPrecision(Precision p) {
+  return p == Precision::Fp16 ? ShaderPrecision::Fp16 : ShaderPrecision::Fp32;
+}
 
 // Fp16 or Fp16Mediump: the half-precision guards, clamps and domains apply.
 inline bool isHalf(ShaderPrecision p) { return p != ShaderPrecision::Fp32; }
 
 const char* precisionName(ShaderPrecision p);  // "fp32", "fp16"
-std::optional<ShaderPrecision> parsePrecision(const std::string& name);
 
 // How validate, stress and eval run an fp16 kernel (docs/fp16.md). Emulated (the default):
 // as the least precise conforming Vulkan device may compute it, whatever the driver does

@@ -69,12 +69,12 @@ std::optional<std::string> LibraryLoader::roleBinding(JsonFields& f, const std::
 }
 
 // "quality": {"low": {role: brick}, "medium": {...}}. "high" is the default bindings and is
-// not written (docs/scenes.md "Quality"): the levels are allQualityLevels() but "high".
+// not written (docs/scenes.md "Quality"): the levels are allQualityNames() but "high".
 std::map<std::string, std::map<std::string, std::string>> LibraryLoader::readQuality(JsonFields& f,
                                                                                      const ShadingModel& m) {
   static const std::vector<std::string> levels = [] {
-    std::vector<std::string> v = allQualityLevels();
-    std::erase(v, "high");
+    std::vector<std::string> v = allQualityNames();
+    std::erase(v, qualityName(Quality::High));
     return v;
   }();
   std::map<std::string, std::map<std::string, std::string>> out;

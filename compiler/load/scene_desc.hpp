@@ -9,6 +9,8 @@
 
 #include "core/diagnostics.hpp"
 #include "core/optimization_level.hpp"
+#include "core/precision.hpp"
+#include "core/quality.hpp"
 #include "core/target.hpp"
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
@@ -40,8 +42,8 @@ struct SceneDesc {
   std::string file;
   std::vector<SceneLight> lights;
   std::vector<std::string> environments{"none"};  // one permutation set per mode
-  std::vector<std::string> precisions{"fp32"};
-  std::vector<std::string> qualities{"high"};
+  std::vector<Precision> precisions{Precision::Fp32};
+  std::vector<Quality> qualities{Quality::High};
   std::vector<Target> targets{Target::Spirv};  // see compile/targets.hpp
   // "optimization": "O0" | "O1" | "O2"; `compile -O` overrides it (docs/scenes.md).
   OptimizationLevel optimization = OptimizationLevel::O2;

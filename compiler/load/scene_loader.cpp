@@ -71,8 +71,12 @@ class SceneJsonReader {
     f_.string("/description");
     readLights();
     readAxis("/environment", allEnvironmentModes(), "environment mode", scene_.environments, scene_.environmentWhere);
-    readAxis("/precision", allPrecisions(), "precision", scene_.precisions, scene_.precisionWhere);
-    readAxis("/quality", allQualityLevels(), "quality level", scene_.qualities, scene_.qualityWhere);
+    std::vector<std::string> precisions{precisionName(Precision::Fp32)};
+    readAxis("/precision", allPrecisionNames(), "precision", precisions, scene_.precisionWhere);
+    scene_.precisions = parsePrecisions(precisions);  // each checked against allPrecisionNames() above
+    std::vector<std::string> qualities{qualityName(Quality::High)};
+    readAxis("/quality", allQualityNames(), "quality level", qualities, scene_.qualityWhere);
+    scene_.qualities = parseQualities(qualities);  // each checked against allQualityNames() above
     std::vector<std::string> targets{targetName(Target::Spirv)};
     readAxis("/targets", allTargetNames(), "target", targets, scene_.targetsWhere, "E-SCENE-TARGET");
     scene_.targets = parseTargets(targets);  // each checked against allTargetNames() above

@@ -22,8 +22,8 @@ std::vector<std::string> featureNames(const ShadingModel& model) {
 }
 
 // Levels the model defines: "high" (its default bindings) always, others by its manifest.
-bool definesQuality(const ShadingModel& model, const std::string& quality) {
-  return quality == "high" || model.quality.count(quality) > 0;
+bool definesQuality(const ShadingModel& model, Quality quality) {
+  return quality == Quality::High || model.quality.count(qualityName(quality)) > 0;
 }
 
 }  // namespace
@@ -38,12 +38,9 @@ std::optional<std::string> invalidReason(const ShadingModel& model, const AxisPo
       return m + " does not shade '" + t + "' lights (it shades " + quotedList(model.lights) + ")";
   if (!contains(model.environments, point.environment))
     return m + " has no environment mode '" + point.environment + "' (it has " + quotedList(model.environments) + ")";
-  if (!contains(allPrecisions(), point.precision))
-    return "unknown precision '" + point.precision + "' (expected " + quotedList(allPrecisions()) + ")";
-  if (!contains(allQualityLevels(), point.quality))
-    return "unknown quality level '" + point.quality + "' (expected " + quotedList(allQualityLevels()) + ")";
   if (!definesQuality(model, point.quality))
-    return m + " defines no quality level '" + point.quality + "' (its manifest's \"quality\" table has no such level)";
+    return m + " defines no quality level '" + qualityName(point.quality) +
+           "' (its manifest's \"quality\" table has no such level)";
   return std::nullopt;
 }
 
@@ -83,7 +80,8 @@ std::optional<BrokenBrickRule> brokenBrickRule(const ShadingModel& model, const 
     }
     if (broken)
       return BrokenBrickRule{&rule, "model '" + model.name + "' does not combine " + pairs + " (environment '" +
-                                        perm.environment + "', quality '" + perm.quality + "'): " + rule.reason};
+                                        perm.environment + "', quality '" + qualityName(perm.quality) +
+                                        "'): " + rule.reason};
   }
   return std::nullopt;
 }
@@ -94,7 +92,7 @@ SourceLocation invalidLocation(const ShadingModel& model, const Permutation& per
       auto chosen = perm.material->brickLocations.find(role);
       if (chosen != perm.material->brickLocations.end()) return chosen->second;
     }
-  // A light, environment, feature, precision or quality the model lacks: at the model's name.
+  // A light, environment, feature or quality the model lacks: at the model's name.
   if (perm.material->modelWhere.line > 0) return perm.material->modelWhere;
   return SourceLocation(perm.material->sourceFile, 0, 0);
 }
@@ -104,7 +102,7 @@ std::vector<AxisSize> axisSizes(const ShadingModel& model) {
           {"lights", size_t{1} << allLightTypes().size()},
           {"environment", allEnvironmentModes().size()},
           {"precision", allPrecisions().size()},
-          {"quality", allQualityLevels().size()}};
+          {"quality", allQualities().size()}};
 }
 
 // Every rule of invalidReason() looks at one axis at a time, so the valid points are the
@@ -128,9 +126,9 @@ size_t validCombinationCount(const ShadingModel& model) {
   size_t envs = 0;
   for (const auto& e : allEnvironmentModes()) envs += validWith([&](AxisPoint& p) { p.environment = e; });
   size_t precisions = 0;
-  for (const auto& x : allPrecisions()) precisions += validWith([&](AxisPoint& p) { p.precision = x; });
+  for (Precision x : allPrecisions()) precisions += validWith([&](AxisPoint& p) { p.precision = x; });
   size_t qualities = 0;
-  for (const auto& q : allQualityLevels()) qualities += validWith([&](AxisPoint& p) { p.quality = q; });
+  for (Quality q : allQualities()) qualities += validWith([&](AxisPoint& p) { p.quality = q; });
   if (!validWith([](AxisPoint&) {})) return 0;
   return (size_t{1} << features) * (size_t{1} << lights) * envs * precisions * qualities;
 }

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/vocabulary.hpp"  // the axes' values: allPrecisions(), allQualityLevels()
+#include "core/vocabulary.hpp"  // the axes' values: Precision, Quality
 #include "library/shader_library.hpp"
 #include "permute/permutation.hpp"
 
@@ -18,13 +18,13 @@ struct AxisPoint {
   std::vector<std::string> features;  // enabled, model order
   std::vector<std::string> lights;    // canonicalLights() order; may be empty
   std::string environment = "none";
-  std::string precision = "fp32";
-  std::string quality = "high";
+  Precision precision = Precision::Fp32;
+  Quality quality = Quality::High;
 };
 
 // Why this combination is invalid for `model`, or nullopt when it is valid. The rules (each
 // with its reason): a light type / environment mode / feature the model does not have, an
-// unknown precision or quality, a quality level the model's manifest does not define.
+// a quality level the model's manifest does not define.
 std::optional<std::string> invalidReason(const ShadingModel& model, const AxisPoint& point);
 // The same for a bound permutation (its material's features, its lights, ...), and then the
 // model's brick rules (brokenBrickRule).

@@ -15,8 +15,9 @@ bool Permutation::hasLight(const std::string& type) const {
 }
 
 std::string Permutation::key() const {
-  std::string k = material->name + "." + material->model + "." + lightsKey() + "." + environment + "." + precision;
-  if (quality != "high") k += "." + quality;
+  std::string k =
+      material->name + "." + material->model + "." + lightsKey() + "." + environment + "." + precisionName(precision);
+  if (quality != Quality::High) k += "." + qualityName(quality);
   for (const auto& f : folded) k += ".without-" + f;
   return k;
 }

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/precision.hpp"
+#include "core/quality.hpp"
 #include "library/light_order.hpp"  // canonicalLights(): the order of `lights`
 #include "load/material_desc.hpp"
 
@@ -16,8 +18,8 @@ struct Permutation {
   const MaterialDesc* material = nullptr;
   std::vector<std::string> lights{"dir"};  // light types, in allLightTypes() order
   std::string environment = "none";        // one of allEnvironmentModes()
-  std::string precision = "fp32";          // one of allPrecisions()
-  std::string quality = "high";            // one of allQualityLevels()
+  Precision precision = Precision::Fp32;
+  Quality quality = Quality::High;
   // Features of the loaded material that the scene proved constant at their neutral value
   // and that were folded away (no lobe emitted), in the model's feature order.
   std::vector<std::string> folded;

@@ -40,8 +40,8 @@ void reportInvalid(const SceneDesc& scene, const SceneMaterial& sm, const Shadin
   AxisPoint base = point;
   base.lights.clear();
   base.environment = "none";
-  base.precision = "fp32";
-  base.quality = "high";
+  base.precision = Precision::Fp32;
+  base.quality = Quality::High;
   bool named = report(base, "its features", sm.where);
   for (const auto& l : scene.lights) {
     AxisPoint p = base;
@@ -53,10 +53,10 @@ void reportInvalid(const SceneDesc& scene, const SceneMaterial& sm, const Shadin
   named |= report(p, "environment '" + point.environment + "'", scene.environmentWhere);
   p = base;
   p.precision = point.precision;
-  named |= report(p, "precision '" + point.precision + "'", scene.precisionWhere);
+  named |= report(p, "precision '" + precisionName(point.precision) + "'", scene.precisionWhere);
   p = base;
   p.quality = point.quality;
-  named |= report(p, "quality '" + point.quality + "'", scene.qualityWhere);
+  named |= report(p, "quality '" + qualityName(point.quality) + "'", scene.qualityWhere);
   if (!named)
     report(point, "the scene's combination", scene.file.empty() ? sm.where : SourceLocation(scene.file, 1, 1));
 }
@@ -74,10 +74,11 @@ void reportBrokenRule(const SceneMaterial& sm, const ShadingModel& model, const 
         "bind another brick to one of these roles in the material, or drop the environment or quality level from the scene");
 }
 
-void noteQuality(MaterialPlanNote& note, const MaterialDesc& base, const MaterialDesc& q, const std::string& level) {
+void noteQuality(MaterialPlanNote& note, const MaterialDesc& base, const MaterialDesc& q, Quality level) {
   for (const auto& [role, brick] : q.bricks) {
     auto was = base.bricks.find(role);
-    if (was != base.bricks.end() && was->second != brick) note.qualityBricks.push_back({level + ":" + role, brick});
+    if (was != base.bricks.end() && was->second != brick)
+      note.qualityBricks.push_back({qualityName(level) + ":" + role, brick});
   }
 }
 
@@ -111,8 +112,8 @@ ScenePlan planScene(const SceneDesc& scene, const ShaderLibrary& lib) {
     std::set<std::string> said;
     bool valid = true;
     for (const auto& env : scene.environments)
-      for (const auto& precision : scene.precisions)
-        for (const auto& quality : scene.qualities) {
+      for (Precision precision : scene.precisions)
+        for (Quality quality : scene.qualities) {
           AxisPoint point{sm.material.features, lights, env, precision, quality};
           if (!invalidReason(model, point)) continue;
           reportInvalid(scene, sm, model, point, lib, said, sink);
@@ -132,12 +133,12 @@ ScenePlan planScene(const SceneDesc& scene, const ShaderLibrary& lib) {
         note.folded.push_back(f);
     }
     const MaterialDesc base = foldFeatures(sm.material, note.folded, lib);
-    for (const auto& quality : scene.qualities) {
+    for (Quality quality : scene.qualities) {
       plan.specialized.push_back(applyQuality(base, quality, lib));
       const MaterialDesc& spec = plan.specialized.back();
       noteQuality(note, base, spec, quality);
       for (const auto& env : scene.environments)
-        for (const auto& precision : scene.precisions) {
+        for (Precision precision : scene.precisions) {
           Permutation p;
           p.material = &spec;
           p.lights = lights;

@@ -52,15 +52,15 @@ const ShadingModel& modelOf(const MaterialDesc& m, const ShaderLibrary& lib) {
   return *model;
 }
 
-MaterialDesc applyQuality(const MaterialDesc& material, const std::string& quality, const ShaderLibrary& lib) {
-  if (quality == "high") return material;
+MaterialDesc applyQuality(const MaterialDesc& material, Quality quality, const ShaderLibrary& lib) {
+  if (quality == Quality::High) return material;
   const ShadingModel& model = modelOf(material, lib);
-  auto level = model.quality.find(quality);
+  auto level = model.quality.find(qualityName(quality));
   if (level == model.quality.end())
     throw DiagnosticError({{Severity::Error,
                             "E-PERMUTATION-INVALID",
                             {material.sourceFile, 0, 0},
-                            "model '" + model.name + "' defines no quality level '" + quality + "'"}});
+                            "model '" + model.name + "' defines no quality level '" + qualityName(quality) + "'"}});
   MaterialDesc out = material;
   for (const auto& [role, brick] : level->second) {
     auto bound = out.bricks.find(role);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/quality.hpp"
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
 #include "load/scene_desc.hpp"
@@ -19,7 +20,7 @@ const ShadingModel& modelOf(const MaterialDesc& material, const ShaderLibrary& l
 // Roles the material left at the model default take the model's brick for `quality`
 // (model manifest "quality" table); roles the material chose keep its choice. "high" is the
 // default bindings. Throws DiagnosticError for a level the model does not define.
-MaterialDesc applyQuality(const MaterialDesc& material, const std::string& quality, const ShaderLibrary& lib);
+MaterialDesc applyQuality(const MaterialDesc& material, Quality quality, const ShaderLibrary& lib);
 
 // Why `feature` of `material` cannot be folded over these uses, or nullopt when every use
 // holds the feature's neutral input (ModelInput::neutral) at exactly its neutral value.

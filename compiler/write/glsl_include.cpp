@@ -40,7 +40,7 @@ std::string includeOrigin(const PackagedPermutation& p, const std::string& langu
       << ". Do not edit.\n"
       << "// Material '" << perm.material->name << "' (" << oneLineText(perm.material->sourceFile) << "), model '"
       << perm.material->model << "', lights " << perm.lightsKey() << ", environment " << perm.environment
-      << ", precision " << perm.precision << ", quality " << perm.quality << ".\n";
+      << ", precision " << precisionName(perm.precision) << ", quality " << qualityName(perm.quality) << ".\n";
   return out.str();
 }
 
@@ -57,11 +57,12 @@ std::string engineInclude(const PackagedPermutation& p) {
   const std::string guard = includeGuard(p.built->shader.key, "");
   std::ostringstream out;
   out << includeOrigin(p, "GLSL") << "// Include it once per shader, after #version 450";
-  if (perm.precision == "fp16") out << " and #extension GL_EXT_shader_explicit_arithmetic_types_float16 : require";
+  if (perm.precision == Precision::Fp16)
+    out << " and #extension GL_EXT_shader_explicit_arithmetic_types_float16 : require";
   out << ".\n";
   if (needsFetchHooks(perm))
     out << "// The engine defines the environment hooks (declared in shaderlib/common/lights.glsl)"
-        << (perm.precision == "fp16" ? ", in half types (f16vec3, float16_t)" : "") << ":\n"
+        << (perm.precision == Precision::Fp16 ? ", in half types (f16vec3, float16_t)" : "") << ":\n"
         << "//   vec3 mb_fetch_prefiltered(vec3 r, float lod);   prefiltered radiance along r at mip lod\n"
         << "//   vec3 mb_fetch_dfg(float NoV, float perceptualRoughness);   the DFG LUT texel\n";
   out << "// Entry points (docs/models.md \"GLSL contract\"): MaterialInputs materialInputs(...),\n"
