@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "brick_call.hpp"
+#include "directions.hpp"
 #include "common/area_light_truth.hpp"
 #include "common/ltc_reference.hpp"
 #include "ratio_summary.hpp"
@@ -17,15 +18,6 @@ namespace {
 
 using namespace mb::ref;
 using nlohmann::json;
-
-Vec3 unitAt(double cosTheta, double phi) {
-  double s = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-  return {s * std::cos(phi), s * std::sin(phi), cosTheta};
-}
-
-Vec3 aroundDir(const Vec3& a, double angle, double phi) {
-  return lights::onCone(a, lights::frameAround(a), std::cos(angle), std::sin(angle), phi);
-}
 
 const ref::ltc::Mat3 kIdentity{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
 
@@ -79,11 +71,11 @@ json measureLtcAreaLights(const mb::ltc::Table& table, int sphereSamples, int tu
     double roughness = 0.05 + 0.95 * U(rng), alpha = roughness * roughness;
     double sinA = std::exp(std::log(0.01) + (std::log(0.5) - std::log(0.01)) * U(rng));
     double NoV = 0.05 + 0.95 * U(rng);
-    Vec3 v = unitAt(NoV, 2 * kPi * U(rng));
+    Vec3 v = unitFromAngles(NoV, 2 * kPi * U(rng));
     Vec3 r = n * (2 * NoV) - v;
     bool nearMirror = i % 2;
-    Vec3 c = nearMirror ? aroundDir(r, (alpha + std::asin(sinA)) * 2.0 * U(rng), 2 * kPi * U(rng))
-                        : unitAt(-sinA + (1 + sinA) * U(rng), 2 * kPi * U(rng));
+    Vec3 c = nearMirror ? around(r, (alpha + std::asin(sinA)) * 2.0 * U(rng), 2 * kPi * U(rng))
+                        : unitFromAngles(-sinA + (1 + sinA) * U(rng), 2 * kPi * U(rng));
     if (dot(n, c) <= -sinA + 1e-3) continue;  // no part above the horizon
     Geometry gc = makeGeometry(n, v, c);
     char where[160];
@@ -117,9 +109,9 @@ json measureLtcAreaLights(const mb::ltc::Table& table, int sphereSamples, int tu
   for (int i = 0; i < tubeSamples; ++i) {
     double roughness = 0.05 + 0.95 * U(rng), alpha = roughness * roughness;
     double NoV = 0.05 + 0.95 * U(rng);
-    Vec3 v = unitAt(NoV, 2 * kPi * U(rng));
+    Vec3 v = unitFromAngles(NoV, 2 * kPi * U(rng));
     Vec3 r = n * (2 * NoV) - v;
-    Vec3 c = i % 2 ? aroundDir(r, 0.5 * U(rng), 2 * kPi * U(rng)) : unitAt(-0.2 + 1.2 * U(rng), 2 * kPi * U(rng));
+    Vec3 c = i % 2 ? around(r, 0.5 * U(rng), 2 * kPi * U(rng)) : unitFromAngles(-0.2 + 1.2 * U(rng), 2 * kPi * U(rng));
     Vec3 axis = normalize(Vec3{U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5});
     double halfLength = 0.05 + 1.5 * U(rng), R = std::exp(std::log(0.005) + (std::log(0.2) - std::log(0.005)) * U(rng));
     Vec3 L0 = c - axis * halfLength, L1 = c + axis * halfLength;

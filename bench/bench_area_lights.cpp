@@ -32,6 +32,7 @@
 
 #include "area_lights_ltc.hpp"
 #include "brick_call.hpp"
+#include "directions.hpp"
 #include "common/area_light_truth.hpp"
 #include "ratio_summary.hpp"
 #include "common/reference.hpp"
@@ -39,6 +40,8 @@
 using namespace mb::ref;
 using nlohmann::json;
 using mb::bench::append;
+using mb::bench::around;
+using mb::bench::unitFromAngles;
 using mb::bench::callBrick;
 using mb::bench::pack;
 using mb::bench::Summary;
@@ -77,17 +80,6 @@ std::map<std::string, Cost> readCosts(const std::string& benchJson) {
         costs[it.at("id").get<std::string>()] = {it.at("ns_per_eval").get<double>(),
                                                  it.at("spirv_instructions").get<double>()};
   return costs;
-}
-
-Vec3 unitFromAngles(double cosTheta, double phi) {
-  double s = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-  return {s * std::cos(phi), s * std::sin(phi), cosTheta};
-}
-
-// A unit vector at angle `angle` from the unit vector a, in a random azimuth.
-Vec3 around(const Vec3& a, double angle, double phi) {
-  lights::Frame f = lights::frameAround(a);
-  return lights::onCone(a, f, std::cos(angle), std::sin(angle), phi);
 }
 
 const double kPiD = std::numbers::pi;

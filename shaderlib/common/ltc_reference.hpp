@@ -110,9 +110,9 @@ inline double clampedCosinePolygon(const std::vector<Vec3>& p) {
 // Int (n.l)+ dw / pi, the diffuse form factor.
 // Two clips: first to the horizon n.l >= 0, because the lobe D_M stands for is zero below it
 // while D_M is not (its support is the half-space (M^-1 w).z > 0, tilted against the horizon);
-// then to that support. Heitz et al. clip only the second; measured against the brute-force
-// integral (bench/bench_area_lights.cpp), lights partly below the horizon were up to 4500x too
-// bright without the first (sphere lights, 95th percentile of |ratio - 1| 1.5 against 1.0).
+// then to that support. Heitz et al. clip only the second, which leaves the light below the
+// horizon in the integral: far too bright for lights partly below it (an early run of
+// bench/bench_area_lights.cpp without the first clip; that variant is not kept).
 inline double polygonIntegral(const Mat3& minv, const ViewFrame& fr, const std::vector<Vec3>& world) {
   std::vector<Vec3> p;
   p.reserve(world.size());
