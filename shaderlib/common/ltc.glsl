@@ -7,12 +7,12 @@
 // Needs lights.glsl (mb_orthonormal_basis, Duff et al. 2017, which the reference mirrors so
 // that both orient a light's polygon alike).
 
-// How many vertices clipping can make of the capsule's 10. A clip keeps the a vertices above the
-// plane and adds one per crossing, at most 2 min(a, n - a) of them: at most 15 from 10 (a = 5),
-// then 20 from 15 (a = 10). The capsule's silhouette is not convex in general (near a large end
-// ball the horizon cuts it four times: measured 12 after the first clip), so the convex bound
-// n + 2 does not hold. The polygon lives in two private arrays, clipped from one into the other
-// and back: passing it by value (a struct or array argument) made lavapipe's JIT take 35-57 s
+// How many vertices a light's polygon can have: the capsule's hull takes at most 16 (both caps'
+// 8-gons); it is convex, so each of the two clips (horizon, then D_M's support) adds at most one:
+// 18. Two more for rounding that makes a nearly flat corner non-convex; mb_ltc_clip drops any
+// vertex beyond the last rather than write past it. The polygon lives in two private arrays,
+// clipped from one into the other and back (the second also holds the capsule's candidate
+// vertices): passing it by value (a struct or array argument) made lavapipe's JIT take 35-57 s
 // per kernel.
 const int MB_LTC_MAX_VERTICES = 20;
 vec3 mbLtcPoly[MB_LTC_MAX_VERTICES];
@@ -172,56 +172,88 @@ float mb_ltc_sin_alpha(float d, float radius) {
     return d > 0.0 ? min(radius / max(d, radius), 0.95) : 0.0;
 }
 
-// The sphere light as the area-matched regular 8-gon of the disk that faces the shading point
-// and whose rim is the sphere's cap rim (centre c cos a, radius sin a at unit distance; D_M and
-// the lobe integrate over directions, so that disk is the sphere exactly, as Heitz & Hill 2017
-// shade spheres), oriented by Duff et al.'s basis about c as the reference (spherePolygon).
-// Fills mbLtcPoly; returns its count.
-int mb_ltc_sphere_polygon(vec3 n, vec3 toCenter, float radius) {
+// The cap of a ball seen from the shading point as the area-matched regular 8-gon of the disk
+// that faces the point and whose rim is the cap's rim (centre c cos a, radius sin a at unit
+// distance; D_M and the lobe integrate over directions, so that disk is the ball exactly, as
+// Heitz & Hill 2017 shade spheres), oriented by Duff et al.'s basis about c as the reference
+// (spherePolygon), its vertices at radius sin a times scale. Vertex i of 8; sinA > 0.
+vec3 mb_ltc_cap_vertex(vec3 n, vec3 toCenter, float sinA, float scale, int i) {
     float d = length(toCenter);
     vec3 c = d > 0.0 ? toCenter / d : n;
-    float sinA = mb_ltc_sin_alpha(d, radius);
     float cosA = sqrt(1.0 - sinA * sinA);
     vec3 e1, e2;
     mb_orthonormal_basis(c, e1, e2);
     const float r = 0.70710678118654752;  // cos(pi / 4)
     const vec2 rim[8] = vec2[8](vec2(1.0, 0.0), vec2(r, r), vec2(0.0, 1.0), vec2(-r, r), vec2(-1.0, 0.0), vec2(-r, -r),
                                 vec2(0.0, -1.0), vec2(r, -r));
-    float s = sinA * 1.05390926;  // the 8-gon's area scale, sqrt(2 pi / (8 sin(pi / 4)))
-    for (int i = 0; i < 8; ++i) mbLtcPoly[i] = c * cosA + (e2 * rim[i].x + e1 * rim[i].y) * s;
+    float s = sinA * scale;
+    return c * cosA + (e2 * rim[i].x + e1 * rim[i].y) * s;
+}
+
+// The sphere light: its cap's 8-gon of the disk's area. Fills mbLtcPoly; returns its count (0 for a point light,
+// which has no solid angle).
+int mb_ltc_sphere_polygon(vec3 n, vec3 toCenter, float radius) {
+    float sinA = mb_ltc_sin_alpha(length(toCenter), radius);
+    if (!(sinA > 0.0)) return 0;
+    for (int i = 0; i < 8; ++i) mbLtcPoly[i] = mb_ltc_cap_vertex(n, toCenter, sinA, 1.05390926, i);  // sqrt(2 pi / (8 sin(pi / 4)))
     return 8;
 }
 
-// The tube (capsule) light's silhouette from the shading point: each end ball's cap rim as a
-// half 4-gon (the half away from the other end, stretched across the axis by pi / (4 sin(pi / 4))
-// so that its area is the half disk's) joined by the cylinder's sides, which run from +w to -w
-// at each end, w perpendicular to the axis and the end's direction. Vertex for vertex the
-// reference's tubePolygon. Fills mbLtcPoly; returns its count.
+// The tube (capsule) light's silhouette from the shading point: the spherical convex hull of its
+// two end caps' 8-gons (of the circle's mean width), by gift wrapping on the sphere (Jarvis 1973): from the vertex farthest
+// against e1 of the ends' mean direction, each next vertex is the one that leaves every other on
+// the left of the great circle through both. Continuous as the ends move, end-on views included
+// (common/ltc_reference.hpp, tubePolygon, which this follows step for step). The candidates sit
+// in mbLtcClipped and are read only at loop indices, vertices carried by value: reads at a
+// computed index made lavapipe's JIT take ~60 s. Fills mbLtcPoly; returns its count, at most 16.
 int mb_ltc_tube_polygon(vec3 n, vec3 L0, vec3 L1, float radius) {
-    vec3 axis = L1 - L0;
-    float axisLength = length(axis);
-    const float r = 0.70710678118654752;  // cos(pi / 4)
-    const vec2 half4[5] = vec2[5](vec2(1.0, 0.0), vec2(r, r), vec2(0.0, 1.0), vec2(-r, r), vec2(-1.0, 0.0));
-    const float stretch = 1.11072073;  // pi / (4 sin(pi / 4))
-    for (int end = 0; end < 2; ++end) {
-        vec3 E = end == 0 ? L0 : L1;
-        float d = length(E);
-        vec3 c = d > 0.0 ? E / d : n;
-        float sinA = mb_ltc_sin_alpha(d, radius);
-        float cosA = sqrt(1.0 - sinA * sinA);
-        vec3 w = cross(axis, c);
-        float wl = length(w);
-        vec3 e1, e2;
-        mb_orthonormal_basis(c, e1, e2);
-        w = wl > 1e-12 ? w / wl : e1;
-        // Away from the other end; seen end-on (or with no length) the ends take opposite
-        // halves, so that a zero-length tube is its sphere's disk.
-        vec3 o = cross(c, w);
-        float away = dot(o, end == 0 ? -axis : axis);
-        if (away < -1e-9 * axisLength || (!(away > 1e-9 * axisLength) && end == 1)) o = -o;
-        float side = end == 0 ? 1.0 : -1.0;
-        for (int i = 0; i < 5; ++i)
-            mbLtcPoly[end * 5 + i] = c * cosA + (w * (side * half4[i].x) + o * (stretch * half4[i].y)) * sinA;
+    float d0 = length(L0), d1 = length(L1);
+    float sin0 = mb_ltc_sin_alpha(d0, radius), sin1 = mb_ltc_sin_alpha(d1, radius);
+    if (!(sin0 > 0.0) || !(sin1 > 0.0)) return 0;  // no radius: a line has no solid angle
+    for (int i = 0; i < 8; ++i) {
+        // The 8-gons of the circle's mean width, pi / (8 sin(pi / 8)): the sides take their
+        // width from them (tubePolygon).
+        mbLtcClipped[i] = mb_ltc_cap_vertex(n, L0, sin0, 1.02617215, i);
+        mbLtcClipped[8 + i] = mb_ltc_cap_vertex(n, L1, sin1, 1.02617215, i);
     }
-    return 10;
+    vec3 mid = (d0 > 0.0 ? L0 / d0 : n) + (d1 > 0.0 ? L1 / d1 : n);
+    vec3 m = length(mid) > 0.0 ? normalize(mid) : n;
+    vec3 e1, e2;
+    mb_orthonormal_basis(m, e1, e2);
+    int cur = 0;
+    for (int j = 1; j < 16; ++j)
+        if (dot(normalize(mbLtcClipped[j]), e1) < dot(normalize(mbLtcClipped[cur]), e1)) cur = j;
+    vec3 p = mbLtcClipped[cur];
+    uint seen = 0u;
+    int count = 0;
+    for (int step = 0; step < 16; ++step) {
+        mbLtcPoly[step] = p;
+        count = step + 1;
+        seen |= 1u << uint(cur);
+        int next = -1;
+        vec3 best = p;
+        for (int j = 0; j < 16; ++j) {
+            vec3 q = mbLtcClipped[j];
+            if (q == p) continue;
+            if (next < 0) {
+                next = j;
+                best = q;
+                continue;
+            }
+            // q right of p -> best is the better next (a q on that great circle leaves the hull's
+            // area as it is, either way). The determinant [p, best, q] from the differences: the
+            // vertices of one small cap are close together, and cross(p, best) of two of them has
+            // lost most of its digits (fp32 wrapped in circles on thin tubes).
+            if (dot(p, cross(best - p, q - p)) < 0.0) {
+                next = j;
+                best = q;
+            }
+        }
+        // Back at a vertex taken already: closed (at the start) or, where rounding made the
+        // choices inconsistent on a nearly degenerate hull, stopped rather than looping.
+        if (next < 0 || (seen & (1u << uint(next))) != 0u) break;
+        cur = next;
+        p = best;
+    }
+    return count;
 }

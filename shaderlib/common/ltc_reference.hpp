@@ -128,9 +128,11 @@ inline double polygonIntegral(const Mat3& minv, const ViewFrame& fr, const std::
 // radius * polygonAreaScale(k); the remaining difference is of second order in the light's
 // angular size (docs/models/lights.md measures it).
 inline double polygonAreaScale(int k) { return std::sqrt(2.0 * kPi / (k * std::sin(2.0 * kPi / k))); }
+// The radius at which a regular k-gon's mean width (its perimeter over pi, Cauchy) is the
+// circle's: what a capsule's sides take from its end caps (tubePolygon).
+inline double polygonWidthScale(int k) { return kPi / (k * std::sin(kPi / k)); }
 
 inline constexpr int kLtcCircleVertices = 8;
-inline constexpr int kLtcCapsuleHalfVertices = 5;  // per end: a half circle of 4 edges
 
 // A rectangle light with centre c and half-edge vectors ex, ey, emitting on the side of
 // ex x ey. Seen from behind (or edge-on) it sends nothing: an empty polygon.
@@ -141,10 +143,11 @@ inline std::vector<Vec3> rectPolygon(const Vec3& c, const Vec3& ex, const Vec3& 
 
 // A disk (or ellipse) light with centre c and semi-axis vectors ex, ey, one-sided as the
 // rectangle: the area-matched regular polygon.
-inline std::vector<Vec3> diskPolygon(const Vec3& c, const Vec3& ex, const Vec3& ey, int k = kLtcCircleVertices) {
+inline std::vector<Vec3> diskPolygon(const Vec3& c, const Vec3& ex, const Vec3& ey, int k = kLtcCircleVertices,
+                                     double s = 0.0) {
   if (!(dot(cross(ex, ey), c) < 0.0)) return {};
   std::vector<Vec3> p;
-  double s = polygonAreaScale(k);
+  if (s == 0.0) s = polygonAreaScale(k);
   for (int i = 0; i < k; ++i) {
     double phi = 2.0 * kPi * i / k;
     p.push_back(c + (ex * std::cos(phi) + ey * std::sin(phi)) * s);
@@ -185,49 +188,70 @@ inline double ballSinAlpha(double d, double R) { return d > 0.0 ? std::min(R / s
 // (its rim is the cap's rim, at unit distance: centre c cos a, radius sin a). D_M integrates
 // over directions, so the disk stands for the sphere exactly (Heitz & Hill 2017 shade spheres
 // as such disks); only the polygon's approximation of the circle remains.
-inline std::vector<Vec3> spherePolygon(const Vec3& toCenter, double R, const Vec3& n, int k = kLtcCircleVertices) {
+inline std::vector<Vec3> spherePolygon(const Vec3& toCenter, double R, const Vec3& n, int k = kLtcCircleVertices,
+                                       double scale = 0.0) {
   double d = length(toCenter);
   Vec3 c = d > 0.0 ? toCenter / d : n;
   double sinA = ballSinAlpha(d, R), cosA = std::sqrt(1.0 - sinA * sinA);
   Vec3 e1, e2;
   perpendicularPair(c, e1, e2);
   // Wound so that ex x ey points back at the shading point (a disk facing it).
-  return diskPolygon(c * cosA, e2 * sinA, e1 * sinA, k);
+  return diskPolygon(c * cosA, e2 * sinA, e1 * sinA, k, scale);
 }
 
-// A tube (capsule) light, segment L0 -> L1 of radius R: its silhouette as seen from the shading
-// point, each end ball's cap rim as a half polygon (the half away from the other end, stretched
-// across the axis so its area is the half disk's) joined by the cylinder's two sides. The sides
-// run from +w to -w of each end, w perpendicular to both the axis and the end's direction.
+// A tube (capsule) light, segment L0 -> L1 of radius R: its silhouette seen from the shading
+// point, the spherical convex hull of its two end balls' caps. Each cap is a regular k-gon
+// oriented as the sphere light's (spherePolygon), at the radius that gives it the circle's mean
+// width rather than its area: a capsule's sides, tangent to the caps, take their width from
+// the k-gons' outermost vertices, and the area-matched 8-gon made tubes 2.6 % too bright at the
+// median (docs/models/lights.md). The hull is taken of their 2k vertices
+// by gift wrapping on the sphere (Jarvis 1973): from the vertex farthest against e1 of the ends'
+// mean direction, each next vertex is the one that leaves every other on the left of the great
+// circle through both. The hull moves continuously with the ends: seen end-on, the near cap
+// contains the far one and the hull is the near cap's polygon whichever way the axis tilts.
+// (Half caps joined across the axis, the construction this replaced, jump there: the side
+// across the axis is undefined end-on, and fp32 rounding on an NVIDIA H200 picked another side
+// than the reference, 40 % apart: docs/devices.md.) Needs every vertex in one open hemisphere,
+// which holds unless the shading point is (nearly) inside the capsule.
 inline std::vector<Vec3> tubePolygon(const Vec3& L0, const Vec3& L1, double R, const Vec3& n,
-                                     int half = kLtcCapsuleHalfVertices) {
-  Vec3 axis = L1 - L0;
-  std::vector<Vec3> p;
-  const int edges = half - 1;
-  const double stretch = kPi / (edges * std::sin(kPi / edges));  // half polygon area = half disk's
-  for (int end = 0; end < 2; ++end) {
-    const Vec3& E = end == 0 ? L0 : L1;
-    double d = length(E);
-    Vec3 c = d > 0.0 ? E / d : n;
-    double sinA = ballSinAlpha(d, R), cosA = std::sqrt(1.0 - sinA * sinA);
-    Vec3 w = cross(axis, c);
-    double wl = length(w);
-    Vec3 e1, e2;
-    perpendicularPair(c, e1, e2);
-    w = wl > 1e-12 ? w / wl : e1;
-    // Across the axis in the cap's plane, away from the other end. Seen end-on (or with no
-    // length) "away" has no sign: the ends then take opposite halves, so that a zero-length
-    // tube is its sphere's disk.
-    Vec3 out = cross(c, w);
-    double away = dot(out, end == 0 ? -1.0 * axis : axis);
-    if (away < -1e-9 * length(axis) || (!(away > 1e-9 * length(axis)) && end == 1)) out = -1.0 * out;
-    for (int i = 0; i < half; ++i) {
-      double phi = kPi * i / edges;         // from +w through `out` to -w
-      double sign = end == 0 ? 1.0 : -1.0;  // walk both ends the same way round
-      p.push_back(c * cosA + (w * (sign * std::cos(phi)) + out * (stretch * std::sin(phi))) * sinA);
+                                     int k = kLtcCircleVertices) {
+  std::vector<Vec3> pts = spherePolygon(L0, R, n, k, polygonWidthScale(k));
+  std::vector<Vec3> far = spherePolygon(L1, R, n, k, polygonWidthScale(k));
+  if (pts.empty() || far.empty()) return {};  // no radius: a line has no solid angle
+  pts.insert(pts.end(), far.begin(), far.end());
+  double d0 = length(L0), d1 = length(L1);
+  Vec3 mid = (d0 > 0.0 ? L0 / d0 : n) + (d1 > 0.0 ? L1 / d1 : n);
+  Vec3 m = length(mid) > 0.0 ? normalize(mid) : n;
+  Vec3 e1, e2;
+  perpendicularPair(m, e1, e2);
+  auto same = [](const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
+  const int count = static_cast<int>(pts.size());
+  int cur = 0;
+  for (int j = 1; j < count; ++j)
+    if (dot(normalize(pts[j]), e1) < dot(normalize(pts[cur]), e1)) cur = j;
+  std::vector<bool> seen(count, false);
+  std::vector<Vec3> hull;
+  while (true) {
+    const Vec3& p = pts[cur];
+    hull.push_back(p);
+    seen[cur] = true;
+    int next = -1;
+    for (int j = 0; j < count; ++j) {
+      const Vec3& q = pts[j];
+      if (same(q, p)) continue;
+      if (next < 0) {
+        next = j;
+        continue;
+      }
+      const Vec3& best = pts[next];
+      // q right of p -> best is the better next; the determinant [p, best, q] from the
+      // differences, as common/ltc.glsl computes it.
+      if (dot(p, cross(best - p, q - p)) < 0.0) next = j;
     }
+    if (next < 0 || seen[next]) break;  // closed, or stopped where choices became inconsistent
+    cur = next;
   }
-  return p;
+  return hull;
 }
 
 // ---- The LTC as a control variate (sphere_ltc_cv, tube_ltc_cv).

@@ -20,5 +20,15 @@ float mb_d_beckmann(Geometry g, float alpha) {
     }
 #endif
     float a2 = alpha * alpha;
+#ifdef MB_FP16
+    // The divisor pi a^2 cos^4 as logarithms in the exponent: written as divisions, a compiler
+    // may fold them into one product (GLSL lets it reassociate what is not `precise`), which
+    // underflows in half at cos^2 < 0.36 for alpha = 0.0079 and gives 0 * Inf = NaN: an NVIDIA
+    // H200's own half arithmetic did at n.h = 0.26 (docs/devices.md). The logarithms are of
+    // normal numbers (cos^2 >= 2^-5 here, a^2 >= 6.3e-5 on the fp16 domain) and the sum stays
+    // finite or -Inf, whatever the order.
+    return exp(-sin2 / (cos2 * a2) - log(MB_PI * a2) - 2.0 * log(cos2));
+#else
     return exp(-sin2 / (cos2 * a2)) / cos2 / cos2 / (MB_PI * a2);
+#endif
 }

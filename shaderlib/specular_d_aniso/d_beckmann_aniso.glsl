@@ -22,5 +22,11 @@ float mb_d_beckmann_aniso(Geometry g, vec3 t, float at, float ab) {
     vec3 tangent = mb_aniso_tangent(g.n, t);
     float x = dot(tangent, g.h) / at;
     float y = dot(cross(g.n, tangent), g.h) / ab;
+#ifdef MB_FP16
+    // The divisor as logarithms in the exponent, so that no reassociation of the divisions can
+    // underflow it to 0 in half (d_beckmann.glsl, docs/devices.md).
+    return exp(-(x * x + y * y) / cos2 - log(MB_PI * at * ab) - 2.0 * log(cos2));
+#else
     return exp(-(x * x + y * y) / cos2) / cos2 / cos2 / (MB_PI * at * ab);
+#endif
 }
