@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# The real-GPU checks of docs/devices.md ("NVIDIA H200, run here"), as one script for a machine
+# that has a GPU and nothing else: pack the CLI with `../shared/tools/gpu-bundle.sh` (or
+# `cmake --install` anywhere), copy the tree with .gpu/ to the GPU machine, and run
+#   bash scripts/gpu-checks.sh [OUT_DIR] [DEVICE_SUBSTRING]
+# Each command's output goes to OUT_DIR/NN-name.txt with its exit status and wall time; the
+# whole directory is packed into OUT_DIR/all.tgz (some runners bring back few files). A command
+# that runs past its limit is stopped (exit 124) and the script goes on.
+set -uo pipefail
+cd "$(dirname "$0")/.." || exit 2
+O=${1:-${OUT:-gpu-checks}}
+DEVICE=${2:-nvidia}
+mkdir -p "$O"
+MB=.gpu/mb
+[ -x "$MB" ] || { echo "gpu-checks: $MB not found: run ../shared/tools/gpu-bundle.sh first" >&2; exit 2; }
+bash .gpu/setup.sh > "$O/00-setup.txt" 2>&1
+M=.gpu/share/matbricks/materials
+LTC=(--brick tube_ltc_polygon --brick tube_ltc_cv --brick sphere_ltc_polygon --brick sphere_ltc_cv)
+step() {  # name, limit in seconds, command...
+  local name=$1 limit=$2
+  shift 2
+  local start
+  start=$(date +%s)
+  timeout "$limit" "$@" > "$O/$name.txt" 2>&1
+  echo "rc=$? wall_s=$(($(date +%s) - start))" >> "$O/$name.txt"
+  echo "$name $(tail -1 "$O/$name.txt")"
+}
+step 01-validate-materials 60 "$MB" --device "$DEVICE" validate "$M"/*.json
+step 02-validate-bricks 120 "$MB" --device "$DEVICE" validate --all-bricks
+step 03-validate-ltc 120 "$MB" --device "$DEVICE" validate "${LTC[@]}" --samples 50000
+step 04-validate-fp16-driver 60 "$MB" --device "$DEVICE" validate "$M"/*.json --precision fp16 --fp16 driver
+step 05-stress-fp16-driver 120 "$MB" --device "$DEVICE" stress --all-bricks --precision fp16 --fp16 driver
+step 06-stress-materials-fp16-driver 120 "$MB" --device "$DEVICE" stress "$M"/*.json --precision fp16 --fp16 driver
+step 07-preview-studio 90 "$MB" --device "$DEVICE" preview "$M"/*.json -o "$O/preview-studio"
+step 08-preview-sky 60 "$MB" --device "$DEVICE" preview "$M"/*.json --environment sky -o "$O/preview-sky"
+step 09-lut 30 "$MB" --device "$DEVICE" lut
+step 10-bench-area-lights 60 "$MB" --device "$DEVICE" bench --slot sphere_light_ltc --slot tube_light_ltc \
+  --slot tube_light_ltc_cv --slot sphere_light_ltc_cv --slot sphere_light_d --slot tube_light_point --repeats 9
+tar czf "$O.tgz" -C "$O" . && mv "$O.tgz" "$O/all.tgz"
