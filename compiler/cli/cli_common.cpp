@@ -84,7 +84,7 @@ void checkKnownNames(const std::vector<std::string>& names, const std::vector<st
 
 std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const ShaderLibrary& lib,
                                                 const std::vector<std::string>& lights,
-                                                const std::vector<std::string>& environments, Precision precision,
+                                                const std::vector<EnvironmentMode>& environments, Precision precision,
                                                 std::vector<std::string>& notes) {
   std::vector<Permutation> out;
   for (auto perm : validationPermutationsFor(m, lib)) {
@@ -95,7 +95,7 @@ std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const Sha
     perm.precision = precision;
     if (environments.empty())
       if (auto broken = brokenBrickRule(*lib.findModel(m.model), perm)) {
-        notes.push_back("skipping environment '" + perm.environment + "': " + broken->message);
+        notes.push_back("skipping environment '" + environmentModeName(perm.environment) + "': " + broken->message);
         continue;
       }
     out.push_back(perm);

@@ -63,7 +63,7 @@ void checkKnownNames(const std::vector<std::string>& names, const std::vector<st
 // modes); asked for, it is an error when the probe is built.
 std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const ShaderLibrary& lib,
                                                 const std::vector<std::string>& lights,
-                                                const std::vector<std::string>& environments, Precision precision,
+                                                const std::vector<EnvironmentMode>& environments, Precision precision,
                                                 std::vector<std::string>& notes);
 
 std::unique_ptr<harness::VulkanHarness> openDevice(const GlobalOptions& g);

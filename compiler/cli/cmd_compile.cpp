@@ -141,13 +141,16 @@ void compileArgsFromJson(const nlohmann::json& c, const std::string& file, Compi
     throw notReadable("'stages': " + why);
   for (const auto& t : a.targets)
     if (!parseTarget(t)) throw notReadable("'targets': '" + t + "' is not a target");
-  // An axis value the emitter (precision) or the quality selection (quality) refused before
-  // the axes were types: the same code and message, now where the shard is read.
+  // An axis value the emitter (precision), the quality selection (quality) or the validity
+  // rules (environment) refused before the axes were types: the same code, now where the
+  // shard is read.
   auto unknownAxisValue = [&](const std::string& code, const std::string& what, const std::string& value,
                               const std::vector<std::string>& names) {
     return DiagnosticError(
         {{Severity::Error, code, {file, 0, 0}, "unknown " + what + " '" + value + "'", "one of " + quotedList(names)}});
   };
+  if (!parseEnvironmentMode(a.environment))
+    throw unknownAxisValue("E-PERMUTATION-INVALID", "environment mode", a.environment, allEnvironmentModeNames());
   if (!parsePrecision(a.precision))
     throw unknownAxisValue("E-PRECISION", "precision", a.precision, allPrecisionNames());
   if (!parseQuality(a.quality))
@@ -199,9 +202,9 @@ int runCompile(const CompileArgs& a, const GlobalOptions& g, const ShardSet* mer
     materials = loadMaterials(a.materials, lib, g);
     AxisPoint axes;
     axes.lights = canonicalLights(a.lights);
-    axes.environment = a.environment;
-    axes.precision = *parsePrecision(a.precision);  // checked by CLI11 or compileArgsFromJson
-    axes.quality = *parseQuality(a.quality);        // checked by CLI11 or compileArgsFromJson
+    axes.environment = *parseEnvironmentMode(a.environment);  // checked by CLI11 or compileArgsFromJson
+    axes.precision = *parsePrecision(a.precision);            // checked by CLI11 or compileArgsFromJson
+    axes.quality = *parseQuality(a.quality);                  // checked by CLI11 or compileArgsFromJson
     plan = planMaterials(materials, axes, lib);
     std::vector<const MaterialDesc*> sources;
     for (const auto& p : plan.required) sources.push_back(p.material);
@@ -321,7 +324,7 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
           ->delimiter(',')
           ->check(CLI::IsMember(allLightTypes()));
   args->axisOptions[1] = cmd->add_option("--environment", args->environment, "Environment mode (default: none)")
-                             ->check(CLI::IsMember(allEnvironmentModes()));
+                             ->check(CLI::IsMember(allEnvironmentModeNames()));
   args->axisOptions[2] =
       cmd->add_option("--precision", args->precision, "fp32 or fp16")->check(CLI::IsMember(allPrecisionNames()));
   args->axisOptions[3] = cmd->add_option("--quality", args->quality, "low, medium or high (default: high)")
