@@ -91,12 +91,10 @@ const MaterialDesc& byName(const std::vector<MaterialDesc>& materials, const std
 }
 
 // Whether a material's model shades these lights together in this environment.
-bool shades(const ShaderLibrary& lib, const MaterialDesc& m, const std::string& env,
+bool shades(const ShaderLibrary& lib, const MaterialDesc& m, EnvironmentMode env,
             const std::vector<std::string>& lights) {
   const ShadingModel* model = lib.findModel(m.model);
-  auto has = [](const std::vector<std::string>& v, const std::string& x) {
-    return std::find(v.begin(), v.end(), x) != v.end();
-  };
+  auto has = [](const auto& v, const auto& x) { return std::find(v.begin(), v.end(), x) != v.end(); };
   return has(model->environments, env) &&
          std::all_of(lights.begin(), lights.end(), [&](const std::string& l) { return has(model->lights, l); });
 }
@@ -107,7 +105,7 @@ std::vector<Permutation> throughputList(const ShaderLibrary& lib, const std::vec
   std::vector<Permutation> perms;
   for (const auto& m : materials) {
     for (std::vector<std::string> lights : {std::vector<std::string>{"dir"}, {"dir", "point", "spot"}})
-      for (std::string env : {"none", "sh"}) {
+      for (EnvironmentMode env : {EnvironmentMode::None, EnvironmentMode::Sh}) {
         if (!shades(lib, m, env, lights)) continue;
         Permutation p;
         p.material = &m;
@@ -261,7 +259,7 @@ json levelCompileTimes(const ShaderLibrary& lib, const std::vector<Permutation>&
 std::vector<MaterialDesc> sixtyMaterials(const ShaderLibrary& lib, const std::vector<MaterialDesc>& shipped) {
   std::vector<const MaterialDesc*> bases;
   for (const auto& m : shipped)
-    if (shades(lib, m, "ibl_lut", {"dir", "point"})) bases.push_back(&m);
+    if (shades(lib, m, EnvironmentMode::IblLut, {"dir", "point"})) bases.push_back(&m);
   std::vector<MaterialDesc> out;
   for (size_t i = 0; i < 60; ++i) {
     MaterialDesc m = *bases[i % bases.size()];
@@ -284,7 +282,7 @@ json benchSceneShape(const ShaderLibrary& lib, const std::vector<MaterialDesc>& 
       Permutation p;
       p.material = &m;
       p.lights = {"dir", "point"};
-      p.environment = "ibl_lut";
+      p.environment = EnvironmentMode::IblLut;
       p.precision = precision;
       perms.push_back(p);
     }

@@ -16,8 +16,8 @@ TEST_CASE("output is bit-identical at -j1 and -j4, every target", "[build]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   const auto& mats = test::loadedMaterials(lib, {"brushed_metal", "clearcoat_metal", "filament_plastic", "satin_sheen",
                                                  "worn_car_paint", "frostbite_dielectric"});
-  auto perms = test::permutationsOf(mats, {"dir", "point", "sphere"}, "ibl_lut");
-  for (const auto& p : test::permutationsOf(mats, {"dir"}, "sh", Precision::Fp16)) perms.push_back(p);
+  auto perms = test::permutationsOf(mats, {"dir", "point", "sphere"}, EnvironmentMode::IblLut);
+  for (const auto& p : test::permutationsOf(mats, {"dir"}, EnvironmentMode::Sh, Precision::Fp16)) perms.push_back(p);
   BuildOptions o;
   o.targets = {Target::Spirv, Target::Glsl450, Target::Hlsl, Target::Msl};
   o.jobs = 1;
@@ -36,7 +36,7 @@ TEST_CASE("output is bit-identical at -j1 and -j4, every target", "[build]") {
 TEST_CASE("identical emitted GLSL is compiled once; unique SPIR-V is counted", "[build]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   const auto& mats = test::loadedMaterials(lib, {"ue4_metal", "filament_plastic"});
-  auto perms = test::permutationsOf(mats, {"dir"}, "none");
+  auto perms = test::permutationsOf(mats, {"dir"}, EnvironmentMode::None);
   perms.push_back(perms[0]);  // the same permutation twice (two scene entries of one material)
   BuildStats s;
   auto built = buildPermutations(lib, perms, {}, &s);
@@ -51,8 +51,8 @@ TEST_CASE("identical emitted GLSL is compiled once; unique SPIR-V is counted", "
 
 TEST_CASE("fp16 permutations skip spirv-opt and still validate", "[build][fp16]") {
   const ShaderLibrary& lib = test::shippedLibrary();
-  auto perms = test::permutationsOf(test::loadedMaterials(lib, {"worn_car_paint"}), {"dir", "point"}, "ibl_lut",
-                                    Precision::Fp16);
+  auto perms = test::permutationsOf(test::loadedMaterials(lib, {"worn_car_paint"}), {"dir", "point"},
+                                    EnvironmentMode::IblLut, Precision::Fp16);
   auto built = buildPermutations(lib, perms, {});
   spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
   CHECK(tools.Validate(built[0].artifacts.spirv));
@@ -69,7 +69,7 @@ TEST_CASE("every failing permutation is reported, in input order, and nothing is
   fs::copy(test::sourceDir() / "shaderlib", test::rootOf(root), fs::copy_options::recursive);
   ShaderLibrary lib = ShaderLibrary::load(test::rootOf(root));
   const auto& mats = test::loadedMaterials(lib, {"filament_plastic", "ue4_metal", "frostbite_dielectric"});
-  auto perms = test::permutationsOf(mats, {"dir"}, "none");
+  auto perms = test::permutationsOf(mats, {"dir"}, EnvironmentMode::None);
   const std::string brickId = emitPermutation(lib, perms[0]).bricks.front();
   const Brick* brick = lib.findBrick(brickId);
   REQUIRE(brick);
@@ -87,7 +87,7 @@ TEST_CASE("every failing permutation is reported, in input order, and nothing is
   BuildOptions o;
   o.jobs = 3;
   try {
-    buildPermutations(broken, test::permutationsOf(brokenMats, {"dir"}, "none"), o);
+    buildPermutations(broken, test::permutationsOf(brokenMats, {"dir"}, EnvironmentMode::None), o);
     FAIL("a broken brick compiled");
   } catch (const DiagnosticError& e) {
     REQUIRE(e.diagnostics().size() == using_.size());
@@ -105,8 +105,9 @@ TEST_CASE("a streamed build in small windows writes the same package as one wind
   const auto& mats = test::loadedMaterials(lib, {"brushed_metal", "clearcoat_metal", "filament_plastic", "satin_sheen",
                                                  "worn_car_paint", "ue4_metal", "velvet_green"});
   ScenePlan plan;
-  plan.required = test::permutationsOf(mats, {"dir", "point"}, "sh");
-  for (const auto& p : test::permutationsOf(mats, {"dir"}, "none", Precision::Fp16)) plan.required.push_back(p);
+  plan.required = test::permutationsOf(mats, {"dir", "point"}, EnvironmentMode::Sh);
+  for (const auto& p : test::permutationsOf(mats, {"dir"}, EnvironmentMode::None, Precision::Fp16))
+    plan.required.push_back(p);
   const test::ScratchDir dir("stream_windows");
   PackageInputs in;
   in.lib = &lib;

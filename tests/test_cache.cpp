@@ -33,7 +33,7 @@ void requireSame(const CompiledArtifacts& a, const CompiledArtifacts& b) {
 
 std::vector<Permutation> cachePermutations() {
   const auto& mats = test::loadedMaterials(test::shippedLibrary(), {"filament_plastic", "satin_sheen", "ue4_metal"});
-  return test::permutationsOf(mats, {"dir", "point"}, "sh");
+  return test::permutationsOf(mats, {"dir", "point"}, EnvironmentMode::Sh);
 }
 
 // The identity an entry file carries.
@@ -306,7 +306,7 @@ TEST_CASE("the cache key changes with a brick source, an option or the target li
   test::ScratchDir root("cache_key_lib");
   fs::copy(test::sourceDir() / "shaderlib", test::rootOf(root), fs::copy_options::recursive);
   auto keyOf = [](const ShaderLibrary& lib, OptimizationLevel level, const std::vector<std::string>& targets) {
-    auto perms = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir"}, "none");
+    auto perms = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir"}, EnvironmentMode::None);
     return buildCacheKey(lib, emitPermutation(lib, perms[0], false, EmitMode::Engine), level, parseTargets(targets));
   };
   ShaderLibrary lib = ShaderLibrary::load(test::rootOf(root));
@@ -320,9 +320,10 @@ TEST_CASE("the cache key changes with a brick source, an option or the target li
   CHECK(keyOf(lib, O2, {"spirv", "hlsl", "msl"}) == keyOf(lib, O2, {"msl", "hlsl"}));  // spirv always built
 
   // A brick the permutation includes changes: a new key, even for a comment-only edit.
-  const Brick* brick = lib.findBrick(
-      emitPermutation(lib, test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir"}, "none")[0])
-          .bricks.front());
+  const Brick* brick =
+      lib.findBrick(emitPermutation(lib, test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir"},
+                                                              EnvironmentMode::None)[0])
+                        .bricks.front());
   REQUIRE(brick);
   { std::ofstream(test::rootOf(root) / brick->file, std::ios::app) << "// edited\n"; }
   ShaderLibrary edited = ShaderLibrary::load(test::rootOf(root));

@@ -198,7 +198,7 @@ TEST_CASE("the mediump (ESSL) form of fp16 permutations computes the fp32 functi
     Permutation perm;
     perm.material = &m;
     perm.lights = {"dir", "point", "spot"};
-    perm.environment = "ibl_lut";
+    perm.environment = EnvironmentMode::IblLut;
     perm.precision = Precision::Fp32;
     const Tolerance tol = buildPermutationProbe(lib, perm).tolerance;
     perm.precision = Precision::Fp16;

@@ -81,7 +81,7 @@ TEST_CASE("Every shipped permutation's fragment shader compiles, validates and r
       CHECK(spirvValidationErrors(spirv, SPV_ENV_VULKAN_1_1).empty());
       const nlohmann::json r = reflectSpirv(spirv);
       ++count;
-      covered.insert(perm.environment + "/" + precisionName(perm.precision));
+      covered.insert(environmentModeName(perm.environment) + "/" + precisionName(perm.precision));
       for (const auto& l : perm.lights) covered.insert(l);
 
       CHECK(r.at("entry_point") == "main");
@@ -141,8 +141,9 @@ TEST_CASE("Every shipped permutation's fragment shader compiles, validates and r
 
       // Samplers: the environment's and one per texture record, nothing else.
       std::map<int, std::string> expected;
-      if (perm.environment == "ibl_lut" || perm.environment == "ibl_analytic") expected[2] = "samplerCube";
-      if (perm.environment == "ibl_lut") expected[3] = "sampler2D";
+      const EnvironmentMode env = perm.environment;
+      if (env == EnvironmentMode::IblLut || env == EnvironmentMode::IblAnalytic) expected[2] = "samplerCube";
+      if (env == EnvironmentMode::IblLut) expected[3] = "sampler2D";
       const auto textures = fragmentTextures(*perm.material);
       for (const auto& t : textures) expected[t.binding] = "sampler2D";
       textured += !textures.empty();

@@ -158,7 +158,7 @@ TEST_CASE("the fragment shader is cached with its kernel: a warm build compiles 
   test::ScratchDir dir("fragment_cache");
   const ShaderLibrary& lib = test::shippedLibrary();
   const auto& mats = test::loadedMaterials(lib, {"worn_car_paint", "velvet_green"});
-  const auto perms = test::permutationsOf(mats, {"dir", "point"}, "ibl_lut");
+  const auto perms = test::permutationsOf(mats, {"dir", "point"}, EnvironmentMode::IblLut);
   BuildOptions o;
   o.targets = {Target::Spirv, Target::Glsl450, Target::Essl310, Target::Hlsl, Target::Msl};
   o.cacheDir = test::rootOf(dir);

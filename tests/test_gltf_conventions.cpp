@@ -283,7 +283,7 @@ TEST_CASE("a black metal under ibl_analytic reflects no negative radiance", "[gl
   const MaterialDesc m = corpusMaterial("black_metal.gltf");
   Permutation perm = permutationsFor({m}).front();
   perm.material = &m;
-  perm.environment = "ibl_analytic";
+  perm.environment = EnvironmentMode::IblAnalytic;
   ValidationRecord r = validateProbe(gpu, buildPermutationProbe(test::shippedLibrary(), perm), "permutation", 4096, 18);
   INFO(r.key << ": negative " << r.stats.negativeCount << ", max_abs " << r.stats.maxAbs << ", worst " << r.worstInput);
   CHECK(r.judgesNegatives());

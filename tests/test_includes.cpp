@@ -111,7 +111,7 @@ TEST_CASE("a contract function missing from an include is found", "[includes]") 
   const MaterialDesc m = test::shippedMaterial("ue4_metal");
   p.material = &m;
   p.lights = {"dir", "sphere"};
-  p.environment = "ibl_lut";
+  p.environment = EnvironmentMode::IblLut;
   const Checked c = buildAll({p}).front();
   REQUIRE(c.error.empty());
   const std::string glsl = c.glsl.substr(0, c.glsl.find("#ifndef MB_NO_PROBE"));

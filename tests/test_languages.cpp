@@ -58,7 +58,7 @@ void checkPermutation(const ShaderLibrary& lib, const Permutation& perm, ProbeLa
   CHECK(r.passed());
 }
 
-Permutation permutationOf(const MaterialDesc& m, std::vector<std::string> lights, const std::string& environment,
+Permutation permutationOf(const MaterialDesc& m, std::vector<std::string> lights, EnvironmentMode environment,
                           Precision precision) {
   Permutation perm;
   perm.material = &m;
@@ -150,8 +150,8 @@ TEST_CASE("glsl450 at fp16 is refused on llvmpipe with the missing extension nam
   REQUIRE(!glContext(gl::GlApi::Gl45Core).hasExtension("GL_AMD_gpu_shader_half_float"));
   const ShaderLibrary& lib = test::shippedLibrary();
   const MaterialDesc m = test::shippedMaterial("filament_plastic");
-  LanguageProbe p =
-      buildPermutationProbeIn(lib, permutationOf(m, {"dir"}, "none", Precision::Fp16), ProbeLanguage::Glsl450);
+  LanguageProbe p = buildPermutationProbeIn(lib, permutationOf(m, {"dir"}, EnvironmentMode::None, Precision::Fp16),
+                                            ProbeLanguage::Glsl450);
   CHECK(p.source.find("#extension GL_AMD_gpu_shader_half_float") != std::string::npos);
   CHECK_THROWS_WITH(runProbeOn(devicesFor(ProbeLanguage::Glsl450), p, {}),
                     Catch::Contains("lacks GL_AMD_gpu_shader_half_float"));
@@ -163,7 +163,7 @@ TEST_CASE("a wrong translation is caught in every executable language", "[langua
   // else.
   const ShaderLibrary& lib = test::shippedLibrary();
   const MaterialDesc m = test::shippedMaterial("filament_plastic");
-  const Permutation perm = permutationOf(m, {"dir"}, "none", Precision::Fp32);
+  const Permutation perm = permutationOf(m, {"dir"}, EnvironmentMode::None, Precision::Fp32);
   for (ProbeLanguage language : kTranslated) {
     LanguageProbe p = buildPermutationProbeIn(lib, perm, language);
     INFO(languageName(language));
@@ -217,7 +217,7 @@ TEST_CASE("llvmpipe runs ESSL mediump at 16 bits: the essl310 fp16 kernel is tru
   // lavapipe is again (it runs at fp32).
   const ShaderLibrary& lib = test::shippedLibrary();
   const MaterialDesc m = test::shippedMaterial("velvet_green");
-  Permutation perm = permutationOf(m, {"dir", "point", "spot"}, "none", Precision::Fp32);
+  Permutation perm = permutationOf(m, {"dir", "point", "spot"}, EnvironmentMode::None, Precision::Fp32);
   const Tolerance fp32 = buildPermutationProbe(lib, perm).tolerance;
   perm.precision = Precision::Fp16;
   LanguageProbe es = buildPermutationProbeIn(lib, perm, ProbeLanguage::Essl310);

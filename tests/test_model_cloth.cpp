@@ -87,7 +87,7 @@ TEST_CASE("the cloth model validates on lavapipe: all lights, every environment 
   MaterialDesc velvet = parseMaterialJson(kVelvet, "velvet.json", lib);
   MaterialDesc ashikhmin = parseMaterialJson(kAshikhmin, "ashikhmin_cloth.json", lib);
   harness::VulkanHarness gpu(harness::testDeviceOptions());
-  for (const char* env : {"none", "sh", "ibl_lut"}) {
+  for (EnvironmentMode env : {EnvironmentMode::None, EnvironmentMode::Sh, EnvironmentMode::IblLut}) {
     test::requireModelPermutationValidates(gpu, velvet, {"dir", "point", "spot"}, env);
     test::requireModelPermutationValidates(gpu, ashikhmin, {"dir", "point", "spot"}, env);
   }

@@ -117,7 +117,7 @@ TEST_CASE("the standard model's SH and IBL environments validate on lavapipe", "
   MaterialDesc plastic = parseMaterialJson(kPlastic, "env_plastic.json", lib);
   MaterialDesc metal = parseMaterialJson(kMetal, "env_metal.json", lib);
   harness::VulkanHarness gpu(harness::testDeviceOptions());
-  for (const char* env : {"sh", "ibl_lut", "ibl_analytic"}) {
+  for (EnvironmentMode env : {EnvironmentMode::Sh, EnvironmentMode::IblLut, EnvironmentMode::IblAnalytic}) {
     test::requireModelPermutationValidates(gpu, plastic, {"dir"}, env);
     test::requireModelPermutationValidates(gpu, metal, {"point"}, env);
   }

@@ -185,7 +185,7 @@ std::string clearCoatNormalMetal() {
 const std::vector<std::string> kPunctual{"dir", "point", "spot"};
 const std::vector<std::string> kArea{"sphere", "tube"};
 
-void validateThrough(const char* json, const std::vector<std::string>& lights, const std::string& environment) {
+void validateThrough(const char* json, const std::vector<std::string>& lights, EnvironmentMode environment) {
   const ShaderLibrary& lib = test::shippedLibrary();
   MaterialDesc mat = parseMaterialJson(json, "features_test_material.json", lib);
   harness::VulkanHarness gpu(harness::testDeviceOptions());
@@ -383,34 +383,34 @@ TEST_CASE("a clear coat over a white Lambertian base conserves energy at normal 
 // lavapipe: each feature alone and all three, through the lights and environment modes.
 
 TEST_CASE("clear-coated metal validates on lavapipe under punctual lights", "[model-features][gpu][vulkan]") {
-  validateThrough(kClearCoatMetal, kPunctual, "none");
+  validateThrough(kClearCoatMetal, kPunctual, EnvironmentMode::None);
 }
 
 TEST_CASE("a clear coat with its own normal validates on lavapipe under every light and environment",
           "[model-features][gpu][vulkan]") {
   const std::string json = clearCoatNormalMetal();
   REQUIRE(json.find("clearCoatNormal") != std::string::npos);
-  validateThrough(json.c_str(), kArea, "none");
-  for (const char* environment : {"none", "sh", "ibl_lut", "ibl_analytic"}) {
-    INFO("environment " << environment);
+  validateThrough(json.c_str(), kArea, EnvironmentMode::None);
+  for (EnvironmentMode environment : allEnvironmentModes()) {
+    INFO("environment " << environmentModeName(environment));
     validateThrough(json.c_str(), kPunctual, environment);
   }
 }
 
 TEST_CASE("anisotropic metal validates on lavapipe under punctual lights", "[model-features][gpu][vulkan]") {
-  validateThrough(kAnisotropicMetal, kPunctual, "none");
+  validateThrough(kAnisotropicMetal, kPunctual, EnvironmentMode::None);
 }
 
 TEST_CASE("green velvet (sheen) validates on lavapipe under punctual lights", "[model-features][gpu][vulkan]") {
-  validateThrough(kVelvetGreen, kPunctual, "none");
+  validateThrough(kVelvetGreen, kPunctual, EnvironmentMode::None);
 }
 
 TEST_CASE("all three features together validate on lavapipe in every environment mode",
           "[model-features][gpu][vulkan]") {
   // The IBL hooks: the coat's and the sheen's prefiltered lookups and attenuations, the bent
   // normal of the anisotropic base, the sheen albedo from the LUT (ibl_lut) or the fit.
-  for (const char* environment : {"none", "sh", "ibl_lut", "ibl_analytic"}) {
-    INFO("environment " << environment);
+  for (EnvironmentMode environment : allEnvironmentModes()) {
+    INFO("environment " << environmentModeName(environment));
     validateThrough(kAllFeatures, kPunctual, environment);
   }
 }
@@ -418,7 +418,7 @@ TEST_CASE("all three features together validate on lavapipe in every environment
 TEST_CASE("all three features together validate on lavapipe under sphere and tube lights",
           "[model-features][gpu][vulkan]") {
   // The coat is evaluated at the area light's centre direction (docs/models/features.md).
-  validateThrough(kAllFeatures, kArea, "none");
+  validateThrough(kAllFeatures, kArea, EnvironmentMode::None);
 }
 
 TEST_CASE("the anisotropic visibilities see a light below the horizon at n.l = 0 as the reference does",

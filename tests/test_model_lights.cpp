@@ -342,7 +342,7 @@ TEST_CASE("lights: shipped materials with the five light types validate on lavap
     MaterialDesc m = shippedMaterial(name);
     // Over the materials' full roughness ranges: the sphere's representative direction comes
     // from vectors (sphere_light_point), not from a scalar n.h (docs/models/lights.md).
-    test::requireModelPermutationValidates(gpu, m, kAllLights, "none");
+    test::requireModelPermutationValidates(gpu, m, kAllLights, EnvironmentMode::None);
   }
   test::requireNoValidationLayerMessages(gpu);
 }

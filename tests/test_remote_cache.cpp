@@ -16,7 +16,7 @@ namespace {
 
 std::vector<Permutation> remotePermutations() {
   const auto& mats = test::loadedMaterials(test::shippedLibrary(), {"filament_plastic", "satin_sheen", "ue4_metal"});
-  return test::permutationsOf(mats, {"dir", "point"}, "sh");
+  return test::permutationsOf(mats, {"dir", "point"}, EnvironmentMode::Sh);
 }
 
 struct RemoteBuild {
@@ -411,7 +411,7 @@ TEST_CASE("a remote cache slower than compiling locally is noticed and dropped",
   // Five materials, one unit each, built one at a time so that the requests come in a known order.
   const auto& mats = test::loadedMaterials(
       test::shippedLibrary(), {"filament_plastic", "satin_sheen", "ue4_metal", "brushed_metal", "worn_car_paint"});
-  const auto perms = test::permutationsOf(mats, {"dir"}, "none");
+  const auto perms = test::permutationsOf(mats, {"dir"}, EnvironmentMode::None);
   // The delay is derived from this machine's compile time of these units, so that every
   // answer is slower than compiling whatever the machine's speed (and slower than the probe
   // threshold); the timeout leaves it room.

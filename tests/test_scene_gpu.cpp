@@ -38,7 +38,7 @@ TEST_CASE("a low-quality and a folded scene permutation validate on lavapipe", "
   // so the reference's tolerance applies (the mobile scene itself ships fp16).
   SceneDesc mobile = loadScene((test::sourceDir() / "examples/scenes/mobile.json").string(), lib);
   mobile.precisions = {Precision::Fp32};
-  mobile.environments = {"ibl_lut"};
+  mobile.environments = {EnvironmentMode::IblLut};
   ScenePlan low = planScene(mobile, lib);
   const Permutation& plastic = requiredKey(low, "filament_plastic.standard.dir+point.ibl_lut.fp32.low");
   CHECK(plastic.material->bricks.at("sh_irradiance") == "sh_l1_irradiance");

@@ -43,7 +43,8 @@ TEST_CASE("scene JSON: axes, lights and uses are read", "[scene]") {
                                sceneFile(), test::shippedLibrary());
   CHECK(s.name == "t");
   CHECK(s.lightTypes() == std::vector<std::string>{"dir", "point"});
-  CHECK(s.environments == std::vector<std::string>{"sh", "ibl_lut"});  // canonical order
+  CHECK(s.environments ==
+        std::vector<EnvironmentMode>{EnvironmentMode::Sh, EnvironmentMode::IblLut});  // canonical order
   CHECK(s.precisions == std::vector<Precision>{Precision::Fp16});
   CHECK(s.qualities == std::vector<Quality>{Quality::Low, Quality::High});
   CHECK(targetNames(s.targets) == std::vector<std::string>{"spirv", "glsl450"});
@@ -113,7 +114,7 @@ TEST_CASE("glTF scene: referenced lights and the materials meshes use", "[scene]
   for (const auto& m : s.materials) names.push_back(m.material.name);
   // "Unused Gold" is used by no mesh: not part of the scene.
   CHECK(names == std::vector<std::string>{"Lacquered_Oak", "Car_Paint", "Brushed_Steel", "Plaster"});
-  CHECK(s.environments == std::vector<std::string>{"none"});
+  CHECK(s.environments == std::vector<EnvironmentMode>{EnvironmentMode::None});
   CHECK(s.precisions == std::vector<Precision>{Precision::Fp32});
   CHECK(s.qualities == std::vector<Quality>{Quality::High});
   CHECK(targetNames(s.targets) == std::vector<std::string>{"spirv"});
@@ -166,5 +167,5 @@ TEST_CASE("scene JSON pulls a glTF file in and adds its own materials", "[scene]
   SceneDesc s = loadScene((test::sourceDir() / "examples/scenes/gallery.json").string(), test::shippedLibrary());
   CHECK(s.lightTypes() == std::vector<std::string>{"dir", "point"});
   CHECK(s.materials.size() == 5);
-  CHECK(s.environments == std::vector<std::string>{"none", "ibl_lut"});
+  CHECK(s.environments == std::vector<EnvironmentMode>{EnvironmentMode::None, EnvironmentMode::IblLut});
 }

@@ -55,9 +55,9 @@ TEST_CASE("validity rules: one reason per invalid axis value", "[scene]") {
   REQUIRE(r);
   CHECK(r->find("'sphere' lights") != std::string::npos);
   p.lights = {"dir"};
-  p.environment = "ibl_analytic";
+  p.environment = EnvironmentMode::IblAnalytic;
   CHECK(invalidReason(model("cloth"), p));
-  p.environment = "none";
+  p.environment = EnvironmentMode::None;
   p.features = {"clearcoat"};
   CHECK(invalidReason(model("cloth"), p));
   CHECK(!invalidReason(model("standard"), p));
@@ -168,7 +168,7 @@ TEST_CASE("brick rules: an incompatible pair is invalid only where both roles ar
   Permutation p;
   p.material = &m;
   p.lights = {"dir"};
-  p.environment = "ibl_analytic";
+  p.environment = EnvironmentMode::IblAnalytic;
   auto broken = brokenBrickRule(standard, p);
   REQUIRE(broken);
   CHECK(broken->rule == &standard.incompatible[1]);
@@ -176,14 +176,14 @@ TEST_CASE("brick rules: an incompatible pair is invalid only where both roles ar
   CHECK(invalidReason(standard, p) == broken->message);
   CHECK(invalidLocation(standard, p).line == 9);
   // env_brdf is not called with the LUT, nor energy compensation without an IBL mode.
-  for (const char* env : {"ibl_lut", "sh", "none"}) {
+  for (EnvironmentMode env : {EnvironmentMode::IblLut, EnvironmentMode::Sh, EnvironmentMode::None}) {
     p.environment = env;
     CHECK(!invalidReason(standard, p));
   }
   // Low quality binds energy_compensation_none: the pair is gone.
   MaterialDesc low = applyQuality(m, Quality::Low, lib);
   p.material = &low;
-  p.environment = "ibl_analytic";
+  p.environment = EnvironmentMode::IblAnalytic;
   p.quality = Quality::Low;
   CHECK(!brokenBrickRule(standard, p));
   // The UE4-layout LUT with the DESIGN.md-layout compensation, in ibl_lut only.
@@ -191,15 +191,15 @@ TEST_CASE("brick rules: an incompatible pair is invalid only where both roles ar
   ue4Lut.bricks["dfg_lut"] = "dfg_lut_ue4";
   p.material = &ue4Lut;
   p.quality = Quality::High;
-  p.environment = "ibl_lut";
+  p.environment = EnvironmentMode::IblLut;
   CHECK(brokenBrickRule(standard, p));
   // Not chosen in the file: at the model's name.
   CHECK(invalidLocation(standard, p).line == ue4Lut.modelWhere.line);
   CHECK(ue4Lut.modelWhere.line > 0);
-  p.environment = "ibl_analytic";
+  p.environment = EnvironmentMode::IblAnalytic;
   CHECK(!brokenBrickRule(standard, p));
   ue4Lut.bricks["energy_compensation"] = "energy_compensation_none";
-  p.environment = "ibl_lut";
+  p.environment = EnvironmentMode::IblLut;
   CHECK(!brokenBrickRule(standard, p));
 }
 

@@ -34,8 +34,8 @@ TEST_CASE("fp32 permutations cross-compile to every target and pass its check", 
   // Standard model with every feature the examples use, and the cloth model.
   const auto& standard = test::loadedMaterials(lib, {"worn_car_paint", "clearcoat_metal", "brushed_metal"});
   const auto& cloth = test::loadedMaterials(lib, {"velvet_green"});
-  auto perms = test::permutationsOf(standard, {"dir", "point", "spot", "sphere", "tube"}, "ibl_lut");
-  for (const auto& p : test::permutationsOf(cloth, {"dir", "point", "spot"}, "sh")) perms.push_back(p);
+  auto perms = test::permutationsOf(standard, {"dir", "point", "spot", "sphere", "tube"}, EnvironmentMode::IblLut);
+  for (const auto& p : test::permutationsOf(cloth, {"dir", "point", "spot"}, EnvironmentMode::Sh)) perms.push_back(p);
   auto built = buildAllTargets(perms);
   REQUIRE(built.size() == perms.size());
   for (const auto& b : built) {
@@ -60,7 +60,7 @@ TEST_CASE("fp16: GLSL 450, HLSL (min16float) and MSL from the half module, ESSL 
           "[targets][fp16]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   auto perms = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic", "clearcoat_metal"}),
-                                    {"dir", "point"}, "ibl_lut", Precision::Fp16);
+                                    {"dir", "point"}, EnvironmentMode::IblLut, Precision::Fp16);
   BuildOptions o;
   o.targets = allTargets();
   auto built = buildPermutations(lib, perms, o);
@@ -104,7 +104,8 @@ TEST_CASE("fp16: GLSL 450, HLSL (min16float) and MSL from the half module, ESSL 
     return n;
   };
   CHECK(relaxedCount(compileComputeGlsl(mediump.glsl, mediump.fileName).spirv) > 100);
-  auto fp32 = test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir", "point"}, "ibl_lut");
+  auto fp32 =
+      test::permutationsOf(test::loadedMaterials(lib, {"filament_plastic"}), {"dir", "point"}, EnvironmentMode::IblLut);
   CHECK(relaxedCount(
             compileComputeGlsl(emitPermutation(lib, fp32[0], false, EmitMode::Engine, true).glsl, "fp32").spirv) == 0);
 }
@@ -225,7 +226,8 @@ void main() {
   CHECK(!r["push_constants"][0].contains("binding"));
 
   // A permutation's kernel (docs/package.md "Kernel ABI"): records in, results out, a count.
-  auto perms = test::permutationsOf(test::loadedMaterials(test::shippedLibrary(), {"ue4_metal"}), {"dir"}, "none");
+  auto perms = test::permutationsOf(test::loadedMaterials(test::shippedLibrary(), {"ue4_metal"}), {"dir"},
+                                    EnvironmentMode::None);
   auto built = buildPermutations(test::shippedLibrary(), perms, {});
   const auto& pr = built[0].artifacts.reflection;
   INFO(pr.dump(2));

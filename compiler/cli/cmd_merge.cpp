@@ -20,10 +20,10 @@ int runMerge(const MergeArgs& m, GlobalOptions& g) {
   std::vector<std::filesystem::path> dirs(m.shards.begin(), m.shards.end());
   const ShardSet shards = ShardSet::open(dirs);
   CompileArgs a;
-  compileArgsFromJson(shards.command(), (dirs.front() / "shard.json").string(), a, g);
-  a.out = m.out;
-  a.jobs = m.jobs;
-  a.quiet = m.quiet;
+  compileRequestFromJson(shards.command(), (dirs.front() / "shard.json").string(), a.request);
+  a.request.out = m.out;
+  a.request.jobs = m.jobs;
+  a.request.quiet = m.quiet;
   std::vector<ProtectedPath> inputs;
   for (const auto& d : dirs) inputs.push_back({d, "shard directory"});
   return runCompile(a, g, &shards, inputs);

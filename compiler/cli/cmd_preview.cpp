@@ -20,7 +20,8 @@ struct PreviewArgs {
   std::string output;
   std::string referenceImage, diffImage;  // with a .png output: only when named
   std::string environment = "studio";
-  std::string precision = "fp32";  // options.precision, parsed once the command line is read
+  std::string precision = "fp32";           // options.precision, parsed once the command line is read
+  std::string environmentMode = "ibl_lut";  // options.environmentMode, likewise
   preview::PreviewOptions options;
   bool json = false;
 };
@@ -88,7 +89,8 @@ void printResult(const preview::PreviewResult& r, const std::string& gpuPng) {
 }
 
 int runPreview(PreviewArgs& a, const GlobalOptions& g) {
-  a.options.precision = *parsePrecision(a.precision);  // checked by --precision's IsMember
+  a.options.precision = *parsePrecision(a.precision);                    // checked by --precision's IsMember
+  a.options.environmentMode = *parseEnvironmentMode(a.environmentMode);  // checked by --environment-mode's IsMember
   const ShaderLibrary lib = loadLibrary(g);
   const std::vector<MaterialDesc> materials = loadMaterials(a.materials, lib, g);
   std::vector<const MaterialDesc*> pointers;
@@ -196,9 +198,8 @@ Command addPreviewCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--lights", args->options.lights,
                   "Light types, one light each: dir,point,spot,sphere,tube (default: dir)")
       ->delimiter(',');
-  cmd->add_option("--environment-mode", args->options.environmentMode,
-                  "The permutation's environment mode (default: ibl_lut)")
-      ->check(CLI::IsMember(allEnvironmentModes()));
+  cmd->add_option("--environment-mode", args->environmentMode, "The permutation's environment mode (default: ibl_lut)")
+      ->check(CLI::IsMember(allEnvironmentModeNames()));
   cmd->add_option("--precision", args->precision, "The permutation's precision (default: fp32)")
       ->check(CLI::IsMember(allPrecisionNames()));
   cmd->add_option("--sweep", args->options.sweep, "A row of spheres sweeping this parameter over its range");

@@ -42,7 +42,8 @@ std::vector<report::MaterialPermutations> materialPermutations(const std::vector
   std::vector<report::MaterialPermutations> out;
   for (const auto& m : materials) {
     report::MaterialPermutations mp{&m, {}, {}};
-    mp.permutations = permutationsToValidate(m, lib, a.lights, a.environments, Precision::Fp32, mp.notes);
+    mp.permutations =
+        permutationsToValidate(m, lib, a.lights, parseEnvironmentModes(a.environments), Precision::Fp32, mp.notes);
     out.push_back(std::move(mp));
   }
   return out;
@@ -169,7 +170,7 @@ Command addReportCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--environment", a->environments,
                   "Environment modes, one permutation each (default: all the model supports)")
       ->delimiter(',')
-      ->check(CLI::IsMember(allEnvironmentModes()))
+      ->check(CLI::IsMember(allEnvironmentModeNames()))
       ->excludes(scene);
   cmd->add_option("-o,--output-dir", a->out, "Report directory (new, empty or a matbricks output); index.html inside")
       ->required();

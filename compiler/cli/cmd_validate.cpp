@@ -65,7 +65,7 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
   std::vector<Permutation> perms;
   for (const auto& m : materials) {
     std::vector<std::string> notes;
-    for (auto& perm : permutationsToValidate(m, lib, a.lights, a.environments, axis, notes))
+    for (auto& perm : permutationsToValidate(m, lib, a.lights, parseEnvironmentModes(a.environments), axis, notes))
       perms.push_back(std::move(perm));
     if (!a.quiet)
       for (const auto& n : notes) std::fprintf(stderr, "%s: note: %s\n", m.sourceFile.c_str(), n.c_str());
@@ -158,7 +158,7 @@ Command addValidateCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--environment", args->environments,
                   "Environment modes to validate, one permutation each (default: all the model supports)")
       ->delimiter(',')
-      ->check(CLI::IsMember(allEnvironmentModes()));
+      ->check(CLI::IsMember(allEnvironmentModeNames()));
   return {cmd, [args, &g] { return runValidate(*args, g); }};
 }
 

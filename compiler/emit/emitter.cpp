@@ -240,7 +240,7 @@ ProbeScene probeSceneOf(const Permutation& perm, bool illuminanceInput) {
   scene.lights = perm.lights;
   scene.environment = perm.environment;
   scene.illuminanceInput = illuminanceInput;
-  bool slice = perm.lights == std::vector<std::string>{"dir"} && perm.environment == "none";
+  bool slice = perm.lights == std::vector<std::string>{"dir"} && perm.environment == EnvironmentMode::None;
   scene.fullFrame = !slice || !perm.material->features.empty();
   return scene;
 }
@@ -293,8 +293,8 @@ void checkPermutation(const ShadingModel& model, const Permutation& perm) {
 
 void writeDefines(GlslWriter& w, const Permutation& perm) {
   for (const auto& t : perm.lights) w.line("#define MB_LIGHT_" + upper(t) + " 1");
-  w.line("#define MB_ENV_" + upper(perm.environment) + " 1");
-  if (perm.environment == "ibl_lut" || perm.environment == "ibl_analytic") w.line("#define MB_ENV_IBL 1");
+  w.line("#define MB_ENV_" + upper(environmentModeName(perm.environment)) + " 1");
+  if (isIbl(perm.environment)) w.line("#define MB_ENV_IBL 1");
   for (const auto& f : perm.material->features) w.line("#define MB_FEATURE_" + upper(f) + " 1");
 }
 
@@ -356,7 +356,7 @@ void writeApi(GlslWriter& w, const Permutation& perm, ShaderPrecision precision)
     line(std::string("vec3 ") + fn + "(ShadingPixel px, ShadingFrame f, " + name + " light) { return mb_shade_" + type +
          "(px, f, light); }");
   }
-  if (perm.environment != "none")
+  if (perm.environment != EnvironmentMode::None)
     line(
         "vec3 shadeEnvironment(ShadingPixel px, ShadingFrame f, Environment env) { return mb_shade_environment(px, f, env); }");
   if (!perm.hasLight("dir")) return;

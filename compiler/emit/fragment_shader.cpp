@@ -66,7 +66,7 @@ class FragmentWriter {
   }
 
  private:
-  bool ibl() const { return perm_.environment == "ibl_lut" || perm_.environment == "ibl_analytic"; }
+  bool ibl() const { return isIbl(perm_.environment); }
   // Shading-side text: written in fp32 GLSL, rewritten at fp16.
   void shading(const std::string& glsl) { w_.line(p_ == ShaderPrecision::Fp16 ? rewriteToFp16(glsl) : glsl); }
   const FragmentTexture* textureOf(const std::string& param) const {
@@ -99,7 +99,7 @@ class FragmentWriter {
     if (ibl())
       w_.line("layout(set = 0, binding = " + std::to_string(kFragmentPrefilteredBinding) + ") uniform " + hp_ +
               "samplerCube mbPrefilteredEnv;");
-    if (perm_.environment == "ibl_lut")
+    if (usesDfgLut(perm_.environment))
       w_.line("layout(set = 0, binding = " + std::to_string(kFragmentDfgBinding) + ") uniform " + hp_ +
               "sampler2D mbDfgLut;");
     for (const auto& t : textures_)
@@ -112,7 +112,7 @@ class FragmentWriter {
   // backs them (probe_scene.cpp): no prefiltered radiance outside the IBL modes, and the DFG
   // texel (0, 1, 0) outside ibl_lut, which the models do not read there.
   void hooks() {
-    if (perm_.environment == "none") return;
+    if (perm_.environment == EnvironmentMode::None) return;
     const bool half = p_ == ShaderPrecision::Fp16;
     shading("vec3 mb_fetch_prefiltered(vec3 r, float lod) {");
     if (!ibl())
@@ -123,7 +123,7 @@ class FragmentWriter {
       w_.line("    return textureLod(mbPrefilteredEnv, r, lod).rgb;");
     w_.line("}");
     shading("vec3 mb_fetch_dfg(float NoV, float perceptualRoughness) {");
-    if (perm_.environment != "ibl_lut")
+    if (!usesDfgLut(perm_.environment))
       shading("    return vec3(0.0, 1.0, 0.0);");
     else if (half)
       w_.line("    return f16vec3(textureLod(mbDfgLut, vec2(float(NoV), float(perceptualRoughness)), 0.0).rgb);");
@@ -187,7 +187,7 @@ class FragmentWriter {
       shading(std::string("        mbRadiance += ") + k.function + "(px, f, " +
               lightStruct(k.type, std::string("mbFrame.") + k.array + "[i]") + ");");
     }
-    if (perm_.environment != "none") {
+    if (perm_.environment != EnvironmentMode::None) {
       shading("    {");
       shading("        Environment env;");
       shading("        for (int k = 0; k < 9; ++k) env.sh[k] = vec3(mbFrame.sh[k].rgb);");

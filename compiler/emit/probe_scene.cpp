@@ -48,15 +48,14 @@ std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene) {
     out.push_back({"tangentAngle", ValueType::Float, {0.0, std::numbers::pi}});
   }
   for (const auto& type : scene.lights) lightInputs(type, out);
-  if (scene.environment != "none") {
+  if (scene.environment != EnvironmentMode::None) {
     // Radiance SH of a plausible environment: a positive mean and weaker higher bands.
     out.push_back({"sh0", ValueType::Vec3, {0.0, 2.0}});
     for (int i = 1; i < 9; ++i) out.push_back({"sh" + std::to_string(i), ValueType::Vec3, {-0.5, 0.5}});
     out.push_back({"ao", ValueType::Float, {0.0, 1.0}});
   }
-  if (scene.environment == "ibl_lut" || scene.environment == "ibl_analytic")
-    out.push_back({"prefiltered", ValueType::Vec3, kPrefiltered});
-  if (scene.environment == "ibl_lut") {
+  if (isIbl(scene.environment)) out.push_back({"prefiltered", ValueType::Vec3, kPrefiltered});
+  if (usesDfgLut(scene.environment)) {
     // DFG LUT texels: Int Gv Fc <= Int Gv <= 1 in Filament's LUT.
     out.push_back({"dfgX", ValueType::Float, {0.0, 0.45}});
     out.push_back({"dfgY", ValueType::Float, {0.45, 1.0}});
@@ -68,7 +67,7 @@ std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene) {
 double probeSceneRadianceBound(const ProbeScene& scene) {
   double bound = 0;
   for (const auto& type : scene.lights) bound += type == "dir" ? 1.0 : kIntensity.hi / (kDistance.lo * kDistance.lo);
-  if (scene.environment != "none") {
+  if (scene.environment != EnvironmentMode::None) {
     // |E(n)| <= pi (|L00| + 2/3 sum |L1m| + 1/4 sum |L2m|) * sqrt(4 pi)-ish; 4 pi covers it.
     bound += 4.0 * std::numbers::pi * (2.0 + 8 * 0.5);
     // The probe's environment shape is at most (1.5 + 0.875)(1 + kProbeMaxMip / 8).
@@ -96,7 +95,7 @@ std::vector<std::string> probeSceneGlobals(const ProbeScene& scene) {
     g.push_back("        x2 * (2.75573192e-6 + x2 * (-2.50521084e-8 + x2 * 1.60590438e-10))))));  // -sin(x)");
     g.push_back("}");
   }
-  if (scene.environment == "none") return g;
+  if (scene.environment == EnvironmentMode::None) return g;
   g.push_back("// The probe's environment fetches: record values shaped by a smooth known function of");
   g.push_back("// the lookup direction and level (mirrored by ref::probeEnvironmentShape).");
   g.push_back("vec3 mbProbePrefiltered;");
@@ -129,12 +128,12 @@ std::vector<std::string> probeSceneFrame(const ProbeScene& scene) {
     s.push_back("f.ng = f.n;");
     s.push_back("f.t = mbT0;");
   }
-  if (scene.environment != "none") {
+  if (scene.environment != EnvironmentMode::None) {
     // Before preparePixel: an IBL mode fetches the DFG texel while preparing the pixel.
-    bool ibl = scene.environment == "ibl_lut" || scene.environment == "ibl_analytic";
+    bool ibl = isIbl(scene.environment);
     s.push_back(std::string("mbProbePrefiltered = ") + (ibl ? "p_prefiltered" : "vec3(0.0)") + ";");
     s.push_back(std::string("mbProbeDfg = ") +
-                (scene.environment == "ibl_lut" ? "vec3(p_dfgX, p_dfgY, p_dfgZ)" : "vec3(0.0, 1.0, 0.0)") + ";");
+                (usesDfgLut(scene.environment) ? "vec3(p_dfgX, p_dfgY, p_dfgZ)" : "vec3(0.0, 1.0, 0.0)") + ";");
   }
   return s;
 }
@@ -179,7 +178,7 @@ std::vector<std::string> probeSceneShading(const ProbeScene& scene) {
       s.push_back("}");
     }
   }
-  if (scene.environment != "none") {
+  if (scene.environment != EnvironmentMode::None) {
     s.push_back("{");
     s.push_back("    Environment env;");
     for (int i = 0; i < 9; ++i) s.push_back("    env.sh[" + std::to_string(i) + "] = p_sh" + std::to_string(i) + ";");

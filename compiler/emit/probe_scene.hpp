@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/environment_mode.hpp"
 #include "library/shader_library.hpp"
 
 namespace mb {
@@ -18,7 +19,7 @@ struct ProbeSceneInput {
 
 struct ProbeScene {
   std::vector<std::string> lights;  // light types present
-  std::string environment = "none";
+  EnvironmentMode environment = EnvironmentMode::None;
   bool illuminanceInput = false;  // directional light's illuminance from the record
   // Geometric-normal tilt and tangent angle as inputs (else ng = n and t = basis tangent):
   // every permutation except the vertical slice's single directional light without features.

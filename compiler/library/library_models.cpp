@@ -32,7 +32,7 @@ void LibraryLoader::readModel(const std::string& name, const SourceLocation& lis
       if (auto part = readGlsl(f, JsonFields::element("/parts", i), "models")) m.parts.push_back(*part);
   m.requiredUnits = requiredUnits(f, "/requires");
   m.lights = namesFrom(f, "/lights", allLightTypes(), "light type");
-  m.environments = namesFrom(f, "/environments", allEnvironmentModes(), "environment mode");
+  m.environments = parseEnvironmentModes(namesFrom(f, "/environments", allEnvironmentModeNames(), "environment mode"));
   if (f.find("/features")) m.features = readFeatures(f);
   m.roles = readRoles(f, m);
   m.inputs = readModelInputs(f, m);
@@ -198,7 +198,8 @@ std::vector<ModelRole> LibraryLoader::readRoles(JsonFields& f, const ShadingMode
     r.feature = featureRef(f, ptr + "/feature", m);
     if (f.find(ptr + "/lights")) r.lights = namesFrom(f, ptr + "/lights", m.lights, "light type");
     if (f.find(ptr + "/environments"))
-      r.environments = namesFrom(f, ptr + "/environments", m.environments, "environment mode");
+      r.environments = parseEnvironmentModes(
+          namesFrom(f, ptr + "/environments", environmentModeNames(m.environments), "environment mode"));
     if (slot && std::find(known.begin(), known.end(), *slot) == known.end()) {
       f.error("E-UNKNOWN-SLOT", f.valueAt(ptr + "/slot"),
               "unknown slot '" + *slot + "': the manifest's slots are " + quotedList(known), didYouMean(*slot, known));

@@ -96,11 +96,6 @@ const std::vector<std::string>& allLightTypes() {
   return types;
 }
 
-const std::vector<std::string>& allEnvironmentModes() {
-  static const std::vector<std::string> modes{"none", "sh", "ibl_lut", "ibl_analytic"};
-  return modes;
-}
-
 const Unit* ShaderLibrary::findUnit(const std::string& id) const { return findBy(units_, id, &Unit::id); }
 
 std::vector<std::string> ShaderLibrary::brickIds() const {

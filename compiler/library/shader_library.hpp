@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/diagnostics.hpp"
+#include "core/environment_mode.hpp"
 #include "library/value_type.hpp"
 
 namespace mb {
@@ -138,10 +139,10 @@ struct ModelInput {
 struct ModelRole {
   std::string role;
   std::string slot;
-  std::string defaultBrick;               // empty: every material must choose
-  std::string feature;                    // non-empty: only with this feature enabled
-  std::vector<std::string> lights;        // non-empty: only with one of these light types
-  std::vector<std::string> environments;  // non-empty: only in one of these modes
+  std::string defaultBrick;                   // empty: every material must choose
+  std::string feature;                        // non-empty: only with this feature enabled
+  std::vector<std::string> lights;            // non-empty: only with one of these light types
+  std::vector<EnvironmentMode> environments;  // non-empty: only in one of these modes
   std::string description;
 };
 
@@ -164,11 +165,11 @@ struct BrickRule {
 struct ShadingModel {
   std::string name;
   std::string description;
-  std::string skeleton;                    // GLSL file relative to the shaderlib root
-  std::vector<std::string> parts;          // more skeleton files, included after it, in order
-  std::vector<std::string> requiredUnits;  // units (manifest key "requires")
-  std::vector<std::string> lights;         // light types the skeleton shades
-  std::vector<std::string> environments;   // environment modes it supports
+  std::string skeleton;                       // GLSL file relative to the shaderlib root
+  std::vector<std::string> parts;             // more skeleton files, included after it, in order
+  std::vector<std::string> requiredUnits;     // units (manifest key "requires")
+  std::vector<std::string> lights;            // light types the skeleton shades
+  std::vector<EnvironmentMode> environments;  // environment modes it supports, in manifest order
   std::vector<ModelFeature> features;
   std::vector<ModelRole> roles;
   std::vector<ModelInput> inputs;  // core inputs, then feature inputs, as listed
@@ -199,9 +200,9 @@ struct GltfDefaults {
   std::map<std::string, std::vector<GltfBinding>> features;
 };
 
-// Light types and environment modes every model draws from (docs/models.md).
-const std::vector<std::string>& allLightTypes();        // dir, point, spot, sphere, tube
-const std::vector<std::string>& allEnvironmentModes();  // none, sh, ibl_lut, ibl_analytic
+// Light types every model draws from (docs/models.md); environment modes are
+// core/environment_mode.hpp's.
+const std::vector<std::string>& allLightTypes();  // dir, point, spot, sphere, tube
 
 class ShaderLibrary {
  public:

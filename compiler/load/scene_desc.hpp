@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/diagnostics.hpp"
+#include "core/environment_mode.hpp"
 #include "core/optimization_level.hpp"
 #include "core/precision.hpp"
 #include "core/quality.hpp"
@@ -41,7 +42,7 @@ struct SceneDesc {
   std::string name;
   std::string file;
   std::vector<SceneLight> lights;
-  std::vector<std::string> environments{"none"};  // one permutation set per mode
+  std::vector<EnvironmentMode> environments{EnvironmentMode::None};  // one permutation set per mode
   std::vector<Precision> precisions{Precision::Fp32};
   std::vector<Quality> qualities{Quality::High};
   std::vector<Target> targets{Target::Spirv};  // see compile/targets.hpp

@@ -70,7 +70,9 @@ class SceneJsonReader {
     if (auto n = f_.string("/name")) scene_.name = *n;
     f_.string("/description");
     readLights();
-    readAxis("/environment", allEnvironmentModes(), "environment mode", scene_.environments, scene_.environmentWhere);
+    std::vector<std::string> environments{environmentModeName(EnvironmentMode::None)};
+    readAxis("/environment", allEnvironmentModeNames(), "environment mode", environments, scene_.environmentWhere);
+    scene_.environments = parseEnvironmentModes(environments);  // each checked against allEnvironmentModeNames() above
     std::vector<std::string> precisions{precisionName(Precision::Fp32)};
     readAxis("/precision", allPrecisionNames(), "precision", precisions, scene_.precisionWhere);
     scene_.precisions = parsePrecisions(precisions);  // each checked against allPrecisionNames() above
@@ -167,7 +169,7 @@ class SceneJsonReader {
       scene_.warnings.insert(scene_.warnings.end(), g.warnings.begin(), g.warnings.end());
       for (auto& m : g.materials) addMaterial(std::move(m));
       if (!f_.find("/environment") && (g.imageBased || scene_.lights.empty())) {
-        scene_.environments = {"ibl_lut"};
+        scene_.environments = {EnvironmentMode::IblLut};
         if (!g.imageBased) scene_.warnings.push_back(noLightsWarning(at));
       }
     } catch (const DiagnosticError& e) {
@@ -248,7 +250,7 @@ SceneDesc loadGltfSceneFile(const std::string& path, const ShaderLibrary& lib) {
   scene.warnings = std::move(g.warnings);
   // A glTF file says nothing about precision, quality or targets: fp32, high, spirv; image
   // based light only when the file uses EXT_lights_image_based (docs/scenes.md).
-  scene.environments = {g.imageBased || scene.lights.empty() ? "ibl_lut" : "none"};
+  scene.environments = {g.imageBased || scene.lights.empty() ? EnvironmentMode::IblLut : EnvironmentMode::None};
   if (!g.imageBased && scene.lights.empty()) scene.warnings.push_back(noLightsWarning({path, 1, 1}));
   scene.lightsWhere = scene.environmentWhere = scene.precisionWhere = scene.qualityWhere = scene.targetsWhere =
       SourceLocation(path, 1, 1);

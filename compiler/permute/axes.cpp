@@ -11,7 +11,8 @@ namespace mb {
 
 namespace {
 
-bool contains(const std::vector<std::string>& v, const std::string& x) {
+template <class T>
+bool contains(const std::vector<T>& v, const T& x) {
   return std::find(v.begin(), v.end(), x) != v.end();
 }
 
@@ -37,7 +38,8 @@ std::optional<std::string> invalidReason(const ShadingModel& model, const AxisPo
     if (!contains(model.lights, t))
       return m + " does not shade '" + t + "' lights (it shades " + quotedList(model.lights) + ")";
   if (!contains(model.environments, point.environment))
-    return m + " has no environment mode '" + point.environment + "' (it has " + quotedList(model.environments) + ")";
+    return m + " has no environment mode '" + environmentModeName(point.environment) + "' (it has " +
+           quotedList(environmentModeNames(model.environments)) + ")";
   if (!definesQuality(model, point.quality))
     return m + " defines no quality level '" + qualityName(point.quality) +
            "' (its manifest's \"quality\" table has no such level)";
@@ -80,8 +82,8 @@ std::optional<BrokenBrickRule> brokenBrickRule(const ShadingModel& model, const 
     }
     if (broken)
       return BrokenBrickRule{&rule, "model '" + model.name + "' does not combine " + pairs + " (environment '" +
-                                        perm.environment + "', quality '" + qualityName(perm.quality) +
-                                        "'): " + rule.reason};
+                                        environmentModeName(perm.environment) + "', quality '" +
+                                        qualityName(perm.quality) + "'): " + rule.reason};
   }
   return std::nullopt;
 }
@@ -113,7 +115,7 @@ std::vector<AxisSize> axisSizes(const ShadingModel& model) {
 size_t validCombinationCount(const ShadingModel& model) {
   AxisPoint base;
   base.lights = {};
-  base.environment = model.environments.empty() ? "none" : model.environments.front();
+  base.environment = model.environments.empty() ? EnvironmentMode::None : model.environments.front();
   auto validWith = [&](auto&& set) {
     AxisPoint p = base;
     set(p);
@@ -124,7 +126,7 @@ size_t validCombinationCount(const ShadingModel& model) {
   size_t lights = 0;
   for (const auto& t : allLightTypes()) lights += validWith([&](AxisPoint& p) { p.lights = {t}; });
   size_t envs = 0;
-  for (const auto& e : allEnvironmentModes()) envs += validWith([&](AxisPoint& p) { p.environment = e; });
+  for (EnvironmentMode e : allEnvironmentModes()) envs += validWith([&](AxisPoint& p) { p.environment = e; });
   size_t precisions = 0;
   for (Precision x : allPrecisions()) precisions += validWith([&](AxisPoint& p) { p.precision = x; });
   size_t qualities = 0;

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/vocabulary.hpp"  // the axes' values: Precision, Quality
+#include "core/vocabulary.hpp"  // the axes' values: EnvironmentMode, Precision, Quality
 #include "library/shader_library.hpp"
 #include "permute/permutation.hpp"
 
@@ -17,7 +17,7 @@ namespace mb {
 struct AxisPoint {
   std::vector<std::string> features;  // enabled, model order
   std::vector<std::string> lights;    // canonicalLights() order; may be empty
-  std::string environment = "none";
+  EnvironmentMode environment = EnvironmentMode::None;
   Precision precision = Precision::Fp32;
   Quality quality = Quality::High;
 };

@@ -15,8 +15,8 @@ bool Permutation::hasLight(const std::string& type) const {
 }
 
 std::string Permutation::key() const {
-  std::string k =
-      material->name + "." + material->model + "." + lightsKey() + "." + environment + "." + precisionName(precision);
+  std::string k = material->name + "." + material->model + "." + lightsKey() + "." + environmentModeName(environment) +
+                  "." + precisionName(precision);
   if (quality != Quality::High) k += "." + qualityName(quality);
   for (const auto& f : folded) k += ".without-" + f;
   return k;
@@ -37,7 +37,7 @@ std::vector<Permutation> validationPermutationsFor(const MaterialDesc& material,
   std::vector<Permutation> out;
   const ShadingModel* model = lib.findModel(material.model);
   if (!model) return out;
-  for (const auto& env : model->environments) {
+  for (EnvironmentMode env : model->environments) {
     Permutation p;
     p.material = &material;
     p.lights = canonicalLights(model->lights);

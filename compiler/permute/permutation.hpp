@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/environment_mode.hpp"
 #include "core/precision.hpp"
 #include "core/quality.hpp"
 #include "library/light_order.hpp"  // canonicalLights(): the order of `lights`
@@ -17,7 +18,7 @@ struct Permutation {
   // (permute/specialize.hpp), `material` is the specialized copy, not the loaded one.
   const MaterialDesc* material = nullptr;
   std::vector<std::string> lights{"dir"};  // light types, in allLightTypes() order
-  std::string environment = "none";        // one of allEnvironmentModes()
+  EnvironmentMode environment = EnvironmentMode::None;
   Precision precision = Precision::Fp32;
   Quality quality = Quality::High;
   // Features of the loaded material that the scene proved constant at their neutral value

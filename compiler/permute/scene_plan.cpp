@@ -39,7 +39,7 @@ void reportInvalid(const SceneDesc& scene, const SceneMaterial& sm, const Shadin
   };
   AxisPoint base = point;
   base.lights.clear();
-  base.environment = "none";
+  base.environment = EnvironmentMode::None;
   base.precision = Precision::Fp32;
   base.quality = Quality::High;
   bool named = report(base, "its features", sm.where);
@@ -50,7 +50,7 @@ void reportInvalid(const SceneDesc& scene, const SceneMaterial& sm, const Shadin
   }
   AxisPoint p = base;
   p.environment = point.environment;
-  named |= report(p, "environment '" + point.environment + "'", scene.environmentWhere);
+  named |= report(p, "environment '" + environmentModeName(point.environment) + "'", scene.environmentWhere);
   p = base;
   p.precision = point.precision;
   named |= report(p, "precision '" + precisionName(point.precision) + "'", scene.precisionWhere);
@@ -111,7 +111,7 @@ ScenePlan planScene(const SceneDesc& scene, const ShaderLibrary& lib) {
     addPossible(plan, model, largest);
     std::set<std::string> said;
     bool valid = true;
-    for (const auto& env : scene.environments)
+    for (EnvironmentMode env : scene.environments)
       for (Precision precision : scene.precisions)
         for (Quality quality : scene.qualities) {
           AxisPoint point{sm.material.features, lights, env, precision, quality};
@@ -137,7 +137,7 @@ ScenePlan planScene(const SceneDesc& scene, const ShaderLibrary& lib) {
       plan.specialized.push_back(applyQuality(base, quality, lib));
       const MaterialDesc& spec = plan.specialized.back();
       noteQuality(note, base, spec, quality);
-      for (const auto& env : scene.environments)
+      for (EnvironmentMode env : scene.environments)
         for (Precision precision : scene.precisions) {
           Permutation p;
           p.material = &spec;

@@ -125,7 +125,7 @@ std::vector<std::map<std::string, std::vector<double>>> sphereModelInputs(harnes
 
 harness::GraphicsJob sphereJob(const PreviewOptions& o, const MaterialDesc& m, const std::vector<SphereParams>& spheres,
                                const std::vector<PreviewLight>& lights, const PreviewEnvironment& env,
-                               const std::string& environmentMode) {
+                               EnvironmentMode environmentMode) {
   harness::GraphicsJob job;
   job.width = o.size * static_cast<uint32_t>(spheres.size());
   job.height = o.size;
@@ -138,15 +138,16 @@ harness::GraphicsJob sphereJob(const PreviewOptions& o, const MaterialDesc& m, c
   const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   std::memcpy(push.data(), identity, 64);
   std::memcpy(push.data() + 64, vp.data(), 64);
-  const bool ibl = environmentMode == "ibl_lut" || environmentMode == "ibl_analytic";
-  const std::vector<uint8_t> frame = frameBlockBytes(lights, environmentMode == "none" ? nullptr : &env.maps);
+  const bool ibl = isIbl(environmentMode);
+  const std::vector<uint8_t> frame =
+      frameBlockBytes(lights, environmentMode == EnvironmentMode::None ? nullptr : &env.maps);
   for (size_t s = 0; s < spheres.size(); ++s) {
     harness::DrawResources d;
     const std::vector<uint8_t> params = paramsBlock(m, spheres[s]);
     if (!params.empty()) d.uniforms.push_back({kFragmentParamsBinding, params});
     d.uniforms.push_back({kFragmentFrameBinding, frame});
     if (ibl) d.textures.push_back({kFragmentPrefilteredBinding, {env.cube->view(), env.cube->sampler()}});
-    if (environmentMode == "ibl_lut")
+    if (usesDfgLut(environmentMode))
       d.textures.push_back({kFragmentDfgBinding, {env.dfgTexture->view(), env.dfgTexture->sampler()}});
     d.pushConstants = push;
     d.viewport = {o.size * static_cast<uint32_t>(s), 0, o.size, o.size};
@@ -402,7 +403,7 @@ PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& li
   }
   r.referenceMs = msSince(t0);
 
-  r.radianceBound = sceneRadianceBound(lights, perm.environment == "none" ? nullptr : &env.maps);
+  r.radianceBound = sceneRadianceBound(lights, perm.environment == EnvironmentMode::None ? nullptr : &env.maps);
   r.tolerance = compositionTolerance(lib, fragment.bricks, r.radianceBound);
   t0 = Clock::now();
   compare(scene, a, r);

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/environment_mode.hpp"
 #include "core/precision.hpp"
 #include "harness/vulkan_harness.hpp"
 #include "library/shader_library.hpp"
@@ -35,7 +36,7 @@ inline constexpr uint32_t kDefaultSweepCount = 5;
 struct PreviewOptions {
   uint32_t size = 512;                     // pixels per sphere tile edge, 1..kMaxPreviewSize
   std::vector<std::string> lights{"dir"};  // light types, one light each (preview_scene.hpp)
-  std::string environmentMode = "ibl_lut";
+  EnvironmentMode environmentMode = EnvironmentMode::IblLut;
   Precision precision = Precision::Fp32;
   std::string sweep;  // a non-constant parameter of every material; empty: one sphere
   uint32_t sweepCount = kDefaultSweepCount;

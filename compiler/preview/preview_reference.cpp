@@ -60,9 +60,9 @@ ref::ModelEvalInput referenceWorkspace(const ReferenceScene& scene, size_t spher
   e.bricks = scene.bricks;
   e.features.insert(scene.features.begin(), scene.features.end());
   e.inputs = scene.sphereInputs.at(sphere);
-  if (scene.environmentMode == "none") return e;
+  if (scene.environmentMode == EnvironmentMode::None) return e;
   ref::Environment env;
-  env.mode = scene.environmentMode;
+  env.mode = environmentModeName(scene.environmentMode);  // the reference's own vocabulary
   const auto sh = frameSh(*scene.environment);
   std::copy(sh.begin(), sh.end(), env.sh);
   env.ao = 1.0;
@@ -74,7 +74,7 @@ ref::ModelEvalInput referenceWorkspace(const ReferenceScene& scene, size_t spher
       return fetched(log, true, [&] { return maps->sampleFiltered({r.x, r.y, r.z}, lod, filter); });
     };
   }
-  if (env.mode == "ibl_lut") {
+  if (usesDfgLut(scene.environmentMode)) {
     const lut::LutTable* table = scene.dfg;
     env.fetchDfg = [table, filter, log](double NoV, double perceptualRoughness) {
       return fetched(log, false, [&] { return sampleDfgLut(*table, NoV, perceptualRoughness, filter); });

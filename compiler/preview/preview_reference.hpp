@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/model_reference.hpp"
+#include "core/environment_mode.hpp"
 #include "lut/dfg_lut.hpp"
 #include "preview/environment.hpp"
 #include "preview/preview_scene.hpp"
@@ -31,7 +32,7 @@ struct ReferenceScene {
   std::map<std::string, std::string> bricks;  // role -> brick id
   std::vector<std::string> features;
   std::vector<std::string> lightTypes;  // the permutation's
-  std::string environmentMode = "none";
+  EnvironmentMode environmentMode = EnvironmentMode::None;
   std::vector<PreviewLight> lights;
   const EnvironmentMaps* environment = nullptr;  // IBL and SH modes
   const lut::LutTable* dfg = nullptr;            // ibl_lut

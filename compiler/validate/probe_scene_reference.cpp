@@ -62,11 +62,11 @@ SceneColumns sceneColumns(const ProbeScene& scene, const ProbeLayout& layout) {
       c.tubeFalloffRadius = at("tubeFalloffRadius");
     }
   }
-  if (scene.environment == "none") return c;
+  if (scene.environment == EnvironmentMode::None) return c;
   for (int i = 0; i < 9; ++i) c.sh[i] = at("sh" + std::to_string(i));
   c.ao = at("ao");
-  if (scene.environment == "ibl_lut" || scene.environment == "ibl_analytic") c.prefiltered = at("prefiltered");
-  if (scene.environment == "ibl_lut") {
+  if (isIbl(scene.environment)) c.prefiltered = at("prefiltered");
+  if (usesDfgLut(scene.environment)) {
     c.dfgX = at("dfgX");
     c.dfgY = at("dfgY");
     c.dfgZ = at("dfgZ");
@@ -121,16 +121,16 @@ void sceneFromRecord(const ProbeScene& scene, const SceneColumns& c, const doubl
                                vec3(c.tubeIntensity), scalar(c.tubeFalloffRadius)};
     }
   }
-  if (scene.environment == "none") return;
+  if (scene.environment == EnvironmentMode::None) return;
   // Filled in place: assigning a fresh Environment would copy its mode string and hooks per
   // record. The hooks stay unset (validation's probe has no textures).
   ref::Environment& env = in.env ? *in.env : in.env.emplace();
-  if (env.mode != scene.environment) env.mode = scene.environment;
+  if (env.mode != environmentModeName(scene.environment)) env.mode = environmentModeName(scene.environment);
   for (int i = 0; i < 9; ++i) env.sh[i] = vec3(c.sh[i]);
   env.ao = scalar(c.ao);
   env.maxMip = kProbeMaxMip;
   env.prefiltered = env.ibl() ? vec3(c.prefiltered) : Vec3{};
-  env.dfg = scene.environment == "ibl_lut" ? Vec3{scalar(c.dfgX), scalar(c.dfgY), scalar(c.dfgZ)} : Vec3{0, 1, 0};
+  env.dfg = usesDfgLut(scene.environment) ? Vec3{scalar(c.dfgX), scalar(c.dfgY), scalar(c.dfgZ)} : Vec3{0, 1, 0};
 }
 
 }  // namespace mb

@@ -36,7 +36,7 @@ nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutatio
                        {"features", m.features},
                        {"folded_features", perm.folded},
                        {"lights", perm.lights},
-                       {"environment", perm.environment},
+                       {"environment", environmentModeName(perm.environment)},
                        {"precision", precisionName(perm.precision)},
                        {"quality", qualityName(perm.quality)},
                        {"bricks", nlohmann::json::object()},

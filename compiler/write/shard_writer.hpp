@@ -14,7 +14,7 @@ namespace mb {
 // Writes a shard directory as a streaming build hands its permutations over: each unit's
 // entry when its first permutation arrives, shard.json at the end. `writer` was constructed
 // with kind "shard"; `command` is what `merge` needs to rebuild the plan (the compile
-// command's inputs, cli/compile_run.hpp).
+// command's inputs, driver/compile_request.hpp).
 class ShardWriter {
  public:
   ShardWriter(PackageWriter& writer, const ShardSpec& spec, nlohmann::json command);

@@ -28,7 +28,7 @@ inline const std::vector<MaterialDesc>& loadedMaterials(const ShaderLibrary& lib
 
 // One permutation per material, on the given axes.
 inline std::vector<Permutation> permutationsOf(const std::vector<MaterialDesc>& materials,
-                                               const std::vector<std::string>& lights, const std::string& environment,
+                                               const std::vector<std::string>& lights, EnvironmentMode environment,
                                                Precision precision = Precision::Fp32) {
   std::vector<Permutation> out;
   for (const auto& m : materials) {

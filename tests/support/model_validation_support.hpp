@@ -14,7 +14,7 @@ namespace mb::test {
 
 // 4096 samples: a few seconds per permutation on lavapipe.
 inline void requireModelPermutationValidates(harness::VulkanHarness& gpu, const MaterialDesc& material,
-                                             const std::vector<std::string>& lights, const std::string& environment,
+                                             const std::vector<std::string>& lights, EnvironmentMode environment,
                                              uint64_t seed = 5) {
   Permutation perm;
   perm.material = &material;
