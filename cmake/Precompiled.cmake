@@ -1,0 +1,74 @@
+# Precompiled headers (bench/README.md "Build time"). A clean build spends much of its time
+# parsing the same third-party headers again in every object: nlohmann/json.hpp is in most of
+# compiler/ and the tests, catch2/catch.hpp in every test file, CLI11 in every CLI command, and
+# <filesystem>, <regex> and friends nearly everywhere. Only third-party and standard headers
+# are precompiled, never one of ours: a header of compiler/ in a PCH would reach every object
+# without an #include, which the layer check (cmake/CheckLayers.cmake, reading the #include
+# lines) could not see. Every source still includes what it uses, so the tree builds the same
+# with -DCMAKE_DISABLE_PRECOMPILE_HEADERS=ON.
+#
+#   mb_compiler_pch(<target>)   the PCH of compiler/: built once, with the first layer (mb_core),
+#                               and reused by every target compiled with the same flags (every
+#                               layer, the benchmark programs, the fuzz targets)
+#   mb_own_pch(<target> <header>...)   a PCH of its own: the compiler PCH's headers and <header>...
+#
+# A compiler cache needs to be told about PCHs: see MB_CCACHE_SLOPPINESS below.
+
+# Standard headers that more than a handful of compiler/ sources include, and nlohmann/json.
+set(MB_PCH_HEADERS
+    <algorithm> <array> <atomic> <chrono> <cmath> <cstdint> <cstdio> <cstring> <filesystem>
+    <fstream> <functional> <map> <memory> <mutex> <optional> <set> <sstream> <stdexcept> <string>
+    <string_view> <thread> <tuple> <unordered_map> <utility> <vector> <nlohmann/json.hpp>)
+
+function(mb_compiler_pch target)
+  get_property(owner GLOBAL PROPERTY MB_COMPILER_PCH_TARGET)
+  if(owner)
+    target_precompile_headers(${target} REUSE_FROM ${owner})
+  else()
+    target_precompile_headers(${target} PRIVATE ${MB_PCH_HEADERS})
+    set_property(GLOBAL PROPERTY MB_COMPILER_PCH_TARGET ${target})
+  endif()
+endfunction()
+
+function(mb_own_pch target)
+  target_precompile_headers(${target} PRIVATE ${MB_PCH_HEADERS} ${ARGN})
+endfunction()
+
+# ccache and PCHs (ccache(1) "PRECOMPILED HEADERS"): it caches an object compiled against a PCH
+# only with sloppiness pch_defines and time_macros (it cannot see the macros a PCH defines), and
+# include_file_mtime/ctime keep a just-written PCH from disabling the direct mode. GCC's .gch is
+# not the same bytes from one compile to the next, so objects hit the cache only when the PCH
+# itself came from the cache; ccache caches the PCH's compile like any other. These settings are
+# passed to each compile through the environment, added to whatever sloppiness the user's
+# ccache.conf already has, so nothing needs configuring by hand.
+set(MB_CCACHE_SLOPPINESS pch_defines time_macros include_file_mtime include_file_ctime)
+function(mb_ccache_for_pch)
+  if(CMAKE_DISABLE_PRECOMPILE_HEADERS OR NOT CMAKE_CXX_COMPILER_LAUNCHER)
+    return()
+  endif()
+  list(GET CMAKE_CXX_COMPILER_LAUNCHER 0 launcher)
+  get_filename_component(launcher_name ${launcher} NAME)
+  if(NOT launcher_name STREQUAL "ccache")
+    return()
+  endif()
+  execute_process(COMMAND ${launcher} --get-config sloppiness OUTPUT_VARIABLE configured
+                  OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
+  string(REPLACE "," ";" configured "${configured}")
+  string(REPLACE " " "" configured "${configured}")
+  set(sloppiness ${configured} ${MB_CCACHE_SLOPPINESS})
+  list(REMOVE_ITEM sloppiness "")
+  list(REMOVE_DUPLICATES sloppiness)
+  list(JOIN sloppiness "," sloppiness)
+  # A normal variable over the cache entry: the targets created after this take it, and the
+  # cache keeps what the user gave.
+  set(CMAKE_CXX_COMPILER_LAUNCHER ${CMAKE_COMMAND} -E env CCACHE_SLOPPINESS=${sloppiness}
+      ${CMAKE_CXX_COMPILER_LAUNCHER} PARENT_SCOPE)
+endfunction()
+mb_ccache_for_pch()
+
+# Clang stamps the headers' modification times into a .pch unless told not to, and ccache
+# refuses to cache against such a PCH. Given with or without a cache, so that the compile
+# commands do not depend on the launcher.
+if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang" AND NOT CMAKE_DISABLE_PRECOMPILE_HEADERS)
+  add_compile_options(-Xclang -fno-pch-timestamp)
+endif()
