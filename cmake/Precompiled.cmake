@@ -5,14 +5,32 @@
 # are precompiled, never one of ours: a header of compiler/ in a PCH would reach every object
 # without an #include, which the layer check (cmake/CheckLayers.cmake, reading the #include
 # lines) could not see. Every source still includes what it uses, so the tree builds the same
-# with -DCMAKE_DISABLE_PRECOMPILE_HEADERS=ON.
+# with -DMB_PCH=OFF (or CMake's -DCMAKE_DISABLE_PRECOMPILE_HEADERS=ON).
 #
 #   mb_compiler_pch(<target>)   the PCH of compiler/: built once, with the first layer (mb_core),
 #                               and reused by every target compiled with the same flags (every
 #                               layer, the benchmark programs, the fuzz targets)
 #   mb_own_pch(<target> <header>...)   a PCH of its own: the compiler PCH's headers and <header>...
+#   mb_pch(<target> <header>...)       a PCH of its own of just <header>...
 #
 # A compiler cache needs to be told about PCHs: see MB_CCACHE_SLOPPINESS below.
+#
+# MB_PCH (default: on with Clang, off with GCC) turns them on. With GCC 12 a PCH gains little
+# and costs warnings: its middle-end warnings about libstdc++'s own code (-Wstringop-overflow,
+# -Wstringop-overread, -Warray-bounds on `"literal" + std::string` inlined at -O3), silent
+# without a PCH because they point into a system header, are all reported when <string> comes
+# from a PCH, and at -O3 parsing is a small part of an object's compile (bench/README.md
+# "Build time": 10 % of the CPU time of the measured subset). With Clang (the asan preset) they
+# stay silent and parsing is a large part of an -O1 compile.
+if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+  set(mb_pch_default ON)
+else()
+  set(mb_pch_default OFF)
+endif()
+option(MB_PCH "Precompile the third-party and standard headers (cmake/Precompiled.cmake)" ${mb_pch_default})
+if(CMAKE_DISABLE_PRECOMPILE_HEADERS)
+  set(MB_PCH OFF)
+endif()
 
 # Standard headers that more than a handful of compiler/ sources include, and nlohmann/json.
 set(MB_PCH_HEADERS
@@ -21,6 +39,9 @@ set(MB_PCH_HEADERS
     <string_view> <thread> <tuple> <unordered_map> <utility> <vector> <nlohmann/json.hpp>)
 
 function(mb_compiler_pch target)
+  if(NOT MB_PCH)
+    return()
+  endif()
   get_property(owner GLOBAL PROPERTY MB_COMPILER_PCH_TARGET)
   if(owner)
     target_precompile_headers(${target} REUSE_FROM ${owner})
@@ -31,19 +52,25 @@ function(mb_compiler_pch target)
 endfunction()
 
 function(mb_own_pch target)
-  target_precompile_headers(${target} PRIVATE ${MB_PCH_HEADERS} ${ARGN})
+  mb_pch(${target} ${MB_PCH_HEADERS} ${ARGN})
+endfunction()
+
+function(mb_pch target)
+  if(MB_PCH)
+    target_precompile_headers(${target} PRIVATE ${ARGN})
+  endif()
 endfunction()
 
 # ccache and PCHs (ccache(1) "PRECOMPILED HEADERS"): it caches an object compiled against a PCH
 # only with sloppiness pch_defines and time_macros (it cannot see the macros a PCH defines), and
-# include_file_mtime/ctime keep a just-written PCH from disabling the direct mode. GCC's .gch is
-# not the same bytes from one compile to the next, so objects hit the cache only when the PCH
-# itself came from the cache; ccache caches the PCH's compile like any other. These settings are
+# include_file_mtime/ctime keep a just-written PCH from disabling the direct mode. A PCH need not
+# be the same bytes from one compile to the next (GCC's .gch is not), so objects hit the cache
+# when the PCH itself came from it; ccache caches the PCH's compile like any other. These settings are
 # passed to each compile through the environment, added to whatever sloppiness the user's
 # ccache.conf already has, so nothing needs configuring by hand.
 set(MB_CCACHE_SLOPPINESS pch_defines time_macros include_file_mtime include_file_ctime)
 function(mb_ccache_for_pch)
-  if(CMAKE_DISABLE_PRECOMPILE_HEADERS OR NOT CMAKE_CXX_COMPILER_LAUNCHER)
+  if(NOT MB_PCH OR NOT CMAKE_CXX_COMPILER_LAUNCHER)
     return()
   endif()
   list(GET CMAKE_CXX_COMPILER_LAUNCHER 0 launcher)
@@ -69,6 +96,6 @@ mb_ccache_for_pch()
 # Clang stamps the headers' modification times into a .pch unless told not to, and ccache
 # refuses to cache against such a PCH. Given with or without a cache, so that the compile
 # commands do not depend on the launcher.
-if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang" AND NOT CMAKE_DISABLE_PRECOMPILE_HEADERS)
+if(MB_PCH AND CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
   add_compile_options(-Xclang -fno-pch-timestamp)
 endif()
