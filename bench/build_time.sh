@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The compile time of a fixed subset of the tree's objects, from scratch, two at a time and
 # without a compiler cache (bench/README.md "Build time"). A whole clean build takes most of an
-# hour on the shared 2-core VM, too long to run before and after a change; this subset is ~1/8 of
-# its objects: all of compiler/core/, seven test files, three CLI commands and ten references,
+# hour on the shared 2-core VM, too long to run before and after a change; this subset is 35 of
+# its ~370 objects: all of compiler/core/, seven test files, three CLI commands and ten references,
 # and the precompiled headers they use (built first, and counted).
 #
 #   bench/build_time.sh BUILD_DIR     BUILD_DIR configured (Release, or the asan preset), any state
