@@ -14,7 +14,6 @@ namespace mb::harness {
 namespace {
 
 constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-constexpr uint32_t kTexelBytes = 16;
 
 void checkLevels(bool cube, const std::vector<TextureLevel>& levels) {
   if (levels.empty()) throw HarnessError("uploadTexture: no mip levels");
