@@ -34,6 +34,7 @@ step 06-stress-materials-fp16-driver 120 "$MB" --device "$DEVICE" stress "$M"/*.
 step 07-preview-studio 90 "$MB" --device "$DEVICE" preview "$M"/*.json -o "$O/preview-studio"
 step 08-preview-sky 60 "$MB" --device "$DEVICE" preview "$M"/*.json --environment sky -o "$O/preview-sky"
 step 09-lut 30 "$MB" --device "$DEVICE" lut
+step 11-beckmann-fp16-driver 40 "$MB" --device "$DEVICE" eval --brick d_beckmann --precision fp16 --fp16 driver --input bench/gpu/beckmann_grazing.csv
 step 10-bench-area-lights 60 "$MB" --device "$DEVICE" bench --slot sphere_light_ltc --slot tube_light_ltc \
   --slot tube_light_ltc_cv --slot sphere_light_ltc_cv --slot sphere_light_d --slot tube_light_point --repeats 9
 tar czf "$O.tgz" -C "$O" . && mv "$O.tgz" "$O/all.tgz"
