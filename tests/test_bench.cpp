@@ -6,7 +6,6 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 #include "bench_engine/cost_format.hpp"
 #include "bench_engine/cost_interval.hpp"
@@ -19,6 +18,7 @@
 #include "library/value_type.hpp"
 #include "lut/dfg_lut.hpp"
 #include "permute/permutation.hpp"
+#include "support/cli_support.hpp"
 #include "support/harness_support.hpp"
 #include "support/pipeline_support.hpp"
 #include "validate/validation.hpp"
@@ -63,13 +63,6 @@ void requireNoLayerMessages(const harness::VulkanHarness& gpu) {
   auto msgs = gpu.validationMessages();
   for (const auto& m : msgs) UNSCOPED_INFO("validation layer: " << m);
   REQUIRE(msgs.empty());
-}
-
-std::filesystem::path tempDir(const std::string& name) {
-  auto d = std::filesystem::temp_directory_path() / ("mb_test_bench_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(d);
-  std::filesystem::create_directories(d);
-  return d;
 }
 
 }  // namespace
@@ -422,7 +415,7 @@ TEST_CASE("a tiny bench run: finite numbers, the validator's instruction count, 
 }
 
 TEST_CASE("matbricks bench writes its outputs and rejects unknown names", "[bench][cli][vulkan]") {
-  auto dir = tempDir("cli");
+  auto dir = test::freshTempDir("test_bench", "cli");
   auto r = test::runCli("bench --brick f_schlick --samples 64 --repeats 1 --records 256 --iterations 2 -o " +
                         (dir / "out").string() + " --csv " + (dir / "b.csv").string());
   INFO(r.output);

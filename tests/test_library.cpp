@@ -8,12 +8,14 @@
 #include "support/build_paths.hpp"
 #include "common/reference.hpp"
 #include "fake_library.hpp"
+#include "support/material_fixtures.hpp"
 #include "library/shader_library.hpp"
 
 using mb::Diagnostic;
 using mb::DiagnosticError;
 using mb::ShaderLibrary;
 using mb::test::FakeLibrary;
+using mb::test::requireAt;
 using Catch::Matchers::Contains;
 using Catch::Matchers::Equals;
 
@@ -35,22 +37,6 @@ std::vector<Diagnostic> errorsOf(const FakeLibrary& lib) {
     return e.diagnostics();
   }
   return {};
-}
-
-Diagnostic only(const std::vector<Diagnostic>& ds, const std::string& code) {
-  std::vector<Diagnostic> hits;
-  for (const auto& d : ds)
-    if (d.code == code) hits.push_back(d);
-  INFO("diagnostics:\n" << (ds.empty() ? std::string("(none)") : DiagnosticError(ds).what()));
-  REQUIRE(hits.size() == 1);
-  return hits.front();
-}
-
-void requireAt(const Diagnostic& d, const std::string& file, int line, int column) {
-  INFO(mb::formatDiagnostic(d));
-  CHECK(d.where.file == file);
-  CHECK(d.where.line == line);
-  CHECK(d.where.column == column);
 }
 
 }  // namespace
@@ -167,17 +153,17 @@ TEST_CASE("defaultRoot honours MATBRICKS_SHADERLIB", "[library]") {
 TEST_CASE("library: unknown key in slot.json", "[library]") {
   FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "\"returns\"", "\"return\"")}});
   auto ds = errorsOf(lib);
-  auto d = only(ds, "E-UNKNOWN-FIELD");
+  auto d = mb::test::theOne(ds, "E-UNKNOWN-FIELD");
   requireAt(d, lib.path("fresnel/slot.json"), 4, 3);
   CHECK_THAT(d.message, Contains("unknown field 'return' in slot 'fresnel'"));
   CHECK(d.suggestion == "did you mean 'returns'?");
-  requireAt(only(ds, "E-MISSING-FIELD"), lib.path("fresnel/slot.json"), 1, 1);
+  requireAt(mb::test::theOne(ds, "E-MISSING-FIELD"), lib.path("fresnel/slot.json"), 1, 1);
 }
 
 TEST_CASE("library: unknown key in a brick", "[library]") {
   FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "\"citation\"", "\"citaton\"")}});
   auto ds = errorsOf(lib);
-  auto d = only(ds, "E-UNKNOWN-FIELD");
+  auto d = mb::test::theOne(ds, "E-UNKNOWN-FIELD");
   requireAt(d, lib.path("fresnel/slot.json"), 12, 7);
   CHECK_THAT(d.message, Contains("in brick 'f_schlick'"));
   CHECK(d.suggestion == "did you mean 'citation'?");
@@ -186,13 +172,13 @@ TEST_CASE("library: unknown key in a brick", "[library]") {
 TEST_CASE("library: tolerance reason missing or empty", "[library]") {
   SECTION("absent") {
     FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", ", \"reason\": \"pow5\"", "")}});
-    auto d = only(errorsOf(lib), "E-MISSING-FIELD");
+    auto d = mb::test::theOne(errorsOf(lib), "E-MISSING-FIELD");
     requireAt(d, lib.path("fresnel/slot.json"), 15, 20);
     CHECK_THAT(d.message, Equals("tolerance is missing required field 'reason'"));
   }
   SECTION("empty") {
     FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "\"pow5\"", "\" \"")}});
-    auto d = only(errorsOf(lib), "E-EMPTY-FIELD");
+    auto d = mb::test::theOne(errorsOf(lib), "E-EMPTY-FIELD");
     requireAt(d, lib.path("fresnel/slot.json"), 15, 57);
     CHECK_THAT(d.message, Contains("'bricks[0].tolerance.reason' must not be empty"));
   }
@@ -200,21 +186,21 @@ TEST_CASE("library: tolerance reason missing or empty", "[library]") {
 
 TEST_CASE("library: duplicate brick id across slots", "[library]") {
   FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "\"f_schlick\"", "\"d_ggx\"")}});
-  auto d = only(errorsOf(lib), "E-DUPLICATE-BRICK");
+  auto d = mb::test::theOne(errorsOf(lib), "E-DUPLICATE-BRICK");
   requireAt(d, lib.path("fresnel/slot.json"), 8, 13);
   CHECK_THAT(d.message, Contains("already defined at " + lib.path("specular_d/slot.json") + ":8:13"));
 }
 
 TEST_CASE("library: brick requires an unknown unit", "[library]") {
   FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "[\"common\"]", "[\"comon\"]")}});
-  auto d = only(errorsOf(lib), "E-UNKNOWN-UNIT");
+  auto d = mb::test::theOne(errorsOf(lib), "E-UNKNOWN-UNIT");
   requireAt(d, lib.path("fresnel/slot.json"), 13, 20);
   CHECK(d.suggestion == "did you mean 'common'?");
 }
 
 TEST_CASE("library: slot name differs from its folder", "[library]") {
   FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "\"fresnel\"", "\"fresnell\"")}});
-  auto d = only(errorsOf(lib), "E-NAME-MISMATCH");
+  auto d = mb::test::theOne(errorsOf(lib), "E-NAME-MISMATCH");
   requireAt(d, lib.path("fresnel/slot.json"), 2, 11);
   CHECK_THAT(d.message, Contains("'fresnell' differs from its folder 'fresnel'"));
 }
@@ -222,28 +208,28 @@ TEST_CASE("library: slot name differs from its folder", "[library]") {
 TEST_CASE("library: model names an unknown slot", "[library]") {
   FakeLibrary lib(
       {{"models/standard.json", edited("models/standard.json", "\"slot\": \"fresnel\"", "\"slot\": \"fresnl\"")}});
-  auto d = only(errorsOf(lib), "E-UNKNOWN-SLOT");
+  auto d = mb::test::theOne(errorsOf(lib), "E-UNKNOWN-SLOT");
   requireAt(d, lib.path("models/standard.json"), 10, 33);
   CHECK(d.suggestion == "did you mean 'fresnel'?");
 }
 
 TEST_CASE("library: model input default outside its range", "[library]") {
   FakeLibrary lib({{"models/standard.json", edited("models/standard.json", "\"default\": 0.5", "\"default\": 1.5")}});
-  auto d = only(errorsOf(lib), "E-PARAM-RANGE");
+  auto d = mb::test::theOne(errorsOf(lib), "E-PARAM-RANGE");
   requireAt(d, lib.path("models/standard.json"), 15, 55);
 }
 
 TEST_CASE("library: model role with a default of another slot", "[library]") {
   FakeLibrary lib({{"models/standard.json", edited("models/standard.json", "\"slot\": \"fresnel\",",
                                                    "\"slot\": \"fresnel\", \"default\": \"d_ggx\",")}});
-  auto d = only(errorsOf(lib), "E-UNKNOWN-BRICK");
+  auto d = mb::test::theOne(errorsOf(lib), "E-UNKNOWN-BRICK");
   CHECK_THAT(d.message, Contains("'d_ggx' is not a brick of slot 'fresnel'"));
 }
 
 TEST_CASE("library: model role names an unknown light type", "[library]") {
   FakeLibrary lib({{"models/standard.json",
                     edited("models/standard.json", "\"lights\": [\"dir\"]", "\"lights\": [\"dir\", \"spto\"]")}});
-  auto d = only(errorsOf(lib), "E-UNKNOWN-NAME");
+  auto d = mb::test::theOne(errorsOf(lib), "E-UNKNOWN-NAME");
   CHECK_THAT(d.message, Contains("unknown light type 'spto'"));
   CHECK(d.suggestion == "did you mean 'spot'?");
 }
@@ -252,13 +238,13 @@ TEST_CASE("library: domain must cover exactly the non-Geometry params", "[librar
   SECTION("a key that is not a parameter") {
     FakeLibrary lib(
         {{"fresnel/slot.json", edited("fresnel/slot.json", "[0.0, 1.0]}", "[0.0, 1.0], \"f90\": [0.0, 1.0]}")}});
-    auto d = only(errorsOf(lib), "E-UNKNOWN-PARAM");
+    auto d = mb::test::theOne(errorsOf(lib), "E-UNKNOWN-PARAM");
     requireAt(d, lib.path("fresnel/slot.json"), 14, 36);
     CHECK_THAT(d.message, Contains("'f90'"));
   }
   SECTION("a parameter without a range") {
     FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "{\"f0\": [0.0, 1.0]}", "{}")}});
-    auto d = only(errorsOf(lib), "E-MISSING-DOMAIN");
+    auto d = mb::test::theOne(errorsOf(lib), "E-MISSING-DOMAIN");
     requireAt(d, lib.path("fresnel/slot.json"), 14, 17);
     CHECK_THAT(d.message, Contains("parameter 'f0'"));
   }
@@ -267,13 +253,13 @@ TEST_CASE("library: domain must cover exactly the non-Geometry params", "[librar
 TEST_CASE("library: GLSL file missing or not defining the function", "[library]") {
   SECTION("missing file") {
     FakeLibrary lib({{"fresnel/f_schlick.glsl", std::string()}});  // deleted
-    auto d = only(errorsOf(lib), "E-FILE-NOT-FOUND");
+    auto d = mb::test::theOne(errorsOf(lib), "E-FILE-NOT-FOUND");
     requireAt(d, lib.path("fresnel/slot.json"), 11, 15);
     CHECK_THAT(d.message, Contains("'f_schlick.glsl'"));
   }
   SECTION("function not defined") {
     FakeLibrary lib({{"fresnel/f_schlick.glsl", std::string("vec3 mb_f_schlick_x(vec3 f0) { return f0; }\n")}});
-    auto d = only(errorsOf(lib), "E-MISSING-FUNCTION");
+    auto d = mb::test::theOne(errorsOf(lib), "E-MISSING-FUNCTION");
     requireAt(d, lib.path("fresnel/slot.json"), 10, 19);
   }
 }
@@ -281,45 +267,45 @@ TEST_CASE("library: GLSL file missing or not defining the function", "[library]"
 TEST_CASE("library: bad type, schema, missing folder, bad values and paths", "[library]") {
   SECTION("type") {
     FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "\"vec3\"", "\"vec4\"")}});
-    auto d = only(errorsOf(lib), "E-UNKNOWN-TYPE");
+    auto d = mb::test::theOne(errorsOf(lib), "E-UNKNOWN-TYPE");
     requireAt(d, lib.path("fresnel/slot.json"), 4, 14);
     CHECK_THAT(d.suggestion, Contains("'vec3'"));
   }
   SECTION("schema") {
     FakeLibrary lib({{"manifest.json", edited("manifest.json", "1", "2")}});
-    auto d = only(errorsOf(lib), "E-SCHEMA-VERSION");
+    auto d = mb::test::theOne(errorsOf(lib), "E-SCHEMA-VERSION");
     requireAt(d, lib.path("manifest.json"), 2, 13);
   }
   SECTION("slot folder") {
     FakeLibrary lib({{"manifest.json", edited("manifest.json", "\"fresnel\"]", "\"fresnel\", \"sheen\"]")}});
-    auto d = only(errorsOf(lib), "E-FILE-NOT-FOUND");
+    auto d = mb::test::theOne(errorsOf(lib), "E-FILE-NOT-FOUND");
     requireAt(d, lib.path("manifest.json"), 4, 38);
     CHECK_THAT(d.message, Contains("sheen"));
   }
   SECTION("negative tolerance") {
     FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "\"abs\": 1e-6", "\"abs\": -1")}});
-    auto d = only(errorsOf(lib), "E-INVALID-VALUE");
+    auto d = mb::test::theOne(errorsOf(lib), "E-INVALID-VALUE");
     requireAt(d, lib.path("fresnel/slot.json"), 15, 28);
   }
   SECTION("geometry range beyond a cosine") {
     FakeLibrary lib({{"specular_d/slot.json", edited("specular_d/slot.json", "[0.01, 1.0]", "[-1.5, 1.0]")}});
-    auto d = only(errorsOf(lib), "E-PARAM-RANGE");
+    auto d = mb::test::theOne(errorsOf(lib), "E-PARAM-RANGE");
     requireAt(d, lib.path("specular_d/slot.json"), 15, 27);
     CHECK_THAT(d.message, Contains("'bricks[0].geometry.NoV' must lie inside [-1, 1]"));
   }
   SECTION("path outside the library") {
     FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "\"f_schlick.glsl\"", "\"../../x.glsl\"")}});
-    auto d = only(errorsOf(lib), "E-INVALID-PATH");
+    auto d = mb::test::theOne(errorsOf(lib), "E-INVALID-PATH");
     requireAt(d, lib.path("fresnel/slot.json"), 11, 15);
   }
   SECTION("slot listed twice") {
     FakeLibrary lib({{"manifest.json", edited("manifest.json", "\"fresnel\"]", "\"fresnel\", \"fresnel\"]")}});
-    auto d = only(errorsOf(lib), "E-DUPLICATE-NAME");
+    auto d = mb::test::theOne(errorsOf(lib), "E-DUPLICATE-NAME");
     requireAt(d, lib.path("manifest.json"), 4, 38);
   }
   SECTION("JSON syntax in a slot file") {
     FakeLibrary lib({{"fresnel/slot.json", edited("fresnel/slot.json", "\"vec3\",", "\"vec3\"")}});
-    auto d = only(errorsOf(lib), "E-JSON-SYNTAX");
+    auto d = mb::test::theOne(errorsOf(lib), "E-JSON-SYNTAX");
     CHECK(d.where.file == lib.path("fresnel/slot.json"));
     CHECK(d.where.line == 5);
   }
@@ -332,6 +318,6 @@ TEST_CASE("library: errors in several files are all reported", "[library]") {
   });
   auto ds = errorsOf(lib);
   REQUIRE(ds.size() == 2);
-  requireAt(only(ds, "E-EMPTY-FIELD"), lib.path("specular_d/slot.json"), 16, 56);
-  requireAt(only(ds, "E-UNKNOWN-UNIT"), lib.path("fresnel/slot.json"), 13, 20);
+  requireAt(mb::test::theOne(ds, "E-EMPTY-FIELD"), lib.path("specular_d/slot.json"), 16, 56);
+  requireAt(mb::test::theOne(ds, "E-UNKNOWN-UNIT"), lib.path("fresnel/slot.json"), 13, 20);
 }

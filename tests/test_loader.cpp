@@ -31,16 +31,6 @@ std::vector<Diagnostic> errorsOf(const std::string& text) {
   return {};
 }
 
-// The one diagnostic with `code`; fails the test when there is not exactly one.
-Diagnostic only(const std::vector<Diagnostic>& ds, const std::string& code) {
-  std::vector<Diagnostic> hits;
-  for (const auto& d : ds)
-    if (d.code == code) hits.push_back(d);
-  INFO("diagnostics:\n" << DiagnosticError(ds).what());
-  REQUIRE(hits.size() == 1);
-  return hits.front();
-}
-
 void requireAt(const Diagnostic& d, int line, int column) {
   INFO(mb::formatDiagnostic(d));
   CHECK(d.where.file == "m.json");
@@ -113,7 +103,7 @@ TEST_CASE("E-JSON-SYNTAX: invalid JSON is reported at the offending character", 
   "name": "gold",
 })");
   REQUIRE(ds.size() == 1);
-  auto d = only(ds, "E-JSON-SYNTAX");
+  auto d = mb::test::theOne(ds, "E-JSON-SYNTAX");
   requireAt(d, 3, 1);
   CHECK_THAT(d.message, Contains("unexpected '}'"));
 }
@@ -124,7 +114,7 @@ TEST_CASE("E-MISSING-FIELD: a required top-level field is absent", "[loader]") {
   "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}
 })");
   REQUIRE(ds.size() == 1);
-  auto d = only(ds, "E-MISSING-FIELD");
+  auto d = mb::test::theOne(ds, "E-MISSING-FIELD");
   requireAt(d, 1, 1);  // the enclosing object: the absent key has no position
   CHECK_THAT(d.message, Equals("material is missing required field 'model'"));
 }
@@ -136,7 +126,7 @@ TEST_CASE("E-MISSING-FIELD: a slot of the model has no brick", "[loader]") {
   "bricks": {"specular_d": "d_ggx"}
 })");
   REQUIRE(ds.size() == 1);
-  auto d = only(ds, "E-MISSING-FIELD");
+  auto d = mb::test::theOne(ds, "E-MISSING-FIELD");
   requireAt(d, 4, 13);
   CHECK_THAT(d.message, Contains("slot 'fresnel'"));
   CHECK_THAT(d.message, Contains("one of 'f_schlick'"));
@@ -148,7 +138,7 @@ TEST_CASE("E-UNKNOWN-FIELD: unknown top-level field suggests the closest name", 
   "model": "standard",
   "brick": {"specular_d": "d_ggx", "fresnel": "f_schlick"}
 })");
-  auto d = only(ds, "E-UNKNOWN-FIELD");
+  auto d = mb::test::theOne(ds, "E-UNKNOWN-FIELD");
   requireAt(d, 4, 3);
   CHECK_THAT(d.message, Contains("unknown field 'brick'"));
   CHECK(d.suggestion == "did you mean 'bricks'?");
@@ -164,7 +154,7 @@ TEST_CASE("E-UNKNOWN-FIELD: unknown parameter suggests a model input", "[loader]
   }
 })");
   REQUIRE(ds.size() == 1);
-  auto d = only(ds, "E-UNKNOWN-FIELD");
+  auto d = mb::test::theOne(ds, "E-UNKNOWN-FIELD");
   requireAt(d, 6, 5);
   CHECK_THAT(d.message, Contains("unknown parameter 'roughnes'"));
   CHECK(d.suggestion == "did you mean 'roughness'?");
@@ -176,7 +166,7 @@ TEST_CASE("E-UNKNOWN-SLOT: a bricks key that is not a slot of the model", "[load
   "model": "standard",
   "bricks": {"specular_dd": "d_ggx", "fresnel": "f_schlick"}
 })");
-  auto d = only(ds, "E-UNKNOWN-SLOT");
+  auto d = mb::test::theOne(ds, "E-UNKNOWN-SLOT");
   requireAt(d, 4, 14);
   CHECK_THAT(d.message, Contains("unknown slot 'specular_dd'"));
   CHECK(d.suggestion == "did you mean 'specular_d'?");
@@ -189,7 +179,7 @@ TEST_CASE("E-UNKNOWN-MODEL: unknown shading model suggests the closest", "[loade
   "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}
 })");
   REQUIRE(ds.size() == 1);
-  auto d = only(ds, "E-UNKNOWN-MODEL");
+  auto d = mb::test::theOne(ds, "E-UNKNOWN-MODEL");
   requireAt(d, 3, 12);
   CHECK_THAT(d.message, Equals("unknown shading model 'standart': the library has 'standard'"));
   CHECK(d.suggestion == "did you mean 'standard'?");
@@ -203,7 +193,7 @@ TEST_CASE("E-UNKNOWN-BRICK: unknown brick id suggests close ids, the slot's firs
   "bricks": {"specular_d": "d_gxx", "fresnel": "f_schlick"}
 })");
     REQUIRE(ds.size() == 1);
-    auto d = only(ds, "E-UNKNOWN-BRICK");
+    auto d = mb::test::theOne(ds, "E-UNKNOWN-BRICK");
     requireAt(d, 4, 28);
     CHECK_THAT(d.message, Equals("unknown brick 'd_gxx' for slot 'specular_d': expected one of "
                                  "'d_ggx', 'd_beckmann'"));
@@ -215,7 +205,7 @@ TEST_CASE("E-UNKNOWN-BRICK: unknown brick id suggests close ids, the slot's firs
   "model": "standard",
   "bricks": {"specular_d": "schlick", "fresnel": "f_schlick"}
 })");
-    auto d = only(ds, "E-UNKNOWN-BRICK");
+    auto d = mb::test::theOne(ds, "E-UNKNOWN-BRICK");
     requireAt(d, 4, 28);
     CHECK(d.suggestion == "did you mean 'f_schlick'?");
   }
@@ -228,7 +218,7 @@ TEST_CASE("E-BRICK-WRONG-SLOT: a brick of another slot", "[loader]") {
   "bricks": {"specular_d": "f_schlick", "fresnel": "f_schlick"}
 })");
   REQUIRE(ds.size() == 1);
-  auto d = only(ds, "E-BRICK-WRONG-SLOT");
+  auto d = mb::test::theOne(ds, "E-BRICK-WRONG-SLOT");
   requireAt(d, 4, 28);
   CHECK_THAT(d.message, Equals("brick 'f_schlick' fills slot 'fresnel', expected a 'specular_d' "
                                "brick: one of 'd_ggx', 'd_beckmann'"));
@@ -290,7 +280,7 @@ TEST_CASE("E-PARAM-RANGE: a vector default is checked per component", "[loader]"
   }
 })");
   REQUIRE(ds.size() == 1);
-  auto d = only(ds, "E-PARAM-RANGE");
+  auto d = mb::test::theOne(ds, "E-PARAM-RANGE");
   requireAt(d, 6, 52);  // the second component
   CHECK_THAT(d.message, Equals("'parameters.baseColor.default[1]' = 0.9 is outside [0.2, 0.8], "
                                "the parameter's range"));
@@ -317,7 +307,7 @@ TEST_CASE("E-INVALID-NAME: material name that is not an identifier", "[loader]")
   "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}
 })");
   REQUIRE(ds.size() == 1);
-  auto d = only(ds, "E-INVALID-NAME");
+  auto d = mb::test::theOne(ds, "E-INVALID-NAME");
   requireAt(d, 2, 11);
   CHECK_THAT(d.message, Contains("'gold filament'"));
   CHECK_THAT(d.message, Contains("[A-Za-z_][A-Za-z0-9_]*"));
@@ -483,7 +473,7 @@ TEST_CASE("E-MISSING-FIELD: a feature role without a default must be chosen", "[
   "features": ["sheen"],
   "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"}
 })");
-  auto d = only(ds, "E-MISSING-FIELD");
+  auto d = mb::test::theOne(ds, "E-MISSING-FIELD");
   requireAt(d, 5, 13);
   CHECK_THAT(d.message, Equals("bricks is missing role 'sheen_d' (slot 'specular_d') of model 'standard': "
                                "choose one of 'd_ggx', 'd_beckmann'"));
@@ -529,7 +519,7 @@ TEST_CASE("user parameters need surface code, a type, and a valid name", "[loade
   "bricks": {"specular_d": "d_ggx", "fresnel": "f_schlick"},
   "parameters": {"tint": {"type": "vec3", "default": [0.2, 0.4, 0.6]}}
 })");
-    auto d = only(ds, "E-UNKNOWN-FIELD");
+    auto d = mb::test::theOne(ds, "E-UNKNOWN-FIELD");
     requireAt(d, 5, 18);
     CHECK_THAT(d.message, Contains("a parameter that is not a model input needs surface code"));
   }
@@ -586,27 +576,27 @@ TEST_CASE("surface: a file inside the project, or errors naming what is wrong", 
     dir.write("sub/v.json", material(R"({"file": "../shaders/velvet.surface.glsl"})"));
     auto ds =
         mb::test::diagnosticsOf([&] { mb::loadMaterialJson(dir.path("sub/v.json"), mb::test::featureLibrary()); });
-    auto d = only(ds, "E-PATH-ESCAPE");
+    auto d = mb::test::theOne(ds, "E-PATH-ESCAPE");
     CHECK(d.where.file == dir.path("sub/v.json"));
     CHECK(d.where.line == 2);
     CHECK(d.where.column == 22);
     CHECK_THAT(d.message, Contains("leaves the project directory"));
     auto path = dir.write("abs.json", material(R"({"file": "/etc/passwd"})"));
     ds = mb::test::diagnosticsOf([&] { mb::loadMaterialJson(path, mb::test::featureLibrary()); });
-    CHECK_THAT(only(ds, "E-PATH-ESCAPE").message, StartsWith("absolute path '/etc/passwd'"));
+    CHECK_THAT(mb::test::theOne(ds, "E-PATH-ESCAPE").message, StartsWith("absolute path '/etc/passwd'"));
   }
   SECTION("E-FILE-NOT-FOUND at the file value; both or neither of file and glsl") {
     auto path = dir.write("missing.json", material(R"({"file": "nope.glsl"})"));
     auto ds = mb::test::diagnosticsOf([&] { mb::loadMaterialJson(path, mb::test::featureLibrary()); });
-    CHECK(only(ds, "E-FILE-NOT-FOUND").where.line == 2);
+    CHECK(mb::test::theOne(ds, "E-FILE-NOT-FOUND").where.line == 2);
     ds = featureErrorsOf(material(R"({"file": "a.glsl", "glsl": "void surface() {}"})"));
-    only(ds, "E-CONFLICTING-FIELDS");
+    mb::test::theOne(ds, "E-CONFLICTING-FIELDS");
     ds = featureErrorsOf(material("{}"));
-    CHECK_THAT(only(ds, "E-MISSING-FIELD").message, Contains("surface needs 'file'"));
+    CHECK_THAT(mb::test::theOne(ds, "E-MISSING-FIELD").message, Contains("surface needs 'file'"));
   }
   SECTION("E-SURFACE-FUNCTION: the code must define surface()") {
     auto ds = featureErrorsOf(material(R"({"glsl": "void surfaces(inout MaterialInputs m) {}"})"));
-    auto d = only(ds, "E-SURFACE-FUNCTION");
+    auto d = mb::test::theOne(ds, "E-SURFACE-FUNCTION");
     CHECK(d.where.line == 2);
     CHECK(d.where.column == 23);
   }
@@ -628,12 +618,13 @@ TEST_CASE("loadMaterialFile picks the form by extension", "[loader]") {
   CHECK(b[0].name == "b");
   auto ds =
       mb::test::diagnosticsOf([&] { mb::loadMaterialFile(dir.write("c.yaml", "x"), mb::test::featureLibrary()); });
-  CHECK_THAT(only(ds, "E-UNSUPPORTED-FORMAT").message, Contains("'.yaml': expected .json (material JSON), .mat"));
+  CHECK_THAT(mb::test::theOne(ds, "E-UNSUPPORTED-FORMAT").message,
+             Contains("'.yaml': expected .json (material JSON), .mat"));
   ds = mb::test::diagnosticsOf([&] { mb::loadMaterialFile(dir.path("absent.mat"), mb::test::featureLibrary()); });
-  only(ds, "E-FILE-NOT-FOUND");
+  mb::test::theOne(ds, "E-FILE-NOT-FOUND");
   std::filesystem::create_directories(dir.path("folder.json"));
   ds = mb::test::diagnosticsOf([&] { mb::loadMaterialFile(dir.path("folder.json"), mb::test::featureLibrary()); });
-  CHECK_THAT(only(ds, "E-FILE-NOT-REGULAR").message, Contains("is a directory"));
+  CHECK_THAT(mb::test::theOne(ds, "E-FILE-NOT-REGULAR").message, Contains("is a directory"));
 }
 
 TEST_CASE("hostile JSON never crashes or hangs the loader: one clean diagnostic", "[loader]") {

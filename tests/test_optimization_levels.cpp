@@ -21,8 +21,6 @@ const char* const kLevels[] = {"-O0", "-O1", "-O2"};
 
 using Package = test::CompiledPackage;
 
-Package compileTo(const std::string& args, const fs::path& out) { return test::compilePackage(args, out); }
-
 // Sum of spirv_instructions over the permutations of one precision.
 size_t instructions(const nlohmann::json& manifest, const std::string& precision) {
   size_t n = 0;
@@ -47,14 +45,14 @@ TEST_CASE("every optimization level is byte-identical at every -j and named in t
   std::map<std::string, Package> byLevel;
   for (const char* level : kLevels) {
     INFO(level);
-    const Package one = compileTo(std::string(level) + " -j1 " + inputs, dir / (std::string(level) + "_j1"));
-    const Package two = compileTo(std::string(level) + " -j2 " + inputs, dir / (std::string(level) + "_j2"));
+    const Package one = test::compilePackage(std::string(level) + " -j1 " + inputs, dir / (std::string(level) + "_j1"));
+    const Package two = test::compilePackage(std::string(level) + " -j2 " + inputs, dir / (std::string(level) + "_j2"));
     CHECK(one.files == two.files);
     CHECK(one.manifest["optimization"] == std::string(level).substr(1));
     byLevel[level] = one;
   }
   // The default is O2: the same package as -O2.
-  CHECK(compileTo("-j2 " + inputs, dir / "default").files == byLevel["-O2"].files);
+  CHECK(test::compilePackage("-j2 " + inputs, dir / "default").files == byLevel["-O2"].files);
 
   // spirv-opt did something at O1 and more at O2: every level's SPIR-V differs, and O0 (no
   // spirv-opt) has the most instructions.
@@ -69,8 +67,8 @@ TEST_CASE("every optimization level is byte-identical at every -j and named in t
 TEST_CASE("fp16 kernels are unoptimized at every level", "[cli][levels]") {
   const fs::path dir = test::freshTempDir("levels", "fp16");
   const std::string inputs = test::materialPath("ue4_metal.json") + " --precision fp16 --no-cache";
-  const Package o0 = compileTo("-O0 " + inputs, dir / "o0");
-  const Package o2 = compileTo("-O2 " + inputs, dir / "o2");
+  const Package o0 = test::compilePackage("-O0 " + inputs, dir / "o0");
+  const Package o2 = test::compilePackage("-O2 " + inputs, dir / "o2");
   CHECK(hashes(o0.manifest, "fp16") == hashes(o2.manifest, "fp16"));
   CHECK(o0.manifest["optimization"] == "O0");
   CHECK(o2.manifest["optimization"] == "O2");
@@ -81,11 +79,11 @@ TEST_CASE("a scene's optimization level is used, and -O overrides it", "[cli][le
   const fs::path scene = dir / "scene.json";
   std::ofstream(scene) << R"({"lights": [{"type": "dir"}], "optimization": "O0", "materials": [{"file": ")"
                        << test::materialPath("ue4_metal.json") << "\"}]}";
-  const Package fromScene = compileTo("--no-cache --scene " + scene.string(), dir / "scene");
+  const Package fromScene = test::compilePackage("--no-cache --scene " + scene.string(), dir / "scene");
   CHECK(fromScene.manifest["optimization"] == "O0");
-  const Package o0 = compileTo("--no-cache -O0 " + test::materialPath("ue4_metal.json"), dir / "o0");
+  const Package o0 = test::compilePackage("--no-cache -O0 " + test::materialPath("ue4_metal.json"), dir / "o0");
   CHECK(hashes(fromScene.manifest, "fp32") == hashes(o0.manifest, "fp32"));
-  const Package overridden = compileTo("--no-cache -O2 --scene " + scene.string(), dir / "overridden");
+  const Package overridden = test::compilePackage("--no-cache -O2 --scene " + scene.string(), dir / "overridden");
   CHECK(overridden.manifest["optimization"] == "O2");
   CHECK(hashes(overridden.manifest, "fp32") != hashes(o0.manifest, "fp32"));
 }

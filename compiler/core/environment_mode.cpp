@@ -5,7 +5,7 @@
 namespace mb {
 namespace {
 
-const AxisNames<EnvironmentMode>& axis() {
+const AxisNames<EnvironmentMode>& environmentModeAxis() {
   static const AxisNames<EnvironmentMode> a{
       {EnvironmentMode::None, EnvironmentMode::Sh, EnvironmentMode::IblLut, EnvironmentMode::IblAnalytic},
       {"none", "sh", "ibl_lut", "ibl_analytic"}};
@@ -14,12 +14,12 @@ const AxisNames<EnvironmentMode>& axis() {
 
 }  // namespace
 
-const std::string& environmentModeName(EnvironmentMode e) { return axis().name(e); }
-const std::vector<EnvironmentMode>& allEnvironmentModes() { return axis().values; }
-const std::vector<std::string>& allEnvironmentModeNames() { return axis().names; }
-std::optional<EnvironmentMode> parseEnvironmentMode(std::string_view name) { return axis().parse(name); }
+const std::string& environmentModeName(EnvironmentMode e) { return environmentModeAxis().name(e); }
+const std::vector<EnvironmentMode>& allEnvironmentModes() { return environmentModeAxis().values; }
+const std::vector<std::string>& allEnvironmentModeNames() { return environmentModeAxis().names; }
+std::optional<EnvironmentMode> parseEnvironmentMode(std::string_view name) { return environmentModeAxis().parse(name); }
 std::vector<EnvironmentMode> parseEnvironmentModes(const std::vector<std::string>& names) {
-  return axis().parseAll(names, "environment mode");
+  return environmentModeAxis().parseAll(names, "environment mode");
 }
 std::vector<std::string> environmentModeNames(const std::vector<EnvironmentMode>& modes) {
   std::vector<std::string> out;

@@ -5,19 +5,19 @@
 namespace mb {
 namespace {
 
-const AxisNames<Quality>& axis() {
+const AxisNames<Quality>& qualityAxis() {
   static const AxisNames<Quality> a{{Quality::Low, Quality::Medium, Quality::High}, {"low", "medium", "high"}};
   return a;
 }
 
 }  // namespace
 
-const std::string& qualityName(Quality q) { return axis().name(q); }
-const std::vector<Quality>& allQualities() { return axis().values; }
-const std::vector<std::string>& allQualityNames() { return axis().names; }
-std::optional<Quality> parseQuality(std::string_view name) { return axis().parse(name); }
+const std::string& qualityName(Quality q) { return qualityAxis().name(q); }
+const std::vector<Quality>& allQualities() { return qualityAxis().values; }
+const std::vector<std::string>& allQualityNames() { return qualityAxis().names; }
+std::optional<Quality> parseQuality(std::string_view name) { return qualityAxis().parse(name); }
 std::vector<Quality> parseQualities(const std::vector<std::string>& names) {
-  return axis().parseAll(names, "quality level");
+  return qualityAxis().parseAll(names, "quality level");
 }
 
 }  // namespace mb

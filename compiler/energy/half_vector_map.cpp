@@ -7,8 +7,6 @@
 namespace mb::energy {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 HalfVectorAngle fromSin2(double sin2) {
   sin2 = std::clamp(sin2, 0.0, 1.0);
   return {std::sqrt(1.0 - sin2), std::sqrt(sin2)};
@@ -84,7 +82,7 @@ HalfVectorAngle HalfVectorMap::angleAt(double u) const {
     }
     case HalfVectorMapKind::Ashikhmin: {
       // No closed-form inverse: bisection on the monotone cdf to double precision.
-      double lo = 0.0, hi = 0.5 * kPi;
+      double lo = 0.0, hi = 0.5 * std::numbers::pi;
       for (int it = 0; it < 64; ++it) {
         double mid = 0.5 * (lo + hi);
         (cdf(mid) < u ? lo : hi) = mid;
@@ -100,20 +98,20 @@ double HalfVectorMap::density(const HalfVectorAngle& a) const {
   const double c = a.cosTheta, s = a.sinTheta, a2 = alpha_ * alpha_;
   switch (kind_) {
     case HalfVectorMapKind::Cosine:
-      return c / kPi;
+      return c / std::numbers::pi;
     case HalfVectorMapKind::Ggx: {
       double d = a2 * c * c + s * s;  // (n.h)^2 (alpha^2 - 1) + 1, without cancellation
-      return a2 / (kPi * d * d) * c;
+      return a2 / (std::numbers::pi * d * d) * c;
     }
     case HalfVectorMapKind::Beckmann:
-      return std::exp(-(s * s) / (c * c * a2)) / (kPi * a2 * c * c * c);
+      return std::exp(-(s * s) / (c * c * a2)) / (std::numbers::pi * a2 * c * c * c);
     case HalfVectorMapKind::Charlie: {
       double k = 1.0 / alpha_;
-      return (2.0 + k) * std::pow(s, k) / (2.0 * kPi) * c;
+      return (2.0 + k) * std::pow(s, k) / (2.0 * std::numbers::pi) * c;
     }
     case HalfVectorMapKind::Ashikhmin: {
       double term = s > 0.0 ? 4.0 * ashikhminGrazing(c, s, alpha_) / (s * s) / (s * s) : 0.0;
-      return (1.0 + term) / (kPi * (1.0 + 4.0 * a2)) * c;
+      return (1.0 + term) / (std::numbers::pi * (1.0 + 4.0 * a2)) * c;
     }
   }
   return 0.0;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "emit/glsl_writer.hpp"
+#include "preview/dir_math.hpp"
 #include "library/shader_library.hpp"
 
 namespace mb::preview {
@@ -16,7 +17,6 @@ double smoothstep(double e0, double e1, double x) {
   const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
   return t * t * (3.0 - 2.0 * t);
 }
-double dot(const Dir& a, const Dir& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Rgb mix(const Rgb& a, const Rgb& b, double t) {
   return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t};
 }

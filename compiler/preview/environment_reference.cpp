@@ -3,20 +3,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "preview/dir_math.hpp"
 #include "preview/environment_radiance.hpp"
 
 namespace mb::preview {
 namespace {
 
 using V3 = std::array<double, 3>;
-V3 normalized(const V3& v) {
-  const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  return {v[0] / l, v[1] / l, v[2] / l};
-}
-V3 cross(const V3& a, const V3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // Van der Corput radical inverse in base 2: the bits of k reversed, over 2^32.
 double radicalInverse(uint32_t b) {

@@ -255,6 +255,6 @@ class ModelRegistry {
 
 }  // namespace mb::ref
 
-#define MB_MODEL_REFERENCE(NAME, FN)                                            \
-  [[maybe_unused]] static const bool MB_CONCAT(mb_model_reference_, __LINE__) = \
+#define MB_MODEL_REFERENCE(NAME, FN)                                               \
+  [[maybe_unused]] static const bool MB_CONCAT(mb_model_reference_, __COUNTER__) = \
       ::mb::ref::ModelRegistry::instance().add(NAME, FN)

@@ -140,10 +140,10 @@ Reference makeReference(R (*fn)(A...)) {
 #define MB_CONCAT_INNER(a, b) a##b
 #define MB_CONCAT(a, b) MB_CONCAT_INNER(a, b)
 // Registers the reference of brick ID (a string literal) to FN.
-#define MB_REFERENCE(ID, FN)                                              \
-  [[maybe_unused]] static const bool MB_CONCAT(mb_reference_, __LINE__) = \
+#define MB_REFERENCE(ID, FN)                                                 \
+  [[maybe_unused]] static const bool MB_CONCAT(mb_reference_, __COUNTER__) = \
       ::mb::ref::Registry::references().add(ID, ::mb::ref::makeReference(FN))
 // Registers the ground truth an approximating brick ID stands in for.
-#define MB_GROUND_TRUTH(ID, FN)                                              \
-  [[maybe_unused]] static const bool MB_CONCAT(mb_ground_truth_, __LINE__) = \
+#define MB_GROUND_TRUTH(ID, FN)                                                 \
+  [[maybe_unused]] static const bool MB_CONCAT(mb_ground_truth_, __COUNTER__) = \
       ::mb::ref::Registry::groundTruths().add(ID, ::mb::ref::makeReference(FN))
