@@ -18,7 +18,10 @@ if [ "${1:-}" = "--all" ]; then
   TARGETS=()
 fi
 ./scripts/install-deps.sh
-[ -f build-asan/CMakeCache.txt ] || cmake --preset asan
+# A unity build, as scripts/build.sh configures one (it says why).
+[ -f build-asan/CMakeCache.txt ] || cmake --preset asan -DCMAKE_UNITY_BUILD=ON
 cmake --build build-asan -j "$(nproc)" "${TARGETS[@]}"
+echo "sanitize.sh: configure and build took $SECONDS s"
 source ./scripts/sanitizer-env.sh
 ctest --test-dir build-asan --output-on-failure -j "$(nproc)" "${SELECT[@]}"
+echo "sanitize.sh: total $SECONDS s"
