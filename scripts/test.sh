@@ -3,13 +3,24 @@
 # Khronos validation layer on; see tests/CMakeLists.txt), then the sanitizer pass: the asan
 # preset's build and its tests under ASan + UBSan (scripts/sanitize.sh, docs/fuzzing.md).
 #
+# Each test runs once: the tests that need no device (CTest label `host`, tests/CMakeLists.txt)
+# run in the sanitizer pass, which runs exactly those under ASan + UBSan, so the Release part
+# runs the rest: the device tests (label `device`) and the tests CMake registers itself.
+#
 #   scripts/test.sh          CI's run: every test but the opt-in sweeps (CTest label `sweep`)
-#   scripts/test.sh --all    the sweeps too
+#   scripts/test.sh --all    the sweeps too, and the host tests in the Release build as well
 set -euo pipefail
 cd "$(dirname "$0")/.."
-SELECT=(-LE sweep)
+SELECT=(-LE "sweep|host")
 if [ "${1:-}" = "--all" ]; then SELECT=(); fi
-./scripts/install-deps.sh
-./scripts/build.sh
-(cd "${BUILD_DIR:-build}" && ctest --output-on-failure -j "$(nproc)" "${SELECT[@]}")
-./scripts/sanitize.sh
+# Each step's wall time is printed as it ends, so a CI log says where the time went.
+step() {
+  local name="$1" start=$SECONDS
+  shift
+  "$@"
+  echo "test.sh: $name took $((SECONDS - start)) s (total $SECONDS s)"
+}
+step install-deps ./scripts/install-deps.sh
+step build ./scripts/build.sh
+step ctest bash -c 'cd "$1" && shift && ctest --output-on-failure -j "$(nproc)" "$@"' _ "${BUILD_DIR:-build}" "${SELECT[@]}"
+step sanitize ./scripts/sanitize.sh
