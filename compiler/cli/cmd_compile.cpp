@@ -92,7 +92,7 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
   args->axisOptions[0] =
       cmd->add_option("--lights", args->request.lights, "Light types every permutation shades (default: dir)")
           ->delimiter(',')
-          ->check(CLI::IsMember(allLightTypes()));
+          ->check(CLI::IsMember(allLightTypeNames()));
   args->axisOptions[1] = cmd->add_option("--environment", args->request.environment, "Environment mode (default: none)")
                              ->check(CLI::IsMember(allEnvironmentModeNames()));
   args->axisOptions[2] = cmd->add_option("--precision", args->request.precision, "fp32 or fp16")

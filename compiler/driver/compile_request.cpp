@@ -61,13 +61,15 @@ void compileRequestFromJson(const nlohmann::json& c, const std::string& file, Co
   for (const auto& t : r.targets)
     if (!parseTarget(t)) throw notReadable("'targets': '" + t + "' is not a target");
   // An axis value the emitter (precision), the quality selection (quality) or the validity
-  // rules (environment) refused before the axes were types: the same code, now where the
+  // rules (lights, environment) refused before the axes were types: the same code, now where the
   // shard is read.
   auto unknownAxisValue = [&](const std::string& code, const std::string& what, const std::string& value,
                               const std::vector<std::string>& names) {
     return DiagnosticError(
         {{Severity::Error, code, {file, 0, 0}, "unknown " + what + " '" + value + "'", "one of " + quotedList(names)}});
   };
+  for (const auto& l : r.lights)
+    if (!parseLightType(l)) throw unknownAxisValue("E-PERMUTATION-INVALID", "light type", l, allLightTypeNames());
   if (!parseEnvironmentMode(r.environment))
     throw unknownAxisValue("E-PERMUTATION-INVALID", "environment mode", r.environment, allEnvironmentModeNames());
   if (!parsePrecision(r.precision))
