@@ -134,8 +134,8 @@ CompileOutcome runCompile(const CompileRequest& r, const CompileHooks& hooks, co
     materials = loadMaterialFiles(r.materials, lib, warnings);
     warn(warnings);
     AxisPoint axes;
-    axes.lights = canonicalLights(parseLightTypes(r.lights));  // checked by --lights or compileRequestFromJson
-    axes.environment = parsedAxis(parseEnvironmentMode(r.environment), "--environment", r.environment);
+    axes.lights = canonicalLights(r.lights);
+    axes.environment = r.environment;
     axes.precision = parsedAxis(parsePrecision(r.precision), "--precision", r.precision);
     axes.quality = parsedAxis(parseQuality(r.quality), "--quality", r.quality);
     plan = planMaterials(materials, axes, lib);
