@@ -92,11 +92,11 @@ const MaterialDesc& byName(const std::vector<MaterialDesc>& materials, const std
 
 // Whether a material's model shades these lights together in this environment.
 bool shades(const ShaderLibrary& lib, const MaterialDesc& m, EnvironmentMode env,
-            const std::vector<std::string>& lights) {
+            const std::vector<LightType>& lights) {
   const ShadingModel* model = lib.findModel(m.model);
   auto has = [](const auto& v, const auto& x) { return std::find(v.begin(), v.end(), x) != v.end(); };
   return has(model->environments, env) &&
-         std::all_of(lights.begin(), lights.end(), [&](const std::string& l) { return has(model->lights, l); });
+         std::all_of(lights.begin(), lights.end(), [&](LightType l) { return has(model->lights, l); });
 }
 
 // A realistic list: every example material at one and at three light types, with no
@@ -104,7 +104,8 @@ bool shades(const ShaderLibrary& lib, const MaterialDesc& m, EnvironmentMode env
 std::vector<Permutation> throughputList(const ShaderLibrary& lib, const std::vector<MaterialDesc>& materials) {
   std::vector<Permutation> perms;
   for (const auto& m : materials) {
-    for (std::vector<std::string> lights : {std::vector<std::string>{"dir"}, {"dir", "point", "spot"}})
+    for (std::vector<LightType> lights :
+         {std::vector<LightType>{LightType::Dir}, {LightType::Dir, LightType::Point, LightType::Spot}})
       for (EnvironmentMode env : {EnvironmentMode::None, EnvironmentMode::Sh}) {
         if (!shades(lib, m, env, lights)) continue;
         Permutation p;
@@ -259,7 +260,7 @@ json levelCompileTimes(const ShaderLibrary& lib, const std::vector<Permutation>&
 std::vector<MaterialDesc> sixtyMaterials(const ShaderLibrary& lib, const std::vector<MaterialDesc>& shipped) {
   std::vector<const MaterialDesc*> bases;
   for (const auto& m : shipped)
-    if (shades(lib, m, EnvironmentMode::IblLut, {"dir", "point"})) bases.push_back(&m);
+    if (shades(lib, m, EnvironmentMode::IblLut, {LightType::Dir, LightType::Point})) bases.push_back(&m);
   std::vector<MaterialDesc> out;
   for (size_t i = 0; i < 60; ++i) {
     MaterialDesc m = *bases[i % bases.size()];
@@ -281,7 +282,7 @@ json benchSceneShape(const ShaderLibrary& lib, const std::vector<MaterialDesc>& 
     for (const auto& m : sixty) {
       Permutation p;
       p.material = &m;
-      p.lights = {"dir", "point"};
+      p.lights = {LightType::Dir, LightType::Point};
       p.environment = EnvironmentMode::IblLut;
       p.precision = precision;
       perms.push_back(p);

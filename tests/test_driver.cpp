@@ -61,8 +61,8 @@ TEST_CASE("driver: a scene compiled through a CompileRequest is the CLI's packag
 TEST_CASE("driver: a request's shard.json form reads back to the same request", "[driver][shard]") {
   CompileRequest r;
   r.materials = {"a.json", "b.mat"};
-  r.lights = {"dir", "sphere"};
-  r.environment = "ibl_analytic";
+  r.lights = {LightType::Dir, LightType::Sphere};
+  r.environment = EnvironmentMode::IblAnalytic;
   r.precision = "fp16";
   r.quality = "low";
   r.targets = {"spirv", "msl"};
@@ -75,8 +75,8 @@ TEST_CASE("driver: a request's shard.json form reads back to the same request", 
   CompileRequest back;
   compileRequestFromJson(j, "shard.json", back);
   CHECK(compileRequestJson(back) == j);
-  CHECK(back.environment == "ibl_analytic");
-  CHECK(back.lights == std::vector<std::string>{"dir", "sphere"});
+  CHECK(environmentModeName(back.environment) == "ibl_analytic");
+  CHECK(lightTypeNames(back.lights) == std::vector<std::string>{"dir", "sphere"});
   CHECK(back.shaderlib == "/lib");
 
   nlohmann::json bad = j;
@@ -99,6 +99,6 @@ TEST_CASE("driver: what the command line refuses as usage is a CompileUsageError
   CompileRequest badAxis;
   badAxis.materials = {test::materialPath("ue4_metal.json")};
   badAxis.explain = true;
-  badAxis.environment = "ibl";
+  badAxis.precision = "fp64";
   CHECK_THROWS_AS(runCompile(badAxis), CompileUsageError);
 }

@@ -197,7 +197,7 @@ TEST_CASE("the mediump (ESSL) form of fp16 permutations computes the fp32 functi
     MaterialDesc m = test::shippedMaterial(name);
     Permutation perm;
     perm.material = &m;
-    perm.lights = {"dir", "point", "spot"};
+    perm.lights = {LightType::Dir, LightType::Point, LightType::Spot};
     perm.environment = EnvironmentMode::IblLut;
     perm.precision = Precision::Fp32;
     const Tolerance tol = buildPermutationProbe(lib, perm).tolerance;

@@ -216,7 +216,7 @@ StressResult stressMaterial(harness::VulkanHarness& gpu, const ShaderLibrary& li
   MaterialDesc m = loadMaterialJson(test::materialPath(name + ".json"), lib);
   Permutation perm;
   perm.material = &m;
-  perm.lights = lights;
+  perm.lights = parseLightTypes(lights);
   perm.precision = Precision::Fp16;
   return stressProbe(gpu, buildPermutationProbe(lib, perm, true), "permutation", name, {256, 1});
 }

@@ -110,7 +110,7 @@ TEST_CASE("a contract function missing from an include is found", "[includes]") 
   Permutation p;
   const MaterialDesc m = test::shippedMaterial("ue4_metal");
   p.material = &m;
-  p.lights = {"dir", "sphere"};
+  p.lights = {LightType::Dir, LightType::Sphere};
   p.environment = EnvironmentMode::IblLut;
   const Checked c = buildAll({p}).front();
   REQUIRE(c.error.empty());

@@ -58,7 +58,7 @@ void checkPermutation(const ShaderLibrary& lib, const Permutation& perm, ProbeLa
   CHECK(r.passed());
 }
 
-Permutation permutationOf(const MaterialDesc& m, std::vector<std::string> lights, EnvironmentMode environment,
+Permutation permutationOf(const MaterialDesc& m, std::vector<LightType> lights, EnvironmentMode environment,
                           Precision precision) {
   Permutation perm;
   perm.material = &m;
@@ -114,8 +114,8 @@ void sweepLanguage(ProbeLanguage language) {
   for (const auto& file : test::exampleMaterialFiles()) {
     const MaterialDesc m = loadMaterialJson(file, lib);
     for (const Permutation& perm : validationPermutationsFor(m, lib)) {
-      std::vector<std::vector<std::string>> lightSets = {perm.lights};
-      for (const auto& light : perm.lights) lightSets.push_back({light});
+      std::vector<std::vector<LightType>> lightSets = {perm.lights};
+      for (LightType light : perm.lights) lightSets.push_back({light});
       for (const auto& lights : lightSets)
         for (Precision precision : allPrecisions()) {
           const auto at = languagesAt(precision);
@@ -150,8 +150,8 @@ TEST_CASE("glsl450 at fp16 is refused on llvmpipe with the missing extension nam
   REQUIRE(!glContext(gl::GlApi::Gl45Core).hasExtension("GL_AMD_gpu_shader_half_float"));
   const ShaderLibrary& lib = test::shippedLibrary();
   const MaterialDesc m = test::shippedMaterial("filament_plastic");
-  LanguageProbe p = buildPermutationProbeIn(lib, permutationOf(m, {"dir"}, EnvironmentMode::None, Precision::Fp16),
-                                            ProbeLanguage::Glsl450);
+  LanguageProbe p = buildPermutationProbeIn(
+      lib, permutationOf(m, {LightType::Dir}, EnvironmentMode::None, Precision::Fp16), ProbeLanguage::Glsl450);
   CHECK(p.source.find("#extension GL_AMD_gpu_shader_half_float") != std::string::npos);
   CHECK_THROWS_WITH(runProbeOn(devicesFor(ProbeLanguage::Glsl450), p, {}),
                     Catch::Contains("lacks GL_AMD_gpu_shader_half_float"));
@@ -163,7 +163,7 @@ TEST_CASE("a wrong translation is caught in every executable language", "[langua
   // else.
   const ShaderLibrary& lib = test::shippedLibrary();
   const MaterialDesc m = test::shippedMaterial("filament_plastic");
-  const Permutation perm = permutationOf(m, {"dir"}, EnvironmentMode::None, Precision::Fp32);
+  const Permutation perm = permutationOf(m, {LightType::Dir}, EnvironmentMode::None, Precision::Fp32);
   for (ProbeLanguage language : kTranslated) {
     LanguageProbe p = buildPermutationProbeIn(lib, perm, language);
     INFO(languageName(language));
@@ -217,7 +217,8 @@ TEST_CASE("llvmpipe runs ESSL mediump at 16 bits: the essl310 fp16 kernel is tru
   // lavapipe is again (it runs at fp32).
   const ShaderLibrary& lib = test::shippedLibrary();
   const MaterialDesc m = test::shippedMaterial("velvet_green");
-  Permutation perm = permutationOf(m, {"dir", "point", "spot"}, EnvironmentMode::None, Precision::Fp32);
+  Permutation perm =
+      permutationOf(m, {LightType::Dir, LightType::Point, LightType::Spot}, EnvironmentMode::None, Precision::Fp32);
   const Tolerance fp32 = buildPermutationProbe(lib, perm).tolerance;
   perm.precision = Precision::Fp16;
   LanguageProbe es = buildPermutationProbeIn(lib, perm, ProbeLanguage::Essl310);

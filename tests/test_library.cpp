@@ -121,7 +121,7 @@ TEST_CASE("a fake library loads into the expected data", "[library]") {
   REQUIRE(model);
   CHECK(model->skeleton == "models/standard.glsl");
   CHECK(model->coreRoles() == std::vector<std::string>{"specular_d", "fresnel"});
-  CHECK(model->lights == std::vector<std::string>{"dir"});
+  CHECK(lightTypeNames(model->lights) == std::vector<std::string>{"dir"});
   REQUIRE(model->inputs.size() == 3);
   CHECK(model->inputs[0].name == "baseColor");
   CHECK(model->inputs[0].defaultValue == std::vector<double>{0.8, 0.8, 0.8});

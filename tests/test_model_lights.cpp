@@ -33,7 +33,7 @@ ref::ModelEvalInput referenceInput(const MaterialDesc& material,
                                    const std::map<std::string, std::string>& overrides = {}) {
   Permutation perm;
   perm.material = &material;
-  perm.lights = kAllLights;
+  perm.lights = parseLightTypes(kAllLights);
   ref::ModelEvalInput in;
   for (const auto& [role, id] : boundRoles(test::shippedLibrary(), perm)) in.bricks[role] = id;
   for (const auto& [role, id] : overrides) in.bricks[role] = id;
@@ -356,7 +356,7 @@ TEST_CASE("lights: degenerate area lights stay finite on lavapipe and agree with
   MaterialDesc m = shippedMaterial("filament_plastic");
   Permutation perm;
   perm.material = &m;
-  perm.lights = canonicalLights({"sphere", "tube"});
+  perm.lights = {LightType::Sphere, LightType::Tube};
   ProbeProgram probe = buildPermutationProbe(test::shippedLibrary(), perm);
   const ProbeLayout& layout = probe.shader.layout;
   auto set = [&](std::vector<float>& records, const std::string& column, const std::function<float(uint64_t)>& value) {

@@ -53,7 +53,7 @@ const preview::PreviewEnvironment& environment(const std::string& name) {
 preview::PreviewOptions smallOptions() {
   preview::PreviewOptions o;
   o.size = kTestSize;
-  o.lights = {"dir", "point"};
+  o.lights = {LightType::Dir, LightType::Point};
   return o;
 }
 

@@ -182,7 +182,7 @@ TEST_CASE("pruned permutations of a constructed scene equal their feature-comple
   SceneDesc scene;
   scene.name = "constructed";
   scene.file = "constructed.scene.json";
-  scene.lights = {{"dir", "sun", {}}, {"point", "lamp", {}}};
+  scene.lights = {{LightType::Dir, "sun", {}}, {LightType::Point, "lamp", {}}};
   scene.materials.push_back({test::shippedMaterial("clearcoat_metal"), {test::useWith({{"clearCoat", {0.0}}})}, {}});
   scene.materials.push_back(
       {test::shippedMaterial("satin_sheen"), {test::useWith({{"sheenColor", {0.0, 0.0, 0.0}}})}, {}});

@@ -42,7 +42,7 @@ TEST_CASE("scene JSON: axes, lights and uses are read", "[scene]") {
                                    R"(, "uses": [{"clearCoat": 0.25}]}]})",
                                sceneFile(), test::shippedLibrary());
   CHECK(s.name == "t");
-  CHECK(s.lightTypes() == std::vector<std::string>{"dir", "point"});
+  CHECK(lightTypeNames(s.lightTypes()) == std::vector<std::string>{"dir", "point"});
   CHECK(s.environments ==
         std::vector<EnvironmentMode>{EnvironmentMode::Sh, EnvironmentMode::IblLut});  // canonical order
   CHECK(s.precisions == std::vector<Precision>{Precision::Fp16});
@@ -106,7 +106,7 @@ TEST_CASE("glTF scene: referenced lights and the materials meshes use", "[scene]
   const ShaderLibrary& lib = test::shippedLibrary();
   SceneDesc s = loadScene((test::sourceDir() / "examples/scenes/gallery.gltf").string(), lib);
   // The spot light is defined but no node references it.
-  CHECK(s.lightTypes() == std::vector<std::string>{"dir", "point"});
+  CHECK(lightTypeNames(s.lightTypes()) == std::vector<std::string>{"dir", "point"});
   REQUIRE(s.lights.size() == 2);
   CHECK(s.lights[0].name == "sun");
   CHECK(s.lights[0].where.line > 1);
@@ -165,7 +165,7 @@ TEST_CASE("glTF scene: nodes' unread members are skipped, positions kept", "[sce
 
 TEST_CASE("scene JSON pulls a glTF file in and adds its own materials", "[scene]") {
   SceneDesc s = loadScene((test::sourceDir() / "examples/scenes/gallery.json").string(), test::shippedLibrary());
-  CHECK(s.lightTypes() == std::vector<std::string>{"dir", "point"});
+  CHECK(lightTypeNames(s.lightTypes()) == std::vector<std::string>{"dir", "point"});
   CHECK(s.materials.size() == 5);
   CHECK(s.environments == std::vector<EnvironmentMode>{EnvironmentMode::None, EnvironmentMode::IblLut});
 }

@@ -34,10 +34,11 @@ std::vector<std::string> keysOf(const ScenePlan& plan) {
 }
 
 // Every subset of `all`, for the brute-force count.
-std::vector<std::vector<std::string>> subsets(const std::vector<std::string>& all) {
-  std::vector<std::vector<std::string>> out;
+template <class T>
+std::vector<std::vector<T>> subsets(const std::vector<T>& all) {
+  std::vector<std::vector<T>> out;
   for (size_t mask = 0; mask < (size_t{1} << all.size()); ++mask) {
-    std::vector<std::string> s;
+    std::vector<T> s;
     for (size_t i = 0; i < all.size(); ++i)
       if (mask & (size_t{1} << i)) s.push_back(all[i]);
     out.push_back(s);
@@ -49,12 +50,12 @@ std::vector<std::vector<std::string>> subsets(const std::vector<std::string>& al
 
 TEST_CASE("validity rules: one reason per invalid axis value", "[scene]") {
   AxisPoint p;
-  p.lights = {"dir", "sphere"};
+  p.lights = {LightType::Dir, LightType::Sphere};
   CHECK(!invalidReason(model("standard"), p));
   auto r = invalidReason(model("cloth"), p);
   REQUIRE(r);
   CHECK(r->find("'sphere' lights") != std::string::npos);
-  p.lights = {"dir"};
+  p.lights = {LightType::Dir};
   p.environment = EnvironmentMode::IblAnalytic;
   CHECK(invalidReason(model("cloth"), p));
   p.environment = EnvironmentMode::None;
@@ -167,7 +168,7 @@ TEST_CASE("brick rules: an incompatible pair is invalid only where both roles ar
   m.brickLocations["env_brdf"] = SourceLocation("metal.json", 9, 17);
   Permutation p;
   p.material = &m;
-  p.lights = {"dir"};
+  p.lights = {LightType::Dir};
   p.environment = EnvironmentMode::IblAnalytic;
   auto broken = brokenBrickRule(standard, p);
   REQUIRE(broken);

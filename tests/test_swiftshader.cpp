@@ -83,7 +83,7 @@ TEST_CASE("SwiftShader: preview of every shipped material under both environment
   // (SwiftShader prefilters the 128^2 default cube for minutes on this VM).
   preview::PreviewOptions o;
   o.size = 56;
-  o.lights = {"dir", "point"};
+  o.lights = {LightType::Dir, LightType::Point};
   const auto files = test::exampleMaterialFiles();
   REQUIRE(files.size() >= 9);
   for (const std::string env : {"studio", "sky"}) {

@@ -90,10 +90,10 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
                 "Print possible / required / compiled / unique counts and which axis multiplied them");
   cmd->add_flag("-q,--quiet", args->request.quiet, "Print nothing on success");
   args->axisOptions[0] =
-      cmd->add_option("--lights", args->request.lights, "Light types every permutation shades (default: dir)")
+      cmd->add_option("--lights", args->lights, "Light types every permutation shades (default: dir)")
           ->delimiter(',')
-          ->check(CLI::IsMember(allLightTypes()));
-  args->axisOptions[1] = cmd->add_option("--environment", args->request.environment, "Environment mode (default: none)")
+          ->check(CLI::IsMember(allLightTypeNames()));
+  args->axisOptions[1] = cmd->add_option("--environment", args->environment, "Environment mode (default: none)")
                              ->check(CLI::IsMember(allEnvironmentModeNames()));
   args->axisOptions[2] = cmd->add_option("--precision", args->request.precision, "fp32 or fp16")
                              ->check(CLI::IsMember(allPrecisionNames()));
@@ -158,6 +158,8 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
       "Also write every file the compile read, in Makefile syntax, with the package's manifest.json as target");
   return {cmd, [args, &g] {
             args->request.shaderlib = g.shaderlib;
+            args->request.lights = parseLightTypes(args->lights);                  // checked by --lights's IsMember
+            args->request.environment = *parseEnvironmentMode(args->environment);  // and --environment's
             return runCompile(*args, g);
           }};
 }

@@ -10,6 +10,7 @@
 #include "cli/cli_common.hpp"
 #include "permute/axes.hpp"
 #include "preview/preview.hpp"
+#include "preview/preview_scene.hpp"
 #include "write/package_writer.hpp"
 
 namespace mb::cli {
@@ -22,6 +23,7 @@ struct PreviewArgs {
   std::string environment = "studio";
   std::string precision = "fp32";           // options.precision, parsed once the command line is read
   std::string environmentMode = "ibl_lut";  // options.environmentMode, likewise
+  std::vector<std::string> lights{"dir"};   // options.lights, checked with the other options
   preview::PreviewOptions options;
   bool json = false;
 };
@@ -106,6 +108,7 @@ int runPreview(PreviewArgs& a, const GlobalOptions& g) {
                             "unknown environment '" + a.environment + "' (valid: " + list + ")",
                             didYouMean(a.environment, envs)}});
   }
+  a.options.lights = preview::parsePreviewLights(a.lights);  // E-PREVIEW-LIGHT
   preview::checkPreviewOptions(lib, pointers, a.options);
   std::vector<ProtectedPath> inputs = libraryInputs(lib);
   addMaterialInputs(inputs, materials);
@@ -195,8 +198,7 @@ Command addPreviewCommand(CLI::App& app, GlobalOptions& g) {
                   "With -o X.png: also write the difference heatmap to this .png file");
   cmd->add_option("--size", args->options.size, "Pixels per sphere tile edge (default 512, at most 8192)");
   cmd->add_option("--environment", args->environment, "Environment: studio (default) or sky");
-  cmd->add_option("--lights", args->options.lights,
-                  "Light types, one light each: dir,point,spot,sphere,tube (default: dir)")
+  cmd->add_option("--lights", args->lights, "Light types, one light each: dir,point,spot,sphere,tube (default: dir)")
       ->delimiter(',');
   cmd->add_option("--environment-mode", args->environmentMode, "The permutation's environment mode (default: ibl_lut)")
       ->check(CLI::IsMember(allEnvironmentModeNames()));

@@ -42,8 +42,8 @@ std::vector<report::MaterialPermutations> materialPermutations(const std::vector
   std::vector<report::MaterialPermutations> out;
   for (const auto& m : materials) {
     report::MaterialPermutations mp{&m, {}, {}};
-    mp.permutations =
-        permutationsToValidate(m, lib, a.lights, parseEnvironmentModes(a.environments), Precision::Fp32, mp.notes);
+    mp.permutations = permutationsToValidate(m, lib, parseLightTypes(a.lights), parseEnvironmentModes(a.environments),
+                                             Precision::Fp32, mp.notes);
     out.push_back(std::move(mp));
   }
   return out;
@@ -165,7 +165,7 @@ Command addReportCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--lights", a->lights,
                   "Light types shaded together in each material permutation (default: all the model shades)")
       ->delimiter(',')
-      ->check(CLI::IsMember(allLightTypes()))
+      ->check(CLI::IsMember(allLightTypeNames()))
       ->excludes(scene);
   cmd->add_option("--environment", a->environments,
                   "Environment modes, one permutation each (default: all the model supports)")

@@ -65,7 +65,8 @@ int runValidate(const ValidateArgs& a, const GlobalOptions& g) {
   std::vector<Permutation> perms;
   for (const auto& m : materials) {
     std::vector<std::string> notes;
-    for (auto& perm : permutationsToValidate(m, lib, a.lights, parseEnvironmentModes(a.environments), axis, notes))
+    for (auto& perm :
+         permutationsToValidate(m, lib, parseLightTypes(a.lights), parseEnvironmentModes(a.environments), axis, notes))
       perms.push_back(std::move(perm));
     if (!a.quiet)
       for (const auto& n : notes) std::fprintf(stderr, "%s: note: %s\n", m.sourceFile.c_str(), n.c_str());
@@ -154,7 +155,7 @@ Command addValidateCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_option("--lights", args->lights,
                   "Light types shaded together in each material permutation (default: all the model shades)")
       ->delimiter(',')
-      ->check(CLI::IsMember(allLightTypes()));
+      ->check(CLI::IsMember(allLightTypeNames()));
   cmd->add_option("--environment", args->environments,
                   "Environment modes to validate, one permutation each (default: all the model supports)")
       ->delimiter(',')

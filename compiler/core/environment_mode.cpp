@@ -22,9 +22,7 @@ std::vector<EnvironmentMode> parseEnvironmentModes(const std::vector<std::string
   return environmentModeAxis().parseAll(names, "environment mode");
 }
 std::vector<std::string> environmentModeNames(const std::vector<EnvironmentMode>& modes) {
-  std::vector<std::string> out;
-  for (EnvironmentMode e : modes) out.push_back(environmentModeName(e));
-  return out;
+  return axis().namesOf(modes);
 }
 
 bool isIbl(EnvironmentMode e) { return e == EnvironmentMode::IblLut || e == EnvironmentMode::IblAnalytic; }

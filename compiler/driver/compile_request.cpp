@@ -21,10 +21,18 @@ void checkHeaderName(const std::string& name, const SourceLocation& at) {
 }
 
 nlohmann::json compileRequestJson(const CompileRequest& r) {
-  return {{"materials", r.materials},       {"scene", r.scene},         {"lights", r.lights},
-          {"environment", r.environment},   {"precision", r.precision}, {"quality", r.quality},
-          {"targets", r.targets},           {"header", r.headerName},   {"namespace", r.cppNamespace},
-          {"optimization", r.optimization}, {"stages", r.stages},       {"shaderlib", r.shaderlib}};
+  return {{"materials", r.materials},
+          {"scene", r.scene},
+          {"lights", lightTypeNames(r.lights)},
+          {"environment", environmentModeName(r.environment)},
+          {"precision", r.precision},
+          {"quality", r.quality},
+          {"targets", r.targets},
+          {"header", r.headerName},
+          {"namespace", r.cppNamespace},
+          {"optimization", r.optimization},
+          {"stages", r.stages},
+          {"shaderlib", r.shaderlib}};
 }
 
 void compileRequestFromJson(const nlohmann::json& c, const std::string& file, CompileRequest& r) {
@@ -35,11 +43,13 @@ void compileRequestFromJson(const nlohmann::json& c, const std::string& file, Co
                              "shard.json's 'command' is not readable: " + why,
                              "compile the shards again with this matbricks"}});
   };
+  std::vector<std::string> lights;
+  std::string environment;
   try {
     r.materials = c.at("materials").get<std::vector<std::string>>();
     r.scene = c.at("scene").get<std::string>();
-    r.lights = c.at("lights").get<std::vector<std::string>>();
-    r.environment = c.at("environment").get<std::string>();
+    lights = c.at("lights").get<std::vector<std::string>>();
+    environment = c.at("environment").get<std::string>();
     r.precision = c.at("precision").get<std::string>();
     r.quality = c.at("quality").get<std::string>();
     r.targets = c.at("targets").get<std::vector<std::string>>();
@@ -61,20 +71,24 @@ void compileRequestFromJson(const nlohmann::json& c, const std::string& file, Co
   for (const auto& t : r.targets)
     if (!parseTarget(t)) throw notReadable("'targets': '" + t + "' is not a target");
   // An axis value the emitter (precision), the quality selection (quality) or the validity
-  // rules (environment) refused before the axes were types: the same code, now where the
+  // rules (lights, environment) refused before the axes were types: the same code, now where the
   // shard is read.
   auto unknownAxisValue = [&](const std::string& code, const std::string& what, const std::string& value,
                               const std::vector<std::string>& names) {
     return DiagnosticError(
         {{Severity::Error, code, {file, 0, 0}, "unknown " + what + " '" + value + "'", "one of " + quotedList(names)}});
   };
-  if (!parseEnvironmentMode(r.environment))
-    throw unknownAxisValue("E-PERMUTATION-INVALID", "environment mode", r.environment, allEnvironmentModeNames());
+  for (const auto& l : lights)
+    if (!parseLightType(l)) throw unknownAxisValue("E-PERMUTATION-INVALID", "light type", l, allLightTypeNames());
+  if (!parseEnvironmentMode(environment))
+    throw unknownAxisValue("E-PERMUTATION-INVALID", "environment mode", environment, allEnvironmentModeNames());
   if (!parsePrecision(r.precision))
     throw unknownAxisValue("E-PRECISION", "precision", r.precision, allPrecisionNames());
   if (!parseQuality(r.quality))
     throw unknownAxisValue("E-PERMUTATION-INVALID", "quality level", r.quality, allQualityNames());
   checkHeaderName(r.headerName, {file, 0, 0});
+  r.lights = parseLightTypes(lights);
+  r.environment = *parseEnvironmentMode(environment);
 }
 
 }  // namespace mb

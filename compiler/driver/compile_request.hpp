@@ -8,19 +8,22 @@
 #include <nlohmann/json.hpp>
 
 #include "core/diagnostics.hpp"
+#include "core/environment_mode.hpp"
+#include "core/light_type.hpp"
 
 namespace mb {
 
-// Names, not parsed values: a request is what was asked, and runCompile() parses each name
-// once (docs/cli.md `compile` gives each field's meaning and default).
+// What was asked (docs/cli.md `compile` gives each field's meaning and default). The light types
+// and the environment mode are values, parsed where they enter (the command line, a shard's
+// shard.json); the other axes, targets and levels are names that runCompile() parses once.
 struct CompileRequest {
   std::vector<std::string> materials;  // material files; or
   std::string scene;                   // a scene file (exactly one of the two)
   std::string out;                     // package (or shard) directory; empty: build only (explain)
   bool quiet = false;
   bool explain = false;
-  std::vector<std::string> lights{"dir"};
-  std::string environment = "none";
+  std::vector<LightType> lights{LightType::Dir};
+  EnvironmentMode environment = EnvironmentMode::None;
   std::string precision = "fp32";
   std::string quality = "high";
   std::vector<std::string> targets;  // empty: the scene's, else spirv

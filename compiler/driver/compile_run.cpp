@@ -12,7 +12,6 @@
 #include "core/package_stages.hpp"
 #include "core/vocabulary.hpp"
 #include "driver/command_inputs.hpp"
-#include "library/light_order.hpp"
 #include "load/scene_desc.hpp"
 #include "permute/scene_plan.hpp"
 #include "write/depfile.hpp"
@@ -136,7 +135,7 @@ CompileOutcome runCompile(const CompileRequest& r, const CompileHooks& hooks, co
     warn(warnings);
     AxisPoint axes;
     axes.lights = canonicalLights(r.lights);
-    axes.environment = parsedAxis(parseEnvironmentMode(r.environment), "--environment", r.environment);
+    axes.environment = r.environment;
     axes.precision = parsedAxis(parsePrecision(r.precision), "--precision", r.precision);
     axes.quality = parsedAxis(parseQuality(r.quality), "--quality", r.quality);
     plan = planMaterials(materials, axes, lib);

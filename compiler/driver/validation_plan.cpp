@@ -2,13 +2,12 @@
 
 #include <algorithm>
 
-#include "library/light_order.hpp"
 #include "permute/axes.hpp"
 
 namespace mb {
 
 std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const ShaderLibrary& lib,
-                                                const std::vector<std::string>& lights,
+                                                const std::vector<LightType>& lights,
                                                 const std::vector<EnvironmentMode>& environments, Precision precision,
                                                 std::vector<std::string>& notes) {
   std::vector<Permutation> out;

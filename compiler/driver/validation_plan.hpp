@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/environment_mode.hpp"
+#include "core/light_type.hpp"
 #include "core/precision.hpp"
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
@@ -16,7 +17,7 @@ namespace mb {
 // of the model's brick rules is skipped with a note when the user did not ask for it (the
 // material may be meant for other modes); asked for, it is an error when the probe is built.
 std::vector<Permutation> permutationsToValidate(const MaterialDesc& m, const ShaderLibrary& lib,
-                                                const std::vector<std::string>& lights,
+                                                const std::vector<LightType>& lights,
                                                 const std::vector<EnvironmentMode>& environments, Precision precision,
                                                 std::vector<std::string>& notes);
 

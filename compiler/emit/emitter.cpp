@@ -7,6 +7,7 @@
 #include "core/descriptor_bindings.hpp"
 #include "emit/fp16_rewrite.hpp"
 #include "emit/glsl_writer.hpp"
+#include "emit/light_contract.hpp"
 #include "emit/probe_scene.hpp"
 #include "permute/axes.hpp"
 
@@ -240,7 +241,7 @@ ProbeScene probeSceneOf(const Permutation& perm, bool illuminanceInput) {
   scene.lights = perm.lights;
   scene.environment = perm.environment;
   scene.illuminanceInput = illuminanceInput;
-  bool slice = perm.lights == std::vector<std::string>{"dir"} && perm.environment == EnvironmentMode::None;
+  bool slice = perm.lights == std::vector<LightType>{LightType::Dir} && perm.environment == EnvironmentMode::None;
   scene.fullFrame = !slice || !perm.material->features.empty();
   return scene;
 }
@@ -292,7 +293,7 @@ void checkPermutation(const ShadingModel& model, const Permutation& perm) {
 }
 
 void writeDefines(GlslWriter& w, const Permutation& perm) {
-  for (const auto& t : perm.lights) w.line("#define MB_LIGHT_" + upper(t) + " 1");
+  for (LightType t : perm.lights) w.line("#define MB_LIGHT_" + upper(lightTypeName(t)) + " 1");
   w.line("#define MB_ENV_" + upper(environmentModeName(perm.environment)) + " 1");
   if (isIbl(perm.environment)) w.line("#define MB_ENV_IBL 1");
   for (const auto& f : perm.material->features) w.line("#define MB_FEATURE_" + upper(f) + " 1");
@@ -344,22 +345,14 @@ void writeApi(GlslWriter& w, const Permutation& perm, ShaderPrecision precision)
   line("}");
   line("ShadingPixel preparePixel(MaterialInputs m, ShadingFrame f) { return mb_prepare(m, f); }");
   line("vec3 emittedRadiance(ShadingPixel px) { return mb_emission(px); }");
-  static const std::pair<const char*, const char*> kLights[] = {{"dir", "DirectionalLight"},
-                                                                {"point", "PointLight"},
-                                                                {"spot", "SpotLight"},
-                                                                {"sphere", "SphereLight"},
-                                                                {"tube", "TubeLight"}};
-  for (const auto& [type, name] : kLights) {
-    if (!perm.hasLight(type)) continue;
-    std::string fn = std::string("shade") + (std::string(type) == "dir" ? "Directional" : "") + name;
-    if (std::string(type) == "dir") fn = "shadeDirectionalLight";
-    line(std::string("vec3 ") + fn + "(ShadingPixel px, ShadingFrame f, " + name + " light) { return mb_shade_" + type +
-         "(px, f, light); }");
-  }
+  for (LightType t : allLightTypes())
+    if (perm.hasLight(t))
+      line("vec3 " + lightEntryPoint(t) + "(ShadingPixel px, ShadingFrame f, " + lightStructName(t) +
+           " light) { return mb_shade_" + lightTypeName(t) + "(px, f, light); }");
   if (perm.environment != EnvironmentMode::None)
     line(
         "vec3 shadeEnvironment(ShadingPixel px, ShadingFrame f, Environment env) { return mb_shade_environment(px, f, env); }");
-  if (!perm.hasLight("dir")) return;
+  if (!perm.hasLight(LightType::Dir)) return;
   line("// One directional light of the given illuminance (the vertical slice's entry point); the");
   line("// tangent is an arbitrary one around n and the geometric normal is n.");
   line("vec3 evaluateMaterial(vec3 n, vec3 v, vec3 l, vec3 illuminance" + (params.empty() ? "" : ", " + params) +

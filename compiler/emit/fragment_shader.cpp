@@ -15,36 +15,35 @@
 #include "emit/fp16_rewrite.hpp"
 #include "emit/fragment_textures.hpp"
 #include "emit/glsl_writer.hpp"
+#include "emit/light_contract.hpp"
 
 namespace mb {
 namespace {
 
+// Where MbFrameBlock (shaderlib/common/engine_frame.glsl) keeps one light type's records.
 struct LightKind {
-  const char* type;      // permutation light type
-  const char* array;     // MbFrameBlock member
-  const char* count;     // its count in MbFrameBlock
-  const char* function;  // GLSL contract entry point
+  LightType type;
+  const char* array;  // MbFrameBlock member
+  const char* count;  // its count in MbFrameBlock
 };
 
 constexpr LightKind kLightKinds[] = {
-    {"dir", "dirLights", "lightCounts.x", "shadeDirectionalLight"},
-    {"point", "pointLights", "lightCounts.y", "shadePointLight"},
-    {"spot", "spotLights", "lightCounts.z", "shadeSpotLight"},
-    {"sphere", "sphereLights", "lightCounts.w", "shadeSphereLight"},
-    {"tube", "tubeLights", "lightCounts2.x", "shadeTubeLight"},
+    {LightType::Dir, "dirLights", "lightCounts.x"},    {LightType::Point, "pointLights", "lightCounts.y"},
+    {LightType::Spot, "spotLights", "lightCounts.z"},  {LightType::Sphere, "sphereLights", "lightCounts.w"},
+    {LightType::Tube, "tubeLights", "lightCounts2.x"},
 };
 
 // The contract struct of light `L` (an MbDirectionalLightGpu or MbLocalLightGpu expression)
 // relative to the shaded point (engine_frame.glsl's record fields; lights.glsl's structs).
-std::string lightStruct(const std::string& type, const std::string& L) {
+std::string lightStruct(LightType type, const std::string& L) {
   const std::string rel = "vec3(" + L + ".position.xyz - mbWorldPosition)";
   const std::string intensity = "vec3(" + L + ".intensity.rgb), float(" + L + ".intensity.w)";
-  if (type == "dir") return "DirectionalLight(vec3(" + L + ".direction.xyz), vec3(" + L + ".illuminance.rgb))";
-  if (type == "point") return "PointLight(" + rel + ", " + intensity + ")";
-  if (type == "spot")
+  if (type == LightType::Dir) return "DirectionalLight(vec3(" + L + ".direction.xyz), vec3(" + L + ".illuminance.rgb))";
+  if (type == LightType::Point) return "PointLight(" + rel + ", " + intensity + ")";
+  if (type == LightType::Spot)
     return "SpotLight(" + rel + ", vec3(" + L + ".axis.xyz), " + intensity + ", float(" + L + ".axis.w), float(" + L +
            ".params.x))";
-  if (type == "sphere") return "SphereLight(" + rel + ", float(" + L + ".position.w), " + intensity + ")";
+  if (type == LightType::Sphere) return "SphereLight(" + rel + ", float(" + L + ".position.w), " + intensity + ")";
   return "TubeLight(" + rel + ", vec3(" + L + ".axis.xyz - mbWorldPosition), float(" + L + ".position.w), " +
          intensity + ")";
 }
@@ -184,7 +183,7 @@ class FragmentWriter {
     for (const auto& k : kLightKinds) {
       if (!perm_.hasLight(k.type)) continue;
       shading(std::string("    for (uint i = 0u; i < min(mbFrame.") + k.count + ", uint(MB_MAX_LIGHTS)); ++i)");
-      shading(std::string("        mbRadiance += ") + k.function + "(px, f, " +
+      shading("        mbRadiance += " + lightEntryPoint(k.type) + "(px, f, " +
               lightStruct(k.type, std::string("mbFrame.") + k.array + "[i]") + ");");
     }
     if (perm_.environment != EnvironmentMode::None) {

@@ -14,19 +14,19 @@ constexpr Range kDistance{0.25, 20.0};
 constexpr Range kFalloffRadius{0.5, 40.0};
 constexpr Range kPrefiltered{0.0, 4.0};
 
-void lightInputs(const std::string& type, std::vector<ProbeSceneInput>& out) {
-  auto add = [&](const std::string& name, ValueType t, Range r) { out.push_back({type + name, t, r}); };
-  if (type == "dir") return;  // l and the optional illuminance
+void lightInputs(LightType type, std::vector<ProbeSceneInput>& out) {
+  auto add = [&](const std::string& name, ValueType t, Range r) { out.push_back({lightTypeName(type) + name, t, r}); };
+  if (type == LightType::Dir) return;  // l and the optional illuminance
   add("Intensity", ValueType::Vec3, kIntensity);
   add("Distance", ValueType::Float, kDistance);
   add("FalloffRadius", ValueType::Float, kFalloffRadius);
-  if (type == "spot") {
+  if (type == LightType::Spot) {
     add("AxisAngle", ValueType::Float, {0.0, 1.5});  // between the axis and -l, radians
     add("CosOuter", ValueType::Float, {0.2, 0.98});
     add("InnerFraction", ValueType::Float, {0.0, 1.0});  // cosInner = cosOuter + f (1 - cosOuter)
-  } else if (type == "sphere") {
+  } else if (type == LightType::Sphere) {
     add("RadiusFraction", ValueType::Float, {0.0, 0.9});  // radius / distance = sin(alpha)
-  } else if (type == "tube") {
+  } else if (type == LightType::Tube) {
     add("AxisAngle", ValueType::Float, {0.0, std::numbers::pi});  // around l
     add("AxisTilt", ValueType::Float, {-1.0, 1.0});               // towards l
     add("HalfLengthFraction", ValueType::Float, {0.0, 2.0});      // of the distance
@@ -36,18 +36,16 @@ void lightInputs(const std::string& type, std::vector<ProbeSceneInput>& out) {
 
 }  // namespace
 
-bool ProbeScene::has(const std::string& light) const {
-  return std::find(lights.begin(), lights.end(), light) != lights.end();
-}
+bool ProbeScene::has(LightType light) const { return std::find(lights.begin(), lights.end(), light) != lights.end(); }
 
 std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene) {
   std::vector<ProbeSceneInput> out;
-  if (scene.has("dir") && scene.illuminanceInput) out.push_back({"illuminance", ValueType::Vec3, {0.0, 1.0}});
+  if (scene.has(LightType::Dir) && scene.illuminanceInput) out.push_back({"illuminance", ValueType::Vec3, {0.0, 1.0}});
   if (scene.fullFrame) {
     out.push_back({"ngTilt", ValueType::Float, {0.0, 0.5}});
     out.push_back({"tangentAngle", ValueType::Float, {0.0, std::numbers::pi}});
   }
-  for (const auto& type : scene.lights) lightInputs(type, out);
+  for (LightType type : scene.lights) lightInputs(type, out);
   if (scene.environment != EnvironmentMode::None) {
     // Radiance SH of a plausible environment: a positive mean and weaker higher bands.
     out.push_back({"sh0", ValueType::Vec3, {0.0, 2.0}});
@@ -66,7 +64,8 @@ std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene) {
 
 double probeSceneRadianceBound(const ProbeScene& scene) {
   double bound = 0;
-  for (const auto& type : scene.lights) bound += type == "dir" ? 1.0 : kIntensity.hi / (kDistance.lo * kDistance.lo);
+  for (LightType type : scene.lights)
+    bound += type == LightType::Dir ? 1.0 : kIntensity.hi / (kDistance.lo * kDistance.lo);
   if (scene.environment != EnvironmentMode::None) {
     // |E(n)| <= pi (|L00| + 2/3 sum |L1m| + 1/4 sum |L2m|) * sqrt(4 pi)-ish; 4 pi covers it.
     bound += 4.0 * std::numbers::pi * (2.0 + 8 * 0.5);
@@ -78,7 +77,7 @@ double probeSceneRadianceBound(const ProbeScene& scene) {
 
 std::vector<std::string> probeSceneGlobals(const ProbeScene& scene) {
   std::vector<std::string> g;
-  if (scene.fullFrame || scene.has("spot") || scene.has("tube")) {
+  if (scene.fullFrame || scene.has(LightType::Spot) || scene.has(LightType::Tube)) {
     // The frame's tangent and the spot and tube axes turn by an input angle, and the reference
     // reads that angle exactly (probe_scene_reference.cpp). GLSL sin and cos are bounded by the
     // Vulkan spec only to 2^-11 absolute ("Precision of GLSL.std.450 Instructions"); SwiftShader
@@ -143,15 +142,15 @@ std::vector<std::string> probeSceneShading(const ProbeScene& scene) {
   s.push_back("vec3 lu = normalize(p_l);");
   s.push_back("vec3 lt, lb;");
   s.push_back("mb_orthonormal_basis(lu, lt, lb);");
-  for (const auto& type : scene.lights) {
-    if (type == "dir") {
+  for (LightType type : scene.lights) {
+    if (type == LightType::Dir) {
       s.push_back(std::string("r += shadeDirectionalLight(px, f, DirectionalLight(lu, ") +
                   (scene.illuminanceInput ? "p_illuminance" : "vec3(1.0)") + "));");
-    } else if (type == "point") {
+    } else if (type == LightType::Point) {
       s.push_back(
           "r += shadePointLight(px, f, PointLight(lu * p_pointDistance, p_pointIntensity, "
           "p_pointFalloffRadius));");
-    } else if (type == "spot") {
+    } else if (type == LightType::Spot) {
       s.push_back("{");
       s.push_back("    float sinA, cosA;");
       s.push_back("    mb_probe_sincos(p_spotAxisAngle, sinA, cosA);");
@@ -161,11 +160,11 @@ std::vector<std::string> probeSceneShading(const ProbeScene& scene) {
           "    r += shadeSpotLight(px, f, SpotLight(lu * p_spotDistance, axis, p_spotIntensity, "
           "p_spotFalloffRadius, p_spotCosOuter, cosInner));");
       s.push_back("}");
-    } else if (type == "sphere") {
+    } else if (type == LightType::Sphere) {
       s.push_back(
           "r += shadeSphereLight(px, f, SphereLight(lu * p_sphereDistance, p_sphereRadiusFraction * "
           "p_sphereDistance, p_sphereIntensity, p_sphereFalloffRadius));");
-    } else if (type == "tube") {
+    } else if (type == LightType::Tube) {
       s.push_back("{");
       s.push_back("    float sinA, cosA;");
       s.push_back("    mb_probe_sincos(p_tubeAxisAngle, sinA, cosA);");

@@ -18,13 +18,13 @@ struct ProbeSceneInput {
 };
 
 struct ProbeScene {
-  std::vector<std::string> lights;  // light types present
+  std::vector<LightType> lights;  // light types present
   EnvironmentMode environment = EnvironmentMode::None;
   bool illuminanceInput = false;  // directional light's illuminance from the record
   // Geometric-normal tilt and tangent angle as inputs (else ng = n and t = basis tangent):
   // every permutation except the vertical slice's single directional light without features.
   bool fullFrame = false;
-  bool has(const std::string& light) const;
+  bool has(LightType light) const;
 };
 
 // Inputs after n, v, l, in record order.

@@ -31,7 +31,7 @@ void LibraryLoader::readModel(const std::string& name, const SourceLocation& lis
     for (size_t i = 0; i < f.find("/parts")->size(); ++i)
       if (auto part = readGlsl(f, JsonFields::element("/parts", i), "models")) m.parts.push_back(*part);
   m.requiredUnits = requiredUnits(f, "/requires");
-  m.lights = namesFrom(f, "/lights", allLightTypes(), "light type");
+  m.lights = parseLightTypes(namesFrom(f, "/lights", allLightTypeNames(), "light type"));
   m.environments = parseEnvironmentModes(namesFrom(f, "/environments", allEnvironmentModeNames(), "environment mode"));
   if (f.find("/features")) m.features = readFeatures(f);
   m.roles = readRoles(f, m);
@@ -196,7 +196,8 @@ std::vector<ModelRole> LibraryLoader::readRoles(JsonFields& f, const ShadingMode
     auto slot = f.string(ptr + "/slot");
     r.description = f.string(ptr + "/description").value_or("");
     r.feature = featureRef(f, ptr + "/feature", m);
-    if (f.find(ptr + "/lights")) r.lights = namesFrom(f, ptr + "/lights", m.lights, "light type");
+    if (f.find(ptr + "/lights"))
+      r.lights = parseLightTypes(namesFrom(f, ptr + "/lights", lightTypeNames(m.lights), "light type"));
     if (f.find(ptr + "/environments"))
       r.environments = parseEnvironmentModes(
           namesFrom(f, ptr + "/environments", environmentModeNames(m.environments), "environment mode"));

@@ -91,11 +91,6 @@ std::vector<std::string> ShadingModel::coreRoles() const {
   return out;
 }
 
-const std::vector<std::string>& allLightTypes() {
-  static const std::vector<std::string> types{"dir", "point", "spot", "sphere", "tube"};
-  return types;
-}
-
 const Unit* ShaderLibrary::findUnit(const std::string& id) const { return findBy(units_, id, &Unit::id); }
 
 std::vector<std::string> ShaderLibrary::brickIds() const {

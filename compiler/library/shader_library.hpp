@@ -8,6 +8,7 @@
 
 #include "core/diagnostics.hpp"
 #include "core/environment_mode.hpp"
+#include "core/light_type.hpp"
 #include "library/value_type.hpp"
 
 namespace mb {
@@ -141,7 +142,7 @@ struct ModelRole {
   std::string slot;
   std::string defaultBrick;                   // empty: every material must choose
   std::string feature;                        // non-empty: only with this feature enabled
-  std::vector<std::string> lights;            // non-empty: only with one of these light types
+  std::vector<LightType> lights;              // non-empty: only with one of these light types
   std::vector<EnvironmentMode> environments;  // non-empty: only in one of these modes
   std::string description;
 };
@@ -168,7 +169,7 @@ struct ShadingModel {
   std::string skeleton;                       // GLSL file relative to the shaderlib root
   std::vector<std::string> parts;             // more skeleton files, included after it, in order
   std::vector<std::string> requiredUnits;     // units (manifest key "requires")
-  std::vector<std::string> lights;            // light types the skeleton shades
+  std::vector<LightType> lights;              // light types the skeleton shades, in manifest order
   std::vector<EnvironmentMode> environments;  // environment modes it supports, in manifest order
   std::vector<ModelFeature> features;
   std::vector<ModelRole> roles;
@@ -199,10 +200,6 @@ struct GltfDefaults {
   // Feature -> bound when a material enables it (its glTF extension is present).
   std::map<std::string, std::vector<GltfBinding>> features;
 };
-
-// Light types every model draws from (docs/models.md); environment modes are
-// core/environment_mode.hpp's.
-const std::vector<std::string>& allLightTypes();  // dir, point, spot, sphere, tube
 
 class ShaderLibrary {
  public:

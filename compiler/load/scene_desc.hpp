@@ -9,6 +9,7 @@
 
 #include "core/diagnostics.hpp"
 #include "core/environment_mode.hpp"
+#include "core/light_type.hpp"
 #include "core/optimization_level.hpp"
 #include "core/precision.hpp"
 #include "core/quality.hpp"
@@ -19,7 +20,7 @@
 namespace mb {
 
 struct SceneLight {
-  std::string type;  // one of allLightTypes()
+  LightType type = LightType::Dir;
   std::string name;  // as written, may be empty
   SourceLocation where;
 };
@@ -53,7 +54,7 @@ struct SceneDesc {
   SourceLocation lightsWhere, environmentWhere, precisionWhere, qualityWhere, targetsWhere;
 
   // Light types present, canonicalLights() order.
-  std::vector<std::string> lightTypes() const;
+  std::vector<LightType> lightTypes() const;
 };
 
 // Picks the form by extension: .json (scene JSON, which may pull in a glTF file) or

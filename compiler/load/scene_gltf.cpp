@@ -5,6 +5,7 @@
 #include "load/scene_gltf.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 #include "core/json_fields.hpp"
@@ -100,10 +101,11 @@ class GltfSceneWalker {
 };
 
 // KHR_lights_punctual types -> ours (the extension has exactly these three).
-std::string lightType(const std::string& t) {
-  if (t == "directional") return "dir";
-  if (t == "point" || t == "spot") return t;
-  return {};
+std::optional<LightType> lightType(const std::string& t) {
+  if (t == "directional") return LightType::Dir;
+  if (t == "point") return LightType::Point;
+  if (t == "spot") return LightType::Spot;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -123,15 +125,15 @@ GltfSceneContents readGltfScene(const std::string& path, const ShaderLibrary& li
       continue;
     auto type = f.string(ptr + "/type");
     if (!type) continue;
-    std::string ours = lightType(*type);
-    if (ours.empty()) {
+    std::optional<LightType> ours = lightType(*type);
+    if (!ours) {
       f.error(
           "E-SCENE-LIGHT-TYPE", f.valueAt(ptr + "/type"),
           "unknown KHR_lights_punctual light type '" + clipped(*type) + "': expected 'directional', 'point' or 'spot'",
           suggest(*type, {"directional", "point", "spot"}));
       continue;
     }
-    out.lights.push_back({ours, f.string(ptr + "/name").value_or(""), f.valueAt(ptr + "/type")});
+    out.lights.push_back({*ours, f.string(ptr + "/name").value_or(""), f.valueAt(ptr + "/type")});
   }
   for (const auto& where : walker.defaultMaterialUses)
     out.warnings.push_back({Severity::Warning, "W-SCENE-GLTF-DEFAULT-MATERIAL", where,

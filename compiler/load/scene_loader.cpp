@@ -8,7 +8,6 @@
 #include "core/json_fields.hpp"
 #include "core/target.hpp"
 #include "core/vocabulary.hpp"
-#include "library/light_order.hpp"
 #include "load/material_resolve.hpp"
 #include "load/project_files.hpp"
 #include "load/scene_desc.hpp"
@@ -105,8 +104,8 @@ class SceneJsonReader {
       auto type = f_.string(ptr + "/type");
       auto name = f_.string(ptr + "/name");
       if (!type) continue;
-      if (!isOneOf(*type, allLightTypes(), "light type", ptr + "/type", "E-SCENE-LIGHT-TYPE")) continue;
-      scene_.lights.push_back({*type, name.value_or(""), f_.valueAt(ptr + "/type")});
+      if (!isOneOf(*type, allLightTypeNames(), "light type", ptr + "/type", "E-SCENE-LIGHT-TYPE")) continue;
+      scene_.lights.push_back({*parseLightType(*type), name.value_or(""), f_.valueAt(ptr + "/type")});
     }
   }
 
@@ -264,8 +263,8 @@ SceneDesc loadGltfSceneFile(const std::string& path, const ShaderLibrary& lib) {
 
 }  // namespace
 
-std::vector<std::string> SceneDesc::lightTypes() const {
-  std::vector<std::string> types;
+std::vector<LightType> SceneDesc::lightTypes() const {
+  std::vector<LightType> types;
   for (const auto& l : lights) types.push_back(l.type);
   return canonicalLights(types);
 }

@@ -34,9 +34,10 @@ std::optional<std::string> invalidReason(const ShadingModel& model, const AxisPo
   for (const auto& f : point.features)
     if (!model.findFeature(f))
       return m + " has no feature '" + f + "' (it has " + quotedList(featureNames(model)) + ")";
-  for (const auto& t : point.lights)
+  for (LightType t : point.lights)
     if (!contains(model.lights, t))
-      return m + " does not shade '" + t + "' lights (it shades " + quotedList(model.lights) + ")";
+      return m + " does not shade '" + lightTypeName(t) + "' lights (it shades " +
+             quotedList(lightTypeNames(model.lights)) + ")";
   if (!contains(model.environments, point.environment))
     return m + " has no environment mode '" + environmentModeName(point.environment) + "' (it has " +
            quotedList(environmentModeNames(model.environments)) + ")";
@@ -63,7 +64,7 @@ std::optional<std::string> invalidReason(const ShadingModel& model, const Permut
 bool roleActive(const ModelRole& role, const Permutation& perm) {
   if (!role.feature.empty() && !perm.material->has(role.feature)) return false;
   if (!role.lights.empty() &&
-      std::none_of(role.lights.begin(), role.lights.end(), [&](const std::string& t) { return perm.hasLight(t); }))
+      std::none_of(role.lights.begin(), role.lights.end(), [&](LightType t) { return perm.hasLight(t); }))
     return false;
   if (!role.environments.empty() && !contains(role.environments, perm.environment)) return false;
   return true;
@@ -124,7 +125,7 @@ size_t validCombinationCount(const ShadingModel& model) {
   size_t features = 0;
   for (const auto& f : model.features) features += validWith([&](AxisPoint& p) { p.features = {f.name}; });
   size_t lights = 0;
-  for (const auto& t : allLightTypes()) lights += validWith([&](AxisPoint& p) { p.lights = {t}; });
+  for (LightType t : allLightTypes()) lights += validWith([&](AxisPoint& p) { p.lights = {t}; });
   size_t envs = 0;
   for (EnvironmentMode e : allEnvironmentModes()) envs += validWith([&](AxisPoint& p) { p.environment = e; });
   size_t precisions = 0;

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/vocabulary.hpp"  // the axes' values: EnvironmentMode, Precision, Quality
+#include "core/vocabulary.hpp"  // the axes' values: EnvironmentMode, LightType, Precision, Quality
 #include "library/shader_library.hpp"
 #include "permute/permutation.hpp"
 
@@ -16,7 +16,7 @@ namespace mb {
 // One point of the axis space of one model, before it is bound to a material.
 struct AxisPoint {
   std::vector<std::string> features;  // enabled, model order
-  std::vector<std::string> lights;    // canonicalLights() order; may be empty
+  std::vector<LightType> lights;      // canonicalLights() order; may be empty
   EnvironmentMode environment = EnvironmentMode::None;
   Precision precision = Precision::Fp32;
   Quality quality = Quality::High;

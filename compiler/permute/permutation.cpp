@@ -6,11 +6,11 @@ namespace mb {
 
 std::string Permutation::lightsKey() const {
   std::string s;
-  for (const auto& t : lights) s += (s.empty() ? "" : "+") + t;
+  for (LightType t : lights) s += (s.empty() ? "" : "+") + lightTypeName(t);
   return s.empty() ? "nolights" : s;
 }
 
-bool Permutation::hasLight(const std::string& type) const {
+bool Permutation::hasLight(LightType type) const {
   return std::find(lights.begin(), lights.end(), type) != lights.end();
 }
 

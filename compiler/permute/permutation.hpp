@@ -8,7 +8,7 @@
 #include "core/environment_mode.hpp"
 #include "core/precision.hpp"
 #include "core/quality.hpp"
-#include "library/light_order.hpp"  // canonicalLights(): the order of `lights`
+#include "core/light_type.hpp"  // canonicalLights(): the order of `lights`
 #include "load/material_desc.hpp"
 
 namespace mb {
@@ -17,7 +17,7 @@ struct Permutation {
   // The material as this permutation shades it: after quality selection and feature folding
   // (permute/specialize.hpp), `material` is the specialized copy, not the loaded one.
   const MaterialDesc* material = nullptr;
-  std::vector<std::string> lights{"dir"};  // light types, in allLightTypes() order
+  std::vector<LightType> lights{LightType::Dir};  // in canonicalLights() order
   EnvironmentMode environment = EnvironmentMode::None;
   Precision precision = Precision::Fp32;
   Quality quality = Quality::High;
@@ -30,7 +30,7 @@ struct Permutation {
   // ".without-<feature>" per folded feature, so that keys of earlier axes never change.
   std::string key() const;
   std::string lightsKey() const;
-  bool hasLight(const std::string& type) const;
+  bool hasLight(LightType type) const;
 };
 
 // The permutations a list of materials needs by default: a directional light, no

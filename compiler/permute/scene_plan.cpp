@@ -46,7 +46,8 @@ void reportInvalid(const SceneDesc& scene, const SceneMaterial& sm, const Shadin
   for (const auto& l : scene.lights) {
     AxisPoint p = base;
     p.lights = {l.type};
-    named |= report(p, "light " + (l.name.empty() ? "" : "'" + l.name + "' ") + "(" + l.type + ")", l.where);
+    named |=
+        report(p, "light " + (l.name.empty() ? "" : "'" + l.name + "' ") + "(" + lightTypeName(l.type) + ")", l.where);
   }
   AxisPoint p = base;
   p.environment = point.environment;
@@ -104,7 +105,7 @@ void addPossible(ScenePlan& plan, const ShadingModel& model, size_t& largest) {
 ScenePlan planScene(const SceneDesc& scene, const ShaderLibrary& lib) {
   ScenePlan plan;
   DiagnosticSink sink;
-  const std::vector<std::string> lights = scene.lightTypes();
+  const std::vector<LightType> lights = scene.lightTypes();
   size_t largest = 0;
   for (const auto& sm : scene.materials) {
     const ShadingModel& model = modelOf(sm.material, lib);

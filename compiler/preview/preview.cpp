@@ -268,7 +268,6 @@ void checkPreviewOptions(const ShaderLibrary& lib, const std::vector<const Mater
   if (o.size == 0 || o.size > kMaxPreviewSize)
     optionError("E-PREVIEW-SIZE",
                 "--size " + std::to_string(o.size) + " is outside 1.." + std::to_string(kMaxPreviewSize) + " pixels");
-  defaultLights(o.lights);  // throws E-PREVIEW-LIGHT
   const Brick* tonemap = lib.findBrick(tonemapBrick(lib, o));
   if (!tonemap || tonemap->slot != "tonemap") {
     std::vector<std::string> valid;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/environment_mode.hpp"
+#include "core/light_type.hpp"
 #include "core/precision.hpp"
 #include "harness/vulkan_harness.hpp"
 #include "library/shader_library.hpp"
@@ -34,8 +35,8 @@ inline constexpr uint32_t kMaxPreviewSize = 8192;
 inline constexpr uint32_t kDefaultSweepCount = 5;
 
 struct PreviewOptions {
-  uint32_t size = 512;                     // pixels per sphere tile edge, 1..kMaxPreviewSize
-  std::vector<std::string> lights{"dir"};  // light types, one light each (preview_scene.hpp)
+  uint32_t size = 512;                            // pixels per sphere tile edge, 1..kMaxPreviewSize
+  std::vector<LightType> lights{LightType::Dir};  // one light each (preview_scene.hpp)
   EnvironmentMode environmentMode = EnvironmentMode::IblLut;
   Precision precision = Precision::Fp32;
   std::string sweep;  // a non-constant parameter of every material; empty: one sphere
@@ -69,7 +70,7 @@ PreviewEnvironment prepareEnvironment(harness::VulkanHarness& gpu, const ShaderL
                                       uint32_t cubeSize = 128, uint32_t lutSize = 128);
 
 // Checked before any GPU work (each throws DiagnosticError with a one-line message):
-// size in 1..kMaxPreviewSize (E-PREVIEW-SIZE), light types (E-PREVIEW-LIGHT), the tonemap
+// size in 1..kMaxPreviewSize (E-PREVIEW-SIZE), the tonemap
 // brick (E-PREVIEW-TONEMAP), and the sweep parameter of each material (E-PREVIEW-SWEEP,
 // listing the material's sweepable parameters); a textured (glTF) material is refused
 // (E-PREVIEW-TEXTURED, at the material): its images are not bound yet.

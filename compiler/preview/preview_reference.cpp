@@ -112,7 +112,7 @@ ref::Vec3 referencePixel(const ReferenceScene& scene, const PixelAttributes& a, 
   e.spot.reset();
   e.sphere.reset();
   e.tube.reset();
-  for (const auto& type : scene.lightTypes) setLight(scene.lights, type, 0, position, e);
+  for (LightType type : scene.lightTypes) setLight(scene.lights, type, 0, position, e);
   return scene.model(e);
 }
 

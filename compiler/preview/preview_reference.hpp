@@ -31,7 +31,7 @@ struct ReferenceScene {
   ref::ModelReferenceFn model = nullptr;
   std::map<std::string, std::string> bricks;  // role -> brick id
   std::vector<std::string> features;
-  std::vector<std::string> lightTypes;  // the permutation's
+  std::vector<LightType> lightTypes;  // the permutation's
   EnvironmentMode environmentMode = EnvironmentMode::None;
   std::vector<PreviewLight> lights;
   const EnvironmentMaps* environment = nullptr;  // IBL and SH modes

@@ -51,47 +51,54 @@ struct LocalSlots {
   LocalGpu* records;
   uint32_t* count;
 };
-LocalSlots localSlots(FrameBlock& b, const std::string& type) {
-  if (type == "point") return {b.pointLights, &b.lightCounts[1]};
-  if (type == "spot") return {b.spotLights, &b.lightCounts[2]};
-  if (type == "sphere") return {b.sphereLights, &b.lightCounts[3]};
+LocalSlots localSlots(FrameBlock& b, LightType type) {
+  if (type == LightType::Point) return {b.pointLights, &b.lightCounts[1]};
+  if (type == LightType::Spot) return {b.spotLights, &b.lightCounts[2]};
+  if (type == LightType::Sphere) return {b.sphereLights, &b.lightCounts[3]};
   return {b.tubeLights, &b.lightCounts2[0]};
 }
 
 }  // namespace
 
-const std::vector<std::string>& previewLightTypes() { return allLightTypes(); }
-
-std::vector<PreviewLight> defaultLights(const std::vector<std::string>& types) {
-  std::vector<PreviewLight> lights;
-  for (const auto& type : types) {
-    const auto& valid = previewLightTypes();
-    if (std::find(valid.begin(), valid.end(), type) == valid.end()) {
+std::vector<LightType> parsePreviewLights(const std::vector<std::string>& names) {
+  std::vector<LightType> types;
+  for (const auto& name : names) {
+    auto type = parseLightType(name);
+    if (!type) {
+      const auto& valid = allLightTypeNames();
       std::string list;
       for (const auto& v : valid) list += (list.empty() ? "" : ", ") + v;
       throw DiagnosticError({{Severity::Error,
                               "E-PREVIEW-LIGHT",
                               {"<command line>", 0, 0},
-                              "unknown light type '" + type + "' for --lights (valid: " + list + ")",
-                              didYouMean(type, valid)}});
+                              "unknown light type '" + name + "' for --lights (valid: " + list + ")",
+                              didYouMean(name, valid)}});
     }
+    types.push_back(*type);
+  }
+  return types;
+}
+
+std::vector<PreviewLight> defaultLights(const std::vector<LightType>& types) {
+  std::vector<PreviewLight> lights;
+  for (LightType type : types) {
     PreviewLight l;
     l.type = type;
     // Warm white key light from the upper left, in front; the others around the camera, far
     // enough from the unit sphere that their falloff windows (radius 12) barely cut in.
-    if (type == "dir") {
+    if (type == LightType::Dir) {
       l.direction = unit(-1.0, 1.5, 1.2);
       l.intensity = {3.0f, 2.85f, 2.6f};
-    } else if (type == "point") {
+    } else if (type == LightType::Point) {
       l.position = {2.5f, 1.0f, 2.0f};
       l.intensity = {18.0f, 18.0f, 20.0f};
-    } else if (type == "spot") {
+    } else if (type == LightType::Spot) {
       l.position = {0.0f, 3.0f, 2.0f};
       l.axis = unit(0.0, -3.0, -2.0);
       l.intensity = {30.0f, 28.0f, 24.0f};
       l.cosOuter = static_cast<float>(std::cos(25.0 * std::numbers::pi / 180.0));
       l.cosInner = static_cast<float>(std::cos(15.0 * std::numbers::pi / 180.0));
-    } else if (type == "sphere") {
+    } else if (type == LightType::Sphere) {
       l.position = {-2.0f, 2.0f, 2.5f};
       l.radius = 0.4f;
       l.intensity = {12.0f, 14.0f, 16.0f};
@@ -101,7 +108,7 @@ std::vector<PreviewLight> defaultLights(const std::vector<std::string>& types) {
       l.radius = 0.1f;
       l.intensity = {10.0f, 9.0f, 8.0f};
     }
-    l.falloffRadius = type == "dir" ? 0.0f : 12.0f;
+    l.falloffRadius = type == LightType::Dir ? 0.0f : 12.0f;
     lights.push_back(l);
   }
   return lights;
@@ -143,7 +150,7 @@ std::vector<uint8_t> frameBlockBytes(const std::vector<PreviewLight>& lights, co
   FrameBlock b{};
   copy3(b.cameraPosition, cameraPosition(), 1.0f);
   for (const PreviewLight& l : lights) {
-    if (l.type == "dir") {
+    if (l.type == LightType::Dir) {
       if (b.lightCounts[0] == kMaxLights) continue;
       DirectionalGpu& g = b.dirLights[b.lightCounts[0]++];
       copy3(g.direction, l.direction, 0.0f);
@@ -155,9 +162,9 @@ std::vector<uint8_t> frameBlockBytes(const std::vector<PreviewLight>& lights, co
     LocalGpu& g = slots.records[(*slots.count)++];
     copy3(g.position, l.position, l.radius);
     copy3(g.intensity, l.intensity, l.falloffRadius);
-    if (l.type == "spot") copy3(g.axis, l.axis, l.cosOuter);
-    if (l.type == "tube") copy3(g.axis, l.end, 0.0f);
-    g.params[0] = l.type == "spot" ? l.cosInner : 0.0f;
+    if (l.type == LightType::Spot) copy3(g.axis, l.axis, l.cosOuter);
+    if (l.type == LightType::Tube) copy3(g.axis, l.end, 0.0f);
+    g.params[0] = l.type == LightType::Spot ? l.cosInner : 0.0f;
   }
   if (env) {
     for (int k = 0; k < 9; ++k)
@@ -170,18 +177,19 @@ std::vector<uint8_t> frameBlockBytes(const std::vector<PreviewLight>& lights, co
   return bytes;
 }
 
-bool setLight(const std::vector<PreviewLight>& lights, const std::string& type, size_t k, const ref::Vec3& worldPos,
+bool setLight(const std::vector<PreviewLight>& lights, LightType type, size_t k, const ref::Vec3& worldPos,
               ref::ModelEvalInput& in) {
   size_t seen = 0;
   for (const PreviewLight& l : lights) {
     if (l.type != type || seen++ != k) continue;
     const Vec3 rel = v3(l.position) - worldPos;
-    if (type == "dir") in.dir = ref::DirectionalLight{v3(l.direction), v3(l.intensity)};
-    if (type == "point") in.point = ref::PointLight{rel, v3(l.intensity), l.falloffRadius};
-    if (type == "spot")
+    if (type == LightType::Dir) in.dir = ref::DirectionalLight{v3(l.direction), v3(l.intensity)};
+    if (type == LightType::Point) in.point = ref::PointLight{rel, v3(l.intensity), l.falloffRadius};
+    if (type == LightType::Spot)
       in.spot = ref::SpotLight{rel, v3(l.axis), v3(l.intensity), l.falloffRadius, l.cosOuter, l.cosInner};
-    if (type == "sphere") in.sphere = ref::SphereLight{rel, l.radius, v3(l.intensity), l.falloffRadius};
-    if (type == "tube") in.tube = ref::TubeLight{rel, v3(l.end) - worldPos, l.radius, v3(l.intensity), l.falloffRadius};
+    if (type == LightType::Sphere) in.sphere = ref::SphereLight{rel, l.radius, v3(l.intensity), l.falloffRadius};
+    if (type == LightType::Tube)
+      in.tube = ref::TubeLight{rel, v3(l.end) - worldPos, l.radius, v3(l.intensity), l.falloffRadius};
     return true;
   }
   return false;
@@ -191,13 +199,13 @@ double sceneRadianceBound(const std::vector<PreviewLight>& lights, const Environ
   double bound = 0;
   for (const PreviewLight& l : lights) {
     const double peak = std::max({l.intensity[0], l.intensity[1], l.intensity[2]});
-    if (l.type == "dir") {
+    if (l.type == LightType::Dir) {
       bound += peak;
       continue;
     }
     // Closest approach of the light (its nearest point, for a tube) to the unit sphere.
     double d = std::sqrt(ref::dot(v3(l.position), v3(l.position)));
-    if (l.type == "tube") d = std::min(d, std::sqrt(ref::dot(v3(l.end), v3(l.end))));
+    if (l.type == LightType::Tube) d = std::min(d, std::sqrt(ref::dot(v3(l.end), v3(l.end))));
     d = std::max(d - 1.0 - l.radius, 0.25);
     bound += peak / (d * d);
   }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/model_reference.hpp"
+#include "core/light_type.hpp"
 #include "preview/environment.hpp"
 
 namespace mb::preview {
@@ -21,7 +22,7 @@ inline constexpr double kFieldOfViewDegrees = 31.0;
 
 // One light of the frame block, in world space (engine_frame.glsl's record fields).
 struct PreviewLight {
-  std::string type;                     // "dir", "point", "spot", "sphere", "tube"
+  LightType type = LightType::Dir;
   std::array<float, 3> direction{};     // dir: unit, towards the light
   std::array<float, 3> position{};      // local lights; tube: segment start
   std::array<float, 3> end{};           // tube: segment end
@@ -31,12 +32,12 @@ struct PreviewLight {
   float cosOuter = 0, cosInner = 0;     // spot cone
 };
 
-// The light types `--lights` accepts, in allLightTypes() order.
-const std::vector<std::string>& previewLightTypes();
+// The light types `--lights` names (allLightTypeNames()); throws DiagnosticError E-PREVIEW-LIGHT
+// for an unknown name, listing the valid ones.
+std::vector<LightType> parsePreviewLights(const std::vector<std::string>& names);
 // One light of each given type, placed as docs/preview.md shows (a key light from the upper
-// left, the others around the camera). Throws DiagnosticError E-PREVIEW-LIGHT for an unknown
-// type, listing the valid ones.
-std::vector<PreviewLight> defaultLights(const std::vector<std::string>& types);
+// left, the others around the camera).
+std::vector<PreviewLight> defaultLights(const std::vector<LightType>& types);
 
 // The frame block's std140 bytes (engine_frame.glsl): camera, lights, the environment's SH9
 // and its environment constants (ao = 1, maxMip). `env` null: no environment terms.
@@ -47,7 +48,7 @@ std::array<ref::Vec3, 9> frameSh(const EnvironmentMaps& env);
 // Sets in.dir, in.point, ... for the lights of `type` index `k` among `lights` of that type, as
 // the fragment shader builds them (positions relative to the shaded point). Returns false if
 // there is no k-th light of that type.
-bool setLight(const std::vector<PreviewLight>& lights, const std::string& type, size_t k, const ref::Vec3& worldPos,
+bool setLight(const std::vector<PreviewLight>& lights, LightType type, size_t k, const ref::Vec3& worldPos,
               ref::ModelEvalInput& in);
 
 // Largest radiance-scale input of the scene (docs/preview.md "Tolerance"): each directional

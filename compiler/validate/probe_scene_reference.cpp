@@ -33,26 +33,26 @@ SceneColumns sceneColumns(const ProbeScene& scene, const ProbeLayout& layout) {
     c.ngTilt = at("ngTilt");
     c.tangentAngle = at("tangentAngle");
   }
-  for (const auto& type : scene.lights) {
-    if (type == "dir") {
+  for (LightType type : scene.lights) {
+    if (type == LightType::Dir) {
       if (scene.illuminanceInput) c.illuminance = at("illuminance");
-    } else if (type == "point") {
+    } else if (type == LightType::Point) {
       c.pointDistance = at("pointDistance");
       c.pointIntensity = at("pointIntensity");
       c.pointFalloffRadius = at("pointFalloffRadius");
-    } else if (type == "spot") {
+    } else if (type == LightType::Spot) {
       c.spotAxisAngle = at("spotAxisAngle");
       c.spotCosOuter = at("spotCosOuter");
       c.spotInnerFraction = at("spotInnerFraction");
       c.spotDistance = at("spotDistance");
       c.spotIntensity = at("spotIntensity");
       c.spotFalloffRadius = at("spotFalloffRadius");
-    } else if (type == "sphere") {
+    } else if (type == LightType::Sphere) {
       c.sphereDistance = at("sphereDistance");
       c.sphereRadiusFraction = at("sphereRadiusFraction");
       c.sphereIntensity = at("sphereIntensity");
       c.sphereFalloffRadius = at("sphereFalloffRadius");
-    } else if (type == "tube") {
+    } else if (type == LightType::Tube) {
       c.tubeAxisAngle = at("tubeAxisAngle");
       c.tubeDistance = at("tubeDistance");
       c.tubeAxisTilt = at("tubeAxisTilt");
@@ -98,22 +98,22 @@ void sceneFromRecord(const ProbeScene& scene, const SceneColumns& c, const doubl
   const Vec3 lu = ref::normalize(vec3(c.l));
   Vec3 lt, lb;
   orthonormalBasis(lu, lt, lb);
-  for (const auto& type : scene.lights) {
-    if (type == "dir") {
+  for (LightType type : scene.lights) {
+    if (type == LightType::Dir) {
       in.dir = ref::DirectionalLight{lu, scene.illuminanceInput ? vec3(c.illuminance) : Vec3{1, 1, 1}};
-    } else if (type == "point") {
+    } else if (type == LightType::Point) {
       in.point = ref::PointLight{lu * scalar(c.pointDistance), vec3(c.pointIntensity), scalar(c.pointFalloffRadius)};
-    } else if (type == "spot") {
+    } else if (type == LightType::Spot) {
       double a = scalar(c.spotAxisAngle), cosOuter = scalar(c.spotCosOuter);
       Vec3 axis = lt * std::sin(a) - lu * std::cos(a);
       double cosInner = cosOuter + scalar(c.spotInnerFraction) * (1.0 - cosOuter);
       in.spot = ref::SpotLight{lu * scalar(c.spotDistance), axis,     vec3(c.spotIntensity),
                                scalar(c.spotFalloffRadius), cosOuter, cosInner};
-    } else if (type == "sphere") {
+    } else if (type == LightType::Sphere) {
       double d = scalar(c.sphereDistance);
       in.sphere = ref::SphereLight{lu * d, scalar(c.sphereRadiusFraction) * d, vec3(c.sphereIntensity),
                                    scalar(c.sphereFalloffRadius)};
-    } else if (type == "tube") {
+    } else if (type == LightType::Tube) {
       double a = scalar(c.tubeAxisAngle), d = scalar(c.tubeDistance);
       Vec3 axis = ref::normalize(lt * std::cos(a) + lb * std::sin(a) + lu * scalar(c.tubeAxisTilt));
       Vec3 center = lu * d, halfSegment = axis * (scalar(c.tubeHalfLengthFraction) * d);

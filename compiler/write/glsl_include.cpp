@@ -7,6 +7,7 @@
 
 #include "emit/emitter.hpp"
 #include "emit/glsl_writer.hpp"
+#include "emit/light_contract.hpp"
 #include "write/package_parts.hpp"
 
 namespace mb {
@@ -68,13 +69,8 @@ std::string engineInclude(const PackagedPermutation& p) {
         << "//   vec3 mb_fetch_dfg(float NoV, float perceptualRoughness);   the DFG LUT texel\n";
   out << "// Entry points (docs/models.md \"GLSL contract\"): MaterialInputs materialInputs(...),\n"
       << "//   ShadingPixel preparePixel(MaterialInputs, ShadingFrame), vec3 emittedRadiance(ShadingPixel)";
-  static const std::pair<const char*, const char*> kLights[] = {{"dir", "shadeDirectionalLight"},
-                                                                {"point", "shadePointLight"},
-                                                                {"spot", "shadeSpotLight"},
-                                                                {"sphere", "shadeSphereLight"},
-                                                                {"tube", "shadeTubeLight"}};
-  for (const auto& [type, fn] : kLights)
-    if (perm.hasLight(type)) out << ",\n//   vec3 " << fn << "(ShadingPixel, ShadingFrame, light)";
+  for (LightType t : allLightTypes())
+    if (perm.hasLight(t)) out << ",\n//   vec3 " << lightEntryPoint(t) << "(ShadingPixel, ShadingFrame, light)";
   if (perm.environment != EnvironmentMode::None)
     out << ",\n//   vec3 shadeEnvironment(ShadingPixel, ShadingFrame, Environment)";
   out << ".\n#ifndef " << guard << "\n#define " << guard << "\n";

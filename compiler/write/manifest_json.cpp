@@ -35,7 +35,7 @@ nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutatio
                        {"description", m.description},
                        {"features", m.features},
                        {"folded_features", perm.folded},
-                       {"lights", perm.lights},
+                       {"lights", lightTypeNames(perm.lights)},
                        {"environment", environmentModeName(perm.environment)},
                        {"precision", precisionName(perm.precision)},
                        {"quality", qualityName(perm.quality)},

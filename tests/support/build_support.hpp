@@ -34,7 +34,7 @@ inline std::vector<Permutation> permutationsOf(const std::vector<MaterialDesc>& 
   for (const auto& m : materials) {
     Permutation p;
     p.material = &m;
-    p.lights = canonicalLights(lights);
+    p.lights = canonicalLights(parseLightTypes(lights));
     p.environment = environment;
     p.precision = precision;
     out.push_back(p);

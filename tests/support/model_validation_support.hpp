@@ -18,7 +18,7 @@ inline void requireModelPermutationValidates(harness::VulkanHarness& gpu, const 
                                              uint64_t seed = 5) {
   Permutation perm;
   perm.material = &material;
-  perm.lights = canonicalLights(lights);
+  perm.lights = canonicalLights(parseLightTypes(lights));
   perm.environment = environment;
   ValidationRecord r = validateProbe(gpu, buildPermutationProbe(shippedLibrary(), perm), "permutation", 4096, seed);
   INFO(r.key << ": max_abs " << r.stats.maxAbs << " max_rel " << r.stats.maxRel << " failures " << r.stats.failures

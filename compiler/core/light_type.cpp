@@ -1,0 +1,40 @@
+#include "core/light_type.hpp"
+
+#include <algorithm>
+
+#include "core/axis_names.hpp"
+
+namespace mb {
+namespace {
+
+// The one list of light types, in axis order: a new type is one row here (and its enumerator),
+// then its meaning where docs/architecture.md "Adding an axis value" lists.
+const AxisNames<LightType>& axis() {
+  static const AxisNames<LightType> a = AxisNames<LightType>::fromRows({
+      {LightType::Dir, "dir"},
+      {LightType::Point, "point"},
+      {LightType::Spot, "spot"},
+      {LightType::Sphere, "sphere"},
+      {LightType::Tube, "tube"},
+  });
+  return a;
+}
+
+}  // namespace
+
+const std::string& lightTypeName(LightType t) { return axis().name(t); }
+const std::vector<LightType>& allLightTypes() { return axis().values; }
+const std::vector<std::string>& allLightTypeNames() { return axis().names; }
+std::optional<LightType> parseLightType(std::string_view name) { return axis().parse(name); }
+std::vector<LightType> parseLightTypes(const std::vector<std::string>& names) {
+  return axis().parseAll(names, "light type");
+}
+std::vector<std::string> lightTypeNames(const std::vector<LightType>& types) { return axis().namesOf(types); }
+
+std::vector<LightType> canonicalLights(std::vector<LightType> lights) {
+  std::sort(lights.begin(), lights.end());
+  lights.erase(std::unique(lights.begin(), lights.end()), lights.end());
+  return lights;
+}
+
+}  // namespace mb
