@@ -22,7 +22,7 @@ std::vector<EnvironmentMode> parseEnvironmentModes(const std::vector<std::string
   return environmentModeAxis().parseAll(names, "environment mode");
 }
 std::vector<std::string> environmentModeNames(const std::vector<EnvironmentMode>& modes) {
-  return axis().namesOf(modes);
+  return environmentModeAxis().namesOf(modes);
 }
 
 bool isIbl(EnvironmentMode e) { return e == EnvironmentMode::IblLut || e == EnvironmentMode::IblAnalytic; }

@@ -9,7 +9,7 @@ namespace {
 
 // The one list of light types, in axis order: a new type is one row here (and its enumerator),
 // then its meaning where docs/architecture.md "Adding an axis value" lists.
-const AxisNames<LightType>& axis() {
+const AxisNames<LightType>& lightTypeAxis() {
   static const AxisNames<LightType> a = AxisNames<LightType>::fromRows({
       {LightType::Dir, "dir"},
       {LightType::Point, "point"},
@@ -22,14 +22,14 @@ const AxisNames<LightType>& axis() {
 
 }  // namespace
 
-const std::string& lightTypeName(LightType t) { return axis().name(t); }
-const std::vector<LightType>& allLightTypes() { return axis().values; }
-const std::vector<std::string>& allLightTypeNames() { return axis().names; }
-std::optional<LightType> parseLightType(std::string_view name) { return axis().parse(name); }
+const std::string& lightTypeName(LightType t) { return lightTypeAxis().name(t); }
+const std::vector<LightType>& allLightTypes() { return lightTypeAxis().values; }
+const std::vector<std::string>& allLightTypeNames() { return lightTypeAxis().names; }
+std::optional<LightType> parseLightType(std::string_view name) { return lightTypeAxis().parse(name); }
 std::vector<LightType> parseLightTypes(const std::vector<std::string>& names) {
-  return axis().parseAll(names, "light type");
+  return lightTypeAxis().parseAll(names, "light type");
 }
-std::vector<std::string> lightTypeNames(const std::vector<LightType>& types) { return axis().namesOf(types); }
+std::vector<std::string> lightTypeNames(const std::vector<LightType>& types) { return lightTypeAxis().namesOf(types); }
 
 std::vector<LightType> canonicalLights(std::vector<LightType> lights) {
   std::sort(lights.begin(), lights.end());
