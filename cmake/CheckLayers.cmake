@@ -3,6 +3,10 @@
 #   -DSOURCE_DIR=<compiler/>           check every #include "<folder>/..." of each folder's
 #                                      .cpp/.hpp files: the folder must be its own or one its
 #                                      target links directly; and each link must be used
+#   -DDATA_DIR=<shaderlib/>            check every #include "<folder>/..." of the brick library's
+#                                      .cpp/.hpp files (the double references): the data layer
+#                                      sits below every layer but core/, so core/ is the only
+#                                      folder of compiler/ it may include
 #   -DSTAMP=<file>                     touched when the check passes (the build step's output)
 #   -DDOC=<docs/architecture.md>       check that the doc's graph is the targets' graph; with
 #   -DUPDATE_DOC=ON                    rewrite it instead
@@ -19,6 +23,38 @@ function(layer_error)
   set(errors ${count} PARENT_SCOPE)
 endfunction()
 
+# A file's quoted #include lines whose path starts with a folder ("<folder>/..."), and its
+# content when it has any (fast path: system headers and plain names are never layers).
+function(folder_includes file content_var lines_var)
+  file(STRINGS ${file} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"[a-z0-9_]+/")
+  set(content "")
+  if(includes)
+    file(READ ${file} content)
+  endif()
+  set(${content_var} "${content}" PARENT_SCOPE)
+  set(${lines_var} "${includes}" PARENT_SCOPE)
+endfunction()
+
+# The first folder of an #include line's path.
+function(included_folder line folder_var)
+  string(REGEX MATCH "\"([a-z0-9_]+)/[^\"]*\"" quoted "${line}")
+  set(${folder_var} ${CMAKE_MATCH_1} PARENT_SCOPE)
+endfunction()
+
+# Where an #include line is in a file's content: its line (the text before it, counted in
+# lines) and the column of its path.
+function(include_location content line row_var column_var)
+  string(FIND "${content}" "${line}" offset)
+  string(SUBSTRING "${content}" 0 ${offset} before)
+  string(REGEX MATCHALL "\n" newlines "${before}")
+  list(LENGTH newlines row)
+  math(EXPR row "${row} + 1")
+  string(FIND "${line}" "\"" quote)
+  math(EXPR column "${quote} + 2")
+  set(${row_var} ${row} PARENT_SCOPE)
+  set(${column_var} ${column} PARENT_SCOPE)
+endfunction()
+
 mb_layer_cycle(cycle)
 if(cycle)
   layer_error("${LAYERS}: error: the layer targets form a cycle: ${cycle}")
@@ -32,16 +68,9 @@ if(SOURCE_DIR)
     file(GLOB files ${SOURCE_DIR}/${folder}/*.cpp ${SOURCE_DIR}/${folder}/*.hpp)
     list(SORT files)
     foreach(file IN LISTS files)
-      # Fast path: only the quoted includes whose first component is a folder of compiler/
-      # matter (shaderlib's "common/..." and system headers are not layers).
-      file(STRINGS ${file} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"[a-z0-9_]+/")
-      if(NOT includes)
-        continue()
-      endif()
-      file(READ ${file} content)
+      folder_includes(${file} content includes)
       foreach(line IN LISTS includes)
-        string(REGEX MATCH "\"([a-z0-9_]+)/[^\"]*\"" quoted "${line}")
-        set(included ${CMAKE_MATCH_1})
+        included_folder("${line}" included)
         if(NOT included IN_LIST folders)
           continue()
         endif()
@@ -49,14 +78,7 @@ if(SOURCE_DIR)
         if(included IN_LIST allowed)
           continue()
         endif()
-        # Where the include is: the text before it, counted in lines; the column of its path.
-        string(FIND "${content}" "${line}" offset)
-        string(SUBSTRING "${content}" 0 ${offset} before)
-        string(REGEX MATCHALL "\n" newlines "${before}")
-        list(LENGTH newlines row)
-        math(EXPR row "${row} + 1")
-        string(FIND "${line}" "\"" quote)
-        math(EXPR column "${quote} + 2")
+        include_location("${content}" "${line}" row column)
         if(included IN_LIST MB_LAYER_PROGRAM_FOLDERS)
           set(why "${included}/ is a program (${MB_LAYER_TARGET_${included}}), not a library")
         else()
@@ -74,6 +96,25 @@ if(SOURCE_DIR)
         endif()
       endforeach()
     endif()
+  endforeach()
+endif()
+
+if(DATA_DIR)
+  set(folders ${MB_LAYER_FOLDERS} ${MB_LAYER_PROGRAM_FOLDERS})
+  file(GLOB_RECURSE files ${DATA_DIR}/*.cpp ${DATA_DIR}/*.hpp)
+  list(SORT files)
+  foreach(file IN LISTS files)
+    folder_includes(${file} content includes)
+    foreach(line IN LISTS includes)
+      included_folder("${line}" included)
+      # The library's own folders (common/, models/, a slot's) are not layers; core/ is allowed.
+      if(NOT included IN_LIST folders OR included STREQUAL "core")
+        continue()
+      endif()
+      include_location("${content}" "${line}" row column)
+      layer_error("${file}:${row}:${column}: error: the brick library may not include ${included}/: only core/ "
+                  "lies below it (a back edge? see docs/architecture.md \"Layers\")")
+    endforeach()
   endforeach()
 endif()
 

@@ -108,15 +108,15 @@ function(mb_check_layers)
   set(layers_file ${CMAKE_BINARY_DIR}/mb_layers.cmake)
   file(CONFIGURE OUTPUT ${layers_file} CONTENT "${graph}")
   file(GLOB_RECURSE checked_files CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/compiler/*.cpp
-       ${CMAKE_SOURCE_DIR}/compiler/*.hpp)
+       ${CMAKE_SOURCE_DIR}/compiler/*.hpp ${CMAKE_SOURCE_DIR}/shaderlib/*.cpp ${CMAKE_SOURCE_DIR}/shaderlib/*.hpp)
   set(stamp ${CMAKE_BINARY_DIR}/mb_layers.checked)
   add_custom_command(
     OUTPUT ${stamp}
-    COMMAND ${CMAKE_COMMAND} -DLAYERS=${layers_file} -DSOURCE_DIR=${CMAKE_SOURCE_DIR}/compiler -DSTAMP=${stamp}
-            -P ${CMAKE_SOURCE_DIR}/cmake/CheckLayers.cmake
+    COMMAND ${CMAKE_COMMAND} -DLAYERS=${layers_file} -DSOURCE_DIR=${CMAKE_SOURCE_DIR}/compiler
+            -DDATA_DIR=${CMAKE_SOURCE_DIR}/shaderlib -DSTAMP=${stamp} -P ${CMAKE_SOURCE_DIR}/cmake/CheckLayers.cmake
     DEPENDS ${checked_files} ${layers_file} ${CMAKE_SOURCE_DIR}/cmake/CheckLayers.cmake
             ${CMAKE_SOURCE_DIR}/cmake/LayerGraph.cmake
-    COMMENT "Checking every #include of compiler/ against the layer targets' links"
+    COMMENT "Checking every #include of compiler/ and shaderlib/ against the layer targets' links"
     VERBATIM)
   add_custom_target(mb_layer_check ALL DEPENDS ${stamp})
   foreach(program IN LISTS programs)
@@ -131,10 +131,10 @@ function(mb_check_layers)
   if(BUILD_TESTING)
     add_test(NAME layers_check
              COMMAND ${CMAKE_COMMAND} -DLAYERS=${layers_file} -DSOURCE_DIR=${CMAKE_SOURCE_DIR}/compiler
-                     -P ${CMAKE_SOURCE_DIR}/cmake/CheckLayers.cmake)
+                     -DDATA_DIR=${CMAKE_SOURCE_DIR}/shaderlib -P ${CMAKE_SOURCE_DIR}/cmake/CheckLayers.cmake)
     add_test(NAME layers_back_edge_fails
              COMMAND ${CMAKE_COMMAND} -DLAYERS=${layers_file} -DSOURCE_DIR=${CMAKE_SOURCE_DIR}/compiler
-                     -DSCRATCH=${CMAKE_CURRENT_BINARY_DIR}/layers-scratch
+                     -DDATA_DIR=${CMAKE_SOURCE_DIR}/shaderlib -DSCRATCH=${CMAKE_CURRENT_BINARY_DIR}/layers-scratch
                      -P ${CMAKE_SOURCE_DIR}/tests/run_layers_back_edge_test.cmake)
     add_test(NAME layers_doc_graph
              COMMAND ${CMAKE_COMMAND} -DLAYERS=${layers_file} -DDOC=${CMAKE_SOURCE_DIR}/docs/architecture.md

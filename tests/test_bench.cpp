@@ -15,7 +15,7 @@
 #include "bench_engine/static_cost.hpp"
 #include "bench_engine/svg_chart.hpp"
 #include "emit/bench_probe.hpp"
-#include "library/value_type.hpp"
+#include "core/value_type.hpp"
 #include "lut/dfg_lut.hpp"
 #include "permute/permutation.hpp"
 #include "support/cli_support.hpp"

@@ -7,25 +7,18 @@
 namespace mb {
 namespace {
 
-const char* glslTypeName(ValueType t) {
-  switch (t) {
-    case ValueType::Float:
-      return "float";
-    case ValueType::Vec2:
-      return "vec2";
-    case ValueType::Vec3:
-      return "vec3";
-    case ValueType::Geometry:
-      break;  // never a record input: n, v, l are
-  }
-  throw std::logic_error("bench probe: a record input cannot be a Geometry");
+// A record input's GLSL type: toString's names are GLSL's for float, vec2 and vec3.
+std::string glslTypeName(ValueType t) {
+  if (t == ValueType::Geometry)  // never a record input: n, v, l are
+    throw std::logic_error("bench probe: a record input cannot be a Geometry");
+  return toString(t);
 }
 
 std::string recordRead(const ProbeInput& in) {
   auto at = [&](uint32_t k) { return "mbIn[b + " + std::to_string(in.offset + k) + "u]"; };
   int n = componentCount(in.type);
   if (n == 1) return at(0);
-  std::string s = std::string(glslTypeName(in.type)) + "(";
+  std::string s = glslTypeName(in.type) + "(";
   for (int k = 0; k < n; ++k) s += (k ? ", " : "") + at(static_cast<uint32_t>(k));
   return s + ")";
 }

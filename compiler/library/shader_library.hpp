@@ -9,7 +9,7 @@
 #include "core/diagnostics.hpp"
 #include "core/environment_mode.hpp"
 #include "core/light_type.hpp"
-#include "library/value_type.hpp"
+#include "core/value_type.hpp"
 
 namespace mb {
 

@@ -13,7 +13,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "library/value_type.hpp"
+#include "core/value_type.hpp"
 
 namespace mb::ref {
 

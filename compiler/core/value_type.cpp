@@ -1,4 +1,4 @@
-#include "library/value_type.hpp"
+#include "core/value_type.hpp"
 
 namespace mb {
 
