@@ -254,6 +254,37 @@ TEST_CASE("the shipped library's energy facts keep every lobe of the C++ tables 
   }
 }
 
+TEST_CASE("the lobe the multiscatter compensation is checked on is found by its facts, not its name",
+          "[energy][brick-data]") {
+  // Shipped: the isotropic GGX lobe with the dfg_visibility brick.
+  const ShaderLibrary& shipped = test::shippedLibrary();
+  auto lobes = energy::energyLobes(shipped);
+  const energy::Lobe* dfg = energy::dfgLobe(lobes, shipped);
+  REQUIRE(dfg);
+  CHECK(dfg->name == "d_ggx * v_smith_ggx_correlated");
+  // A library where no V takes the role has none (the checks then skip the compensation).
+  FakeLibrary files(energyLibrary(kGgxEnergy, kBeckmannEnergy));
+  auto fake = ShaderLibrary::load(files.root());
+  CHECK(energy::dfgLobe(energy::energyLobes(fake), fake) == nullptr);
+}
+
+TEST_CASE("truth_note: read from the brick entry, an empty one fails at file:line:column", "[library][brick-data]") {
+  const std::string geometry = "\"geometry\": {\"NoV\": [0.01, 1.0]},";
+  SECTION("declared") {
+    FakeLibrary files(
+        {{"specular_d/slot.json", fakeSlotD(geometry, geometry + "\n      \"truth_note\": \"truth at alpha = 1\",")}});
+    CHECK(ShaderLibrary::load(files.root()).findBrick("d_ggx")->truthNote == "truth at alpha = 1");
+  }
+  SECTION("empty") {
+    FakeLibrary files({{"specular_d/slot.json", fakeSlotD(geometry, geometry + "\n      \"truth_note\": \"\",")}});
+    auto d = onlyError(files, "E-EMPTY-FIELD", 16, 21);
+    CHECK_THAT(d.message, Contains("truth_note"));
+  }
+  // The shipped brick that assumes f0 = 0.04; bench prints it beside the brick.
+  CHECK(test::shippedLibrary().findBrick("env_brdf_approx_nonmetal")->truthNote == "truth at f0 = 0.04");
+  CHECK(test::shippedLibrary().findBrick("env_brdf_approx")->truthNote.empty());
+}
+
 TEST_CASE("roughness: an input's kind is read from its declaration, checked at file:line:column",
           "[library][brick-data][precision]") {
   const std::string alpha = R"({"name": "alpha", "type": "float"})";

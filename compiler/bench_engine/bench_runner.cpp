@@ -131,6 +131,7 @@ BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, cons
         group.items.back().kind = "brick";
         if (memo) memo->keep(b, probe, group.items.back());
       }
+      group.items.back().truthNote = b.truthNote;
       if (progress) progress->advance();
     }
     if (group.items.empty()) continue;

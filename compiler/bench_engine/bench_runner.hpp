@@ -42,6 +42,7 @@ struct BenchItem {
   size_t spirvInstructions = 0;                // the probe's, after spirv-opt (as validate reports it)
   std::string yardstick;                       // "ground_truth" or "reference"
   std::vector<std::string> groundTruthBricks;  // permutations: bricks replaced by their truth
+  std::string truthNote;                       // bricks: Brick::truthNote (not cached: the manifest's)
   ErrorSummary error;                          // GPU output against the yardstick
   ErrorStats vsReference;                      // GPU output against the brick's own reference (fp32 error)
   bool onFrontier = false;

@@ -66,9 +66,9 @@ void writeIbl(std::ostringstream& s, const BenchReport& r) {
   for (const auto& grp : r.groups)
     if (grp.name == "env_brdf")
       for (const auto& it : grp.items)
-        s << "| `" << it.id << "` (analytic" << (it.id == "env_brdf_approx_nonmetal" ? ", truth at f0 = 0.04" : "")
-          << ") | " << formatCost(it.cost) << " / eval, static " << staticText(it.staticCost) << " | "
-          << g3(it.error.maxScaled()) << " | " << g3(it.error.meanScaled()) << " |\n";
+        s << "| `" << it.id << "` (analytic" << (it.truthNote.empty() ? "" : ", " + it.truthNote) << ") | "
+          << formatCost(it.cost) << " / eval, static " << staticText(it.staticCost) << " | " << g3(it.error.maxScaled())
+          << " | " << g3(it.error.meanScaled()) << " |\n";
   for (const auto& l : r.ibl.luts)
     s << "| DFG LUT " << l.size << "×" << l.size << " " << lut::lutFormatName(l.format) << " | " << l.bytes
       << " bytes | " << g3(l.error.maxScaled()) << " | " << g3(l.error.meanScaled()) << " |\n";

@@ -12,6 +12,7 @@ void runEnergyChecks(const ShaderLibrary& lib, harness::VulkanHarness& gpu, cons
   report.device = gpu.deviceName();
   report.grid = grid;
   report.lobes = energyLobes(lib);
+  report.dfgLobe = dfgLobe(report.lobes, lib);
   ProbeCache probes(lib);
   if (progress) {
     // Announced up front, so that the ETA holds: a unit per lobe (white furnace), one for the
@@ -23,8 +24,7 @@ void runEnergyChecks(const ShaderLibrary& lib, harness::VulkanHarness& gpu, cons
   }
   report.furnace = whiteFurnace(gpu, probes, report.lobes, grid, progress);
   for (const LobeAlbedo& a : report.furnace)
-    if (a.lobe->name == "d_ggx * v_smith_ggx_correlated")
-      report.compensation = multiscatterCompensation(gpu, probes, lib, a, grid);
+    if (a.lobe == report.dfgLobe) report.compensation = multiscatterCompensation(gpu, probes, lib, a, grid);
   if (progress) progress->advance();
   report.reciprocity = reciprocity(gpu, probes, report.lobes, grid, progress);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

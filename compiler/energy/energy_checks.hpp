@@ -17,6 +17,7 @@ struct EnergyReport {
   EnergyGrid grid;
   std::vector<Lobe> lobes;
   std::vector<LobeAlbedo> furnace;  // parallel to lobes
+  const Lobe* dfgLobe = nullptr;    // energy::dfgLobe, in `lobes`
   CompensationResult compensation;
   std::vector<ReciprocityResult> reciprocity;  // parallel to lobes
   double seconds = 0;

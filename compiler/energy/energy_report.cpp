@@ -211,17 +211,18 @@ std::string energyMarkdown(const EnergyReport& r, const std::string& command) {
   if (!any) s += "None.\n";
 
   for (const LobeAlbedo& a : r.furnace) {
-    if (a.lobe->name != "d_ggx * v_smith_ggx_correlated") continue;
+    if (a.lobe != r.dfgLobe) continue;
     s += "\n## GGX single-scattering albedo E(n.v, r) (`" + a.lobe->name + "`, GPU)\n\n";
     s += gridTable(g, "E", [&](size_t c) { return fmt("%.5f", a.cells[c].gpu); });
   }
   if (!r.compensation.cells.empty()) {
     s +=
-        fmt("\n## Multiscatter compensation\n\n`d_ggx * v_smith_ggx_correlated` at f0 = 1 times "
+        fmt("\n## Multiscatter compensation\n\n`%s` at f0 = 1 times "
             "`%s` (GPU) fed with DFG channel 1 from the CPU quadrature "
             "(`dfgIntegrals`). Max |1 − albedo| = %.2e; the derived per-cell margin (multiscatter.hpp) is at most "
             "%.2e; %s. Compensated albedo:\n\n",
-            r.compensation.brick.c_str(), r.compensation.maxDeviation(), r.compensation.maxMargin(),
+            r.dfgLobe->name.c_str(), r.compensation.brick.c_str(), r.compensation.maxDeviation(),
+            r.compensation.maxMargin(),
             r.compensation.passed() ? "every cell is within its margin" : "SOME CELLS ARE OUTSIDE THEIR MARGIN");
     s += gridTable(g, "E·comp", [&](size_t c) { return fmt("%.6f", r.compensation.cells[c].compensated); });
     double worst = 0;

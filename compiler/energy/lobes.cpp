@@ -108,4 +108,13 @@ std::vector<Lobe> energyLobes(const ShaderLibrary& lib) {
   return out;
 }
 
+const Lobe* dfgLobe(const std::vector<Lobe>& lobes, const ShaderLibrary& lib) {
+  const Brick* visibility = lib.brickForKernelRole("dfg_visibility");
+  for (const Lobe& lobe : lobes)
+    if (lobe.kind == LobeKind::Specular && lobe.map == HalfVectorMapKind::Ggx && lobe.factors.size() == 2 &&
+        lobe.factors[1] == visibility)
+      return &lobe;
+  return nullptr;
+}
+
 }  // namespace mb::energy

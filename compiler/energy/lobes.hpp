@@ -39,4 +39,10 @@ struct Lobe {
 
 std::vector<Lobe> energyLobes(const ShaderLibrary& lib);
 
+// The lobe the DFG LUT integrates, which the multiple-scattering compensation is checked on:
+// the isotropic specular lobe whose D has the GGX half-vector map (the distribution the LUT
+// kernel's sample_ggx draws) and whose V is the brick with kernel role "dfg_visibility"
+// (d_ggx * v_smith_ggx_correlated in the shipped library). Null when the library has none.
+const Lobe* dfgLobe(const std::vector<Lobe>& lobes, const ShaderLibrary& lib);
+
 }  // namespace mb::energy

@@ -255,7 +255,7 @@ void LibraryLoader::readBrick(JsonFields& f, const std::string& ptr, const Slot&
   const json* idValue = f.find(ptr + "/id");
   std::string what = idValue && idValue->is_string() ? "brick '" + idValue->get<std::string>() + "'" : "brick";
   if (!f.object(ptr, {"id", "name", "function", "file", "citation", "requires", "domain", "tolerance"},
-                {"geometry", "notes", "unstable_variant", "fp16_twin", "energy", "kernel_roles"}, what))
+                {"geometry", "notes", "truth_note", "unstable_variant", "fp16_twin", "energy", "kernel_roles"}, what))
     return;
   Brick b;
   b.slot = slot.name;
@@ -264,6 +264,7 @@ void LibraryLoader::readBrick(JsonFields& f, const std::string& ptr, const Slot&
   b.function = identifier(f, ptr + "/function", "function name").value_or("");
   b.citation = nonEmpty(f, ptr + "/citation").value_or("");
   b.notes = f.string(ptr + "/notes").value_or("");
+  if (f.find(ptr + "/truth_note")) b.truthNote = nonEmpty(f, ptr + "/truth_note").value_or("");
   b.requiredUnits = requiredUnits(f, ptr + "/requires");
   if (auto file = readGlsl(f, ptr + "/file", slot.name)) {
     b.file = *file;

@@ -94,6 +94,10 @@ struct Brick {
   GeometryDomain geometry;
   Tolerance tolerance;
   std::string notes;  // precision notes
+  // Manifest "truth_note": where the brick's ground truth (MB_GROUND_TRUTH) is not its slot's
+  // exact quantity, what it is instead, as bench's tables print it ("truth at f0 = 0.04" for a
+  // brick that assumes f0); empty otherwise.
+  std::string truthNote;
   // Optional: the numerically naive form a stability fix replaced (same function name), and
   // what goes wrong with it. Validation of it shows the problem; it is never emitted into
   // permutations.
