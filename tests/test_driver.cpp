@@ -63,9 +63,9 @@ TEST_CASE("driver: a request's shard.json form reads back to the same request", 
   r.materials = {"a.json", "b.mat"};
   r.lights = {LightType::Dir, LightType::Sphere};
   r.environment = EnvironmentMode::IblAnalytic;
-  r.precision = "fp16";
-  r.quality = "low";
-  r.targets = {"spirv", "msl"};
+  r.precision = Precision::Fp16;
+  r.quality = Quality::Low;
+  r.targets = {Target::Spirv, Target::Msl};
   r.optimization = "O1";
   r.stages = "fragment";
   r.headerName = "m.hpp";
@@ -77,6 +77,11 @@ TEST_CASE("driver: a request's shard.json form reads back to the same request", 
   CHECK(compileRequestJson(back) == j);
   CHECK(environmentModeName(back.environment) == "ibl_analytic");
   CHECK(lightTypeNames(back.lights) == std::vector<std::string>{"dir", "sphere"});
+  CHECK(back.precision == Precision::Fp16);
+  CHECK(back.quality == Quality::Low);
+  CHECK(back.targets == std::vector<Target>{Target::Spirv, Target::Msl});
+  CHECK(j.at("precision") == "fp16");
+  CHECK(j.at("targets") == nlohmann::json{"spirv", "msl"});
   CHECK(back.shaderlib == "/lib");
 
   nlohmann::json bad = j;
@@ -88,6 +93,14 @@ TEST_CASE("driver: a request's shard.json form reads back to the same request", 
     CHECK(e.diagnostics().front().code == "E-PERMUTATION-INVALID");
     CHECK(e.diagnostics().front().where.file == "shard.json");
   }
+  bad = j;
+  bad["precision"] = "fp64";
+  try {
+    compileRequestFromJson(bad, "shard.json", back);
+    FAIL("an unknown precision was read");
+  } catch (const DiagnosticError& e) {
+    CHECK(e.diagnostics().front().code == "E-PRECISION");
+  }
 }
 
 TEST_CASE("driver: what the command line refuses as usage is a CompileUsageError", "[driver][cli]") {
@@ -96,9 +109,11 @@ TEST_CASE("driver: what the command line refuses as usage is a CompileUsageError
   CompileRequest noOutput;
   noOutput.scene = kMobile;
   CHECK_THROWS_WITH(runCompile(noOutput), "compile needs -o DIR (or --explain, which only counts)");
-  CompileRequest badAxis;
-  badAxis.materials = {test::materialPath("ue4_metal.json")};
-  badAxis.explain = true;
-  badAxis.precision = "fp64";
-  CHECK_THROWS_AS(runCompile(badAxis), CompileUsageError);
+  // The axes and targets are values (an unknown name cannot be put in a request); the
+  // optimization level is kept as written, and refused here as the command line refuses it.
+  CompileRequest badLevel;
+  badLevel.materials = {test::materialPath("ue4_metal.json")};
+  badLevel.explain = true;
+  badLevel.optimization = "O5";
+  CHECK_THROWS_AS(runCompile(badLevel), CompileUsageError);
 }

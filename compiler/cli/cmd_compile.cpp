@@ -95,12 +95,12 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
           ->check(CLI::IsMember(allLightTypeNames()));
   args->axisOptions[1] = cmd->add_option("--environment", args->environment, "Environment mode (default: none)")
                              ->check(CLI::IsMember(allEnvironmentModeNames()));
-  args->axisOptions[2] = cmd->add_option("--precision", args->request.precision, "fp32 or fp16")
-                             ->check(CLI::IsMember(allPrecisionNames()));
-  args->axisOptions[3] = cmd->add_option("--quality", args->request.quality, "low, medium or high (default: high)")
+  args->axisOptions[2] =
+      cmd->add_option("--precision", args->precision, "fp32 or fp16")->check(CLI::IsMember(allPrecisionNames()));
+  args->axisOptions[3] = cmd->add_option("--quality", args->quality, "low, medium or high (default: high)")
                              ->check(CLI::IsMember(allQualityNames()));
   cmd->add_option(
-         "--targets", args->request.targets,
+         "--targets", args->targets,
          "Output languages (default: the scene's, else spirv): " +
              [] {
                std::string s;
@@ -160,6 +160,9 @@ Command addCompileCommand(CLI::App& app, GlobalOptions& g) {
             args->request.shaderlib = g.shaderlib;
             args->request.lights = parseLightTypes(args->lights);                  // checked by --lights's IsMember
             args->request.environment = *parseEnvironmentMode(args->environment);  // and --environment's
+            args->request.precision = *parsePrecision(args->precision);            // --precision's
+            args->request.quality = *parseQuality(args->quality);                  // --quality's
+            args->request.targets = parseTargets(args->targets);                   // --targets'
             return runCompile(*args, g);
           }};
 }

@@ -14,10 +14,13 @@ namespace mb::cli {
 
 struct CompileArgs {
   CompileRequest request;  // the global --shaderlib is filled in when the command runs
-  // --lights and --environment as named (IsMember checks them), parsed into the request when
-  // the command runs.
+  // --lights, --environment, --precision, --quality and --targets as named (IsMember checks
+  // them), parsed into the request when the command runs.
   std::vector<std::string> lights{"dir"};
   std::string environment = "none";
+  std::string precision = "fp32";
+  std::string quality = "high";
+  std::vector<std::string> targets;
   // --lights, --environment, --precision, --quality: set, they conflict with --scene.
   CLI::Option* axisOptions[4] = {};
 };

@@ -25,9 +25,9 @@ nlohmann::json compileRequestJson(const CompileRequest& r) {
           {"scene", r.scene},
           {"lights", lightTypeNames(r.lights)},
           {"environment", environmentModeName(r.environment)},
-          {"precision", r.precision},
-          {"quality", r.quality},
-          {"targets", r.targets},
+          {"precision", precisionName(r.precision)},
+          {"quality", qualityName(r.quality)},
+          {"targets", targetNames(r.targets)},
           {"header", r.headerName},
           {"namespace", r.cppNamespace},
           {"optimization", r.optimization},
@@ -43,16 +43,16 @@ void compileRequestFromJson(const nlohmann::json& c, const std::string& file, Co
                              "shard.json's 'command' is not readable: " + why,
                              "compile the shards again with this matbricks"}});
   };
-  std::vector<std::string> lights;
-  std::string environment;
+  std::vector<std::string> lights, targets;
+  std::string environment, precision, quality;
   try {
     r.materials = c.at("materials").get<std::vector<std::string>>();
     r.scene = c.at("scene").get<std::string>();
     lights = c.at("lights").get<std::vector<std::string>>();
     environment = c.at("environment").get<std::string>();
-    r.precision = c.at("precision").get<std::string>();
-    r.quality = c.at("quality").get<std::string>();
-    r.targets = c.at("targets").get<std::vector<std::string>>();
+    precision = c.at("precision").get<std::string>();
+    quality = c.at("quality").get<std::string>();
+    targets = c.at("targets").get<std::vector<std::string>>();
     r.optimization = c.at("optimization").get<std::string>();
     r.stages = c.at("stages").get<std::string>();
     r.headerName = c.at("header").get<std::string>();
@@ -68,7 +68,7 @@ void compileRequestFromJson(const nlohmann::json& c, const std::string& file, Co
   PackageStages stages;
   if (std::string why; !r.stages.empty() && !parsePackageStages(r.stages, stages, why))
     throw notReadable("'stages': " + why);
-  for (const auto& t : r.targets)
+  for (const auto& t : targets)
     if (!parseTarget(t)) throw notReadable("'targets': '" + t + "' is not a target");
   // An axis value the emitter (precision), the quality selection (quality) or the validity
   // rules (lights, environment) refused before the axes were types: the same code, now where the
@@ -82,13 +82,15 @@ void compileRequestFromJson(const nlohmann::json& c, const std::string& file, Co
     if (!parseLightType(l)) throw unknownAxisValue("E-PERMUTATION-INVALID", "light type", l, allLightTypeNames());
   if (!parseEnvironmentMode(environment))
     throw unknownAxisValue("E-PERMUTATION-INVALID", "environment mode", environment, allEnvironmentModeNames());
-  if (!parsePrecision(r.precision))
-    throw unknownAxisValue("E-PRECISION", "precision", r.precision, allPrecisionNames());
-  if (!parseQuality(r.quality))
-    throw unknownAxisValue("E-PERMUTATION-INVALID", "quality level", r.quality, allQualityNames());
+  if (!parsePrecision(precision)) throw unknownAxisValue("E-PRECISION", "precision", precision, allPrecisionNames());
+  if (!parseQuality(quality))
+    throw unknownAxisValue("E-PERMUTATION-INVALID", "quality level", quality, allQualityNames());
   checkHeaderName(r.headerName, {file, 0, 0});
   r.lights = parseLightTypes(lights);
   r.environment = *parseEnvironmentMode(environment);
+  r.precision = *parsePrecision(precision);
+  r.quality = *parseQuality(quality);
+  r.targets = parseTargets(targets);
 }
 
 }  // namespace mb

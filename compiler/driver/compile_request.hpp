@@ -10,12 +10,16 @@
 #include "core/diagnostics.hpp"
 #include "core/environment_mode.hpp"
 #include "core/light_type.hpp"
+#include "core/precision.hpp"
+#include "core/quality.hpp"
+#include "core/target.hpp"
 
 namespace mb {
 
-// What was asked (docs/cli.md `compile` gives each field's meaning and default). The light types
-// and the environment mode are values, parsed where they enter (the command line, a shard's
-// shard.json); the other axes, targets and levels are names that runCompile() parses once.
+// What was asked (docs/cli.md `compile` gives each field's meaning and default). The axes and the
+// targets are values, parsed where they enter (the command line, a shard's shard.json); the
+// optimization level and the stages are kept as written (shard.json records them so) and
+// runCompile() parses them once.
 struct CompileRequest {
   std::vector<std::string> materials;  // material files; or
   std::string scene;                   // a scene file (exactly one of the two)
@@ -24,13 +28,13 @@ struct CompileRequest {
   bool explain = false;
   std::vector<LightType> lights{LightType::Dir};
   EnvironmentMode environment = EnvironmentMode::None;
-  std::string precision = "fp32";
-  std::string quality = "high";
-  std::vector<std::string> targets;  // empty: the scene's, else spirv
-  std::string optimization;          // "0".."2" or "O0".."O2"; empty: the scene's, else O2
-  std::string stages;                // "kernel", "fragment" or both; empty: both
-  unsigned jobs = 0;                 // 0: every core
-  std::string cacheDir;              // empty: the default (ShaderCache::defaultDir())
+  Precision precision = Precision::Fp32;
+  Quality quality = Quality::High;
+  std::vector<Target> targets;  // empty: the scene's, else spirv
+  std::string optimization;     // "0".."2" or "O0".."O2"; empty: the scene's, else O2
+  std::string stages;           // "kernel", "fragment" or both; empty: both
+  unsigned jobs = 0;            // 0: every core
+  std::string cacheDir;         // empty: the default (ShaderCache::defaultDir())
   bool noCache = false;
   std::string cacheUrl;  // empty: $MATBRICKS_CACHE_URL, else none
   std::string cacheUrlLayout = "subdirs";

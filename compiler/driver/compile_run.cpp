@@ -98,14 +98,6 @@ ShardSpec checkRequest(const CompileRequest& r) {
   return shard;
 }
 
-// A name the command line's CLI11 check or compileRequestFromJson has not seen (a request
-// filled in code) is refused as the command line refuses it.
-template <class T>
-T parsedAxis(std::optional<T> value, const std::string& option, const std::string& name) {
-  if (!value) throw CompileUsageError(option + ": " + name + " is not a value of the axis");
-  return *value;
-}
-
 }  // namespace
 
 CompileOutcome runCompile(const CompileRequest& r, const CompileHooks& hooks, const ShardSet* mergeFrom,
@@ -122,8 +114,7 @@ CompileOutcome runCompile(const CompileRequest& r, const CompileHooks& hooks, co
   SceneDesc scene;
   std::vector<MaterialDesc> materials;
   ScenePlan plan;
-  for (const auto& t : r.targets) parsedAxis(parseTarget(t), "--targets", t);
-  std::vector<Target> targets = parseTargets(r.targets);
+  std::vector<Target> targets = r.targets;
   if (!r.scene.empty()) {
     scene = loadScene(r.scene, lib);
     warn(scene.warnings);
@@ -136,8 +127,8 @@ CompileOutcome runCompile(const CompileRequest& r, const CompileHooks& hooks, co
     AxisPoint axes;
     axes.lights = canonicalLights(r.lights);
     axes.environment = r.environment;
-    axes.precision = parsedAxis(parsePrecision(r.precision), "--precision", r.precision);
-    axes.quality = parsedAxis(parseQuality(r.quality), "--quality", r.quality);
+    axes.precision = r.precision;
+    axes.quality = r.quality;
     plan = planMaterials(materials, axes, lib);
     std::vector<const MaterialDesc*> sources;
     for (const auto& p : plan.required) sources.push_back(p.material);
