@@ -94,7 +94,7 @@ TEST_CASE("pbrMetallicRoughness with textures: constants, texture inputs, surfac
         "}\n");
   test::requireAt(wood.surface.where, test::positionOf(text, "{", "\"materials\""));
   REQUIRE(ms[0].textures.size() == 4);
-  const GltfTextureInput& occlusion = ms[0].textures[2];
+  const TextureBinding& occlusion = ms[0].textures[2];
   CHECK(occlusion.param == "occlusionTexture");
   CHECK(occlusion.channels == "r");
   CHECK(occlusion.texture == 1);

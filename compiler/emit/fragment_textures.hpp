@@ -19,8 +19,8 @@ struct FragmentTexture {
   bool isNormal() const { return param == "normalTexture"; }
 };
 
-// The material's texture records, read from MaterialDesc::engineData (written by the glTF
-// import); none for JSON and macro materials.
+// The material's texture bindings (MaterialDesc::engine, from the glTF import); none for JSON
+// and macro materials.
 std::vector<FragmentTexture> fragmentTextures(const MaterialDesc& material);
 
 }  // namespace mb

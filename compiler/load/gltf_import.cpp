@@ -60,8 +60,8 @@ void assignNames(JsonFields& f, const FileContext& ctx, std::vector<GltfMaterial
   }
 }
 
-std::string describeTexture(const GltfTextureInput& t) {
-  std::string s = t.param.empty() ? "normalTexture (applied by the engine to the shading normal"
+std::string describeTexture(const TextureBinding& t) {
+  std::string s = t.param.empty() ? t.parameterName() + " (applied by the engine to the shading normal"
                                   : t.param + " (" + t.channels + " of the texel";
   s += "): texture " + std::to_string(t.texture);
   if (t.image >= 0) s += ", image " + std::to_string(t.image);
@@ -73,42 +73,23 @@ std::string describeTexture(const GltfTextureInput& t) {
   return s;
 }
 
-nlohmann::json textureJson(const GltfTextureInput& t) {
-  nlohmann::json j{{"parameter", t.param.empty() ? "normalTexture" : t.param},
-                   {"channels", t.channels},
-                   {"srgb", t.srgb},
-                   {"texture", t.texture},
-                   {"image", t.image},
-                   {"uri", t.uri},
-                   {"texCoord", t.texCoord},
-                   {"scale", t.scale}};
-  if (t.transform)
-    j["KHR_texture_transform"] = {{"offset", {t.offset[0], t.offset[1]}},
-                                  {"rotation", t.rotation},
-                                  {"scale", {t.uvScale[0], t.uvScale[1]}},
-                                  {"texCoord", t.transformTexCoord >= 0 ? t.transformTexCoord : t.texCoord}};
-  return j;
-}
-
-// What the engine applies and the shader does not: the manifest's "engine" object (issue 18,
-// docs/gltf.md "Engine data"). Keys come out sorted (nlohmann::json objects are maps).
-std::string engineData(const GltfMaterial& m) {
-  nlohmann::json textures = nlohmann::json::array();
-  for (const auto& t : m.textures) textures.push_back(textureJson(t));
-  nlohmann::json j{{"gltfMaterial", m.index},
-                   {"alphaMode", m.alphaMode},
-                   {"alphaCutoff", m.alphaCutoff},
-                   {"doubleSided", m.doubleSided},
-                   {"textures", textures}};
+// What the engine applies and the shader does not (docs/gltf.md "Engine data").
+EngineData engineData(const GltfMaterial& m) {
+  EngineData e;
+  e.gltfMaterial = m.index;
+  e.alphaMode = m.alphaMode;
+  e.alphaCutoff = m.alphaCutoff;
+  e.doubleSided = m.doubleSided;
+  e.textures = m.textures;
   if (m.source.features.end() != std::find_if(m.source.features.begin(), m.source.features.end(),
                                               [](const SourceName& f) { return f.value == "anisotropy"; }))
-    j["anisotropyRotation"] = m.anisotropyRotation;
-  return j.dump();
+    e.anisotropyRotation = m.anisotropyRotation;
+  return e;
 }
 
 // The description carries what an engine needs to bind each texture input (docs/gltf.md).
 void describe(GltfMaterial& m) {
-  m.source.engineData = engineData(m);
+  m.source.engine = engineData(m);
   std::string d = "glTF material " + std::to_string(m.index);
   if (!m.gltfName.empty()) d += " '" + m.gltfName + "'";
   d += " of " + m.source.file;

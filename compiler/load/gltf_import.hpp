@@ -10,35 +10,16 @@
 #include <vector>
 
 #include "core/json_document.hpp"
+#include "load/engine_data.hpp"
 #include "load/material_desc.hpp"
 
 namespace mb {
-
-// Where an engine gets the value of one texture parameter input.
-struct GltfTextureInput {
-  std::string param;       // the user parameter, e.g. "baseColorTexture" (empty: no parameter,
-                           // the engine applies it to the shading frame: normalTexture)
-  std::string channels;    // what the parameter holds: "rgb", "r", "g" or "a" of the texel
-  bool srgb = false;       // the image is sRGB-encoded: sample it through an sRGB view
-  int texture = -1;        // index into glTF `textures`
-  int image = -1;          // its `source` image (-1: none, e.g. given by a texture extension)
-  std::string uri;         // the image's uri, or "bufferView N" for an embedded image
-  int texCoord = 0;        // which TEXCOORD_n set
-  bool transform = false;  // KHR_texture_transform present: the engine applies it to the UVs
-  // KHR_texture_transform's values (its defaults when absent): uv' = T(offset) R(rotation)
-  // S(scale) uv, with texCoord overriding the textureInfo's when >= 0.
-  double offset[2] = {0.0, 0.0};
-  double rotation = 0.0;
-  double uvScale[2] = {1.0, 1.0};
-  int transformTexCoord = -1;
-  double scale = 1.0;  // normalTexture scale / occlusionTexture strength, else 1
-};
 
 struct GltfMaterial {
   MaterialSource source;
   int index = 0;         // position in glTF `materials`
   std::string gltfName;  // as written (may be empty)
-  std::vector<GltfTextureInput> textures;
+  std::vector<TextureBinding> textures;
   // Drawing state the engine applies (glTF 2.0 spec, "Alpha Coverage", "Double Sided") and
   // the anisotropy direction's rotation (KHR_materials_anisotropy), glTF defaults if absent.
   std::string alphaMode = "OPAQUE";

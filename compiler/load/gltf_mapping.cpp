@@ -166,9 +166,9 @@ class MaterialMapper {
     return "p." + param + swizzle;
   }
 
-  std::optional<GltfTextureInput> textureBinding(const std::string& ptr, const std::string& param,
-                                                 const std::string& channels, bool srgb) {
-    GltfTextureInput t;
+  std::optional<TextureBinding> textureBinding(const std::string& ptr, const std::string& param,
+                                               const std::string& channels, bool srgb) {
+    TextureBinding t;
     t.param = param;
     t.channels = channels;
     t.srgb = srgb;
@@ -194,7 +194,7 @@ class MaterialMapper {
     return t;
   }
 
-  void readTextureInfoExtensions(const std::string& ptr, GltfTextureInput& t) {
+  void readTextureInfoExtensions(const std::string& ptr, TextureBinding& t) {
     std::string e = at(ptr, "extensions");
     if (!f_.isObject(e)) return;
     for (const auto& [name, value] : f_.find(e)->items()) {
@@ -210,7 +210,7 @@ class MaterialMapper {
 
   // KHR_texture_transform: offset [2], rotation (radians), scale [2], texCoord; the engine
   // applies them to the UVs, so they are kept for the manifest (issue 18).
-  void readTextureTransform(const std::string& ptr, GltfTextureInput& t) {
+  void readTextureTransform(const std::string& ptr, TextureBinding& t) {
     if (!f_.isObject(ptr)) return;
     std::vector<double> offset = numbers(at(ptr, "offset"), 2, {0.0, 0.0});
     std::vector<double> scale = numbers(at(ptr, "scale"), 2, {1.0, 1.0});
@@ -222,7 +222,7 @@ class MaterialMapper {
     t.transformTexCoord = index(at(ptr, "texCoord")).value_or(-1);
   }
 
-  void readImage(GltfTextureInput& t) {
+  void readImage(TextureBinding& t) {
     std::string tex = JsonFields::element("/textures", static_cast<size_t>(t.texture));
     if (!f_.isObject(tex)) return;
     std::string sourcePtr = at(tex, "source");

@@ -10,6 +10,7 @@
 
 #include "core/diagnostics.hpp"
 #include "library/shader_library.hpp"
+#include "load/engine_data.hpp"
 
 namespace mb {
 
@@ -76,11 +77,9 @@ struct MaterialSource {
   std::vector<SourceParam> params;
   SurfaceCode surface;
   std::vector<Diagnostic> warnings;  // e.g. an unsupported glTF extension, reported by the CLI
-  // What an engine needs to draw the material that the shader does not compute, as a JSON
-  // object's text (empty: nothing): for glTF, alphaMode/alphaCutoff/doubleSided,
-  // anisotropyRotation and the texture bindings with their KHR_texture_transform values
-  // (docs/gltf.md "Engine data"). The package manifest carries it as "engine".
-  std::string engineData;
+  // What an engine needs to draw the material that the shader does not compute (glTF
+  // materials only; load/engine_data.hpp). The package manifest carries it as "engine".
+  std::optional<EngineData> engine;
   // Files read besides `file` (the macro form's #includes), in reading order: a build system
   // must rerun the compile when one changes (compile --depfile).
   std::vector<std::string> includedFiles;
@@ -105,7 +104,7 @@ struct MaterialDesc {
   SourceLocation modelWhere;                             // where the model was named (invalid-axis errors point here)
   std::map<std::string, SourceLocation> brickLocations;  // role -> where it was chosen
   std::vector<Diagnostic> warnings;
-  std::string engineData;  // MaterialSource::engineData
+  std::optional<EngineData> engine;  // MaterialSource::engine
 
   bool has(const std::string& feature) const;
   const MaterialParam* param(const std::string& name) const;

@@ -73,7 +73,7 @@ class Resolver {
     desc_.sourceFile = src_.file;
     desc_.includedFiles = src_.includedFiles;
     desc_.description = src_.description;
-    desc_.engineData = src_.engineData;
+    desc_.engine = src_.engine;
     desc_.warnings = src_.warnings;
     resolveName();
     model_ = resolveModel();

@@ -6,6 +6,7 @@
 #include "compile/targets.hpp"
 #include "core/descriptor_bindings.hpp"
 #include "emit/emitter.hpp"
+#include "load/engine_data.hpp"
 #include "write/package_parts.hpp"
 
 namespace mb {
@@ -15,6 +16,31 @@ nlohmann::json paramJson(const MaterialParam& p) {
   nlohmann::json j{{"name", p.name}, {"type", toString(p.type)}, {"constant", p.constant}, {"user", p.user}};
   j[p.constant ? "value" : "default"] = p.value;
   if (!p.constant) j["range"] = {p.range.lo, p.range.hi};
+  return j;
+}
+
+nlohmann::json textureJson(const TextureBinding& t) {
+  nlohmann::json j{{"parameter", t.parameterName()}, {"channels", t.channels}, {"srgb", t.srgb},
+                   {"texture", t.texture},           {"image", t.image},       {"uri", t.uri},
+                   {"texCoord", t.texCoord},         {"scale", t.scale}};
+  if (t.transform)
+    j["KHR_texture_transform"] = {{"offset", {t.offset[0], t.offset[1]}},
+                                  {"rotation", t.rotation},
+                                  {"scale", {t.uvScale[0], t.uvScale[1]}},
+                                  {"texCoord", t.transformTexCoord >= 0 ? t.transformTexCoord : t.texCoord}};
+  return j;
+}
+
+// The permutation's "engine" object (docs/gltf.md "Engine data").
+nlohmann::json engineJson(const EngineData& e) {
+  nlohmann::json textures = nlohmann::json::array();
+  for (const auto& t : e.textures) textures.push_back(textureJson(t));
+  nlohmann::json j{{"gltfMaterial", e.gltfMaterial},
+                   {"alphaMode", e.alphaMode},
+                   {"alphaCutoff", e.alphaCutoff},
+                   {"doubleSided", e.doubleSided},
+                   {"textures", textures}};
+  if (e.anisotropyRotation) j["anisotropyRotation"] = *e.anisotropyRotation;
   return j;
 }
 
@@ -55,7 +81,7 @@ nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutatio
   }
   for (const auto& [role, id] : boundRoles(*in.lib, perm)) entry["bricks"][role] = id;
   for (const auto& prm : m.params) entry["parameters"].push_back(paramJson(prm));
-  if (!m.engineData.empty()) entry["engine"] = nlohmann::json::parse(m.engineData);
+  if (m.engine) entry["engine"] = engineJson(*m.engine);
   if (!p.fragmentFiles.empty()) entry["fragment"] = fragmentEntryJson(p);
   return entry;
 }
