@@ -6,6 +6,7 @@
 #include <map>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 
 #include "brick_call.hpp"
 #include "directions.hpp"
@@ -32,29 +33,29 @@ double quadratureAlone(const ref::ltc::ViewFrame& fr, const Vec3& v, double alph
 }
 
 // The standard model's sphere light by its default bricks (standard.json, standard_lights.glsl):
-// D at tube_point_karis's direction times norm_sphere_karis, V at the centre, both times the
-// exact horizon wrap; specular and diffuse as integrals over the light's radiance, so that they
+// D at the point brick's direction times the normalization brick, V at the centre, both times
+// the horizon wrap brick; specular and diffuse as integrals over the light's radiance, so that they
 // compare with the brute force (E = L pi sin^2 a).
 struct RepresentativeSphere {
   double specular = 0, diffuse = 0;
 };
-RepresentativeSphere representativeSphere(const Geometry& gc, double alpha, double sinA) {
+RepresentativeSphere representativeSphere(const SphereLightBricks& b, const Geometry& gc, double alpha, double sinA) {
   RepresentativeSphere out;
   std::vector<double> args = pack(gc);
   args.push_back(sinA);
-  double wrap = callBrick("horizon_wrap_accurate", args)[0];
+  double wrap = callBrick(b.wrap, args)[0];
   double E = kPi * sinA * sinA;
   out.diffuse = wrap * E;
   std::vector<double> p = pack(gc);
   append(p, gc.l);
   append(p, gc.l);
   p.push_back(sinA);
-  std::vector<double> l = callBrick("tube_point_karis", p);
+  std::vector<double> l = callBrick(b.point, p);
   Geometry gD = makeGeometry(gc.n, gc.v, Vec3{l[0], l[1], l[2]});
   if (!(gD.NoH > 1e-4)) return out;  // mb_facing
   std::vector<double> k = pack(gc);
   k.insert(k.end(), {alpha, sinA});
-  double norm = callBrick("norm_sphere_karis", k)[0];
+  double norm = callBrick(b.normalization, k)[0];
   out.specular =
       lights::ggxD(gD.NoH, alpha) * norm * smithGgxCorrelatedV(std::max(gc.NoV, kMinNoV), gc.NoL, alpha) * wrap * E;
   return out;
@@ -62,7 +63,19 @@ RepresentativeSphere representativeSphere(const Geometry& gc, double alpha, doub
 
 }  // namespace
 
-json measureLtcAreaLights(const mb::ltc::Table& table, int sphereSamples, int tubeSamples, uint64_t seed) {
+SphereLightBricks standardSphereLight(const ShaderLibrary& lib) {
+  const ShadingModel* standard = lib.findModel("standard");
+  if (!standard) throw std::runtime_error("the library has no standard model");
+  auto role = [&](const std::string& name) {
+    for (const ModelRole& r : standard->roles)
+      if (r.role == name && !r.defaultBrick.empty()) return r.defaultBrick;
+    throw std::runtime_error("the standard model has no default brick for role " + name);
+  };
+  return {role("sphere_light_point"), role("sphere_energy_normalization"), role("sphere_horizon_wrap")};
+}
+
+json measureLtcAreaLights(const mb::ltc::Table& table, const SphereLightBricks& representative, int sphereSamples,
+                          int tubeSamples, uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> U(0.0, 1.0);
   const Vec3 n{0, 0, 1};
@@ -85,10 +98,10 @@ json measureLtcAreaLights(const mb::ltc::Table& table, int sphereSamples, int tu
     mb::ltc::TableSample s = mb::ltc::sampleBilinear(table, roughness, NoV);
     ref::ltc::ViewFrame fr = ref::ltc::viewFrame(n, v);
     std::vector<Vec3> polygon = ref::ltc::spherePolygon(c, sinA, n);
-    RepresentativeSphere rep = representativeSphere(gc, alpha, sinA);
+    RepresentativeSphere rep = representativeSphere(representative, gc, alpha, sinA);
     if (truth.diffuse > 1e-12) {
       sphere["diffuse: LTC, 8-gon"].add(kPi * ref::ltc::polygonIntegral(kIdentity, fr, polygon) / truth.diffuse, where);
-      sphere["diffuse: representative point (horizon_wrap_accurate)"].add(rep.diffuse / truth.diffuse, where);
+      sphere["diffuse: representative point (" + representative.wrap + ")"].add(rep.diffuse / truth.diffuse, where);
     }
     if (!(truth.specular > 1e-6 * kPi * sinA * sinA)) continue;
     double ltcSpec = s.norm * ref::ltc::polygonIntegral(s.minv, fr, polygon);
@@ -97,8 +110,8 @@ json measureLtcAreaLights(const mb::ltc::Table& table, int sphereSamples, int tu
     double exactCap = lights::capIntegral(
         gc, alpha, sinA, [&](const Vec3& l) { return l.z > 0.0 ? ref::ltc::density(s.minv, fr.toLocal(l)) : 0.0; }, 32);
     sphere["specular: LTC, exact cap (no polygon)"].add(s.norm * exactCap / truth.specular, where);
-    sphere["specular: representative point (tube_point_karis + norm_sphere_karis)"].add(rep.specular / truth.specular,
-                                                                                        where);
+    sphere["specular: representative point (" + representative.point + " + " + representative.normalization + ")"].add(
+        rep.specular / truth.specular, where);
     double cv = ref::ltc::polygonSpecularWithResidual(s.minv, s.norm, alpha, fr, v, polygon);
     sphere["specular: LTC + residual quadrature (sphere_ltc_cv)"].add(cv / truth.specular, where);
     if (nearMirror)

@@ -10,11 +10,22 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "library/shader_library.hpp"
 #include "ltc/ltc_table.hpp"
 
 namespace mb::bench {
 
-nlohmann::json measureLtcAreaLights(const ltc::Table& table, int sphereSamples, int tubeSamples, uint64_t seed);
+// The bricks the standard model composes a sphere light from by default (its roles'
+// defaults, shaderlib/models/standard.json): the representative point LTC is set beside.
+struct SphereLightBricks {
+  std::string point;          // role sphere_light_point (a tube_light_point brick)
+  std::string normalization;  // role sphere_energy_normalization
+  std::string wrap;           // role sphere_horizon_wrap
+};
+SphereLightBricks standardSphereLight(const ShaderLibrary& lib);
+
+nlohmann::json measureLtcAreaLights(const ltc::Table& table, const SphereLightBricks& representative, int sphereSamples,
+                                    int tubeSamples, uint64_t seed);
 
 // The section's tables as Markdown (docs/models/lights.md).
 std::string ltcMarkdown(const nlohmann::json& section);

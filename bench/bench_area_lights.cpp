@@ -144,11 +144,17 @@ int main(int argc, char** argv) {
   std::uniform_real_distribution<double> U(0.0, 1.0);
   const Vec3 n{0, 0, 1};
 
-  const std::vector<std::string> points = {"tube_point_karis", "tube_point_min_angle"};
-  const std::vector<std::string> sphereNorms = {"norm_sphere_karis", "norm_new_a2"};
-  const std::vector<std::string> maxNoH = {"max_noh_karis", "max_noh_decima", "max_noh_decima_newton"};
-  const std::vector<std::string> wraps = {"horizon_wrap_hermite", "horizon_wrap_accurate", "horizon_wrap_ue4_simple"};
-  const std::vector<std::string> tubeNorms = {"norm_tube_karis", "norm_tube_new_a2"};
+  // Every brick of each area-light slot, in the library's order: a brick added to a slot joins
+  // its table with no change here.
+  const mb::ShaderLibrary lib = mb::ShaderLibrary::load(MB_SOURCE_DIR "/shaderlib");
+  const std::vector<std::string> points = lib.bricksOfSlot("tube_light_point");
+  const std::vector<std::string> sphereNorms = lib.bricksOfSlot("sphere_energy_normalization");
+  const std::vector<std::string> maxNoH = lib.bricksOfSlot("sphere_max_noh");
+  const std::vector<std::string> wraps = lib.bricksOfSlot("sphere_horizon_wrap");
+  const std::vector<std::string> tubeNorms = lib.bricksOfSlot("tube_energy_normalization");
+  const std::vector<std::string> sphereDs = lib.bricksOfSlot("sphere_light_d");
+  // The line-normalization study below is of Karis 2013's own forms: his representative point.
+  const std::string karisPoint = "tube_point_karis";
 
   std::map<std::string, Summary> sphere, tube, diffuse, tubeLineForms;
   Summary sphereConvergence, tubeConvergence;
@@ -205,9 +211,10 @@ int main(int argc, char** argv) {
       args.push_back(sinAlpha);
       withNorms(m, lights::ggxD(callBrick(m, args)[0], alpha));
     }
-    sphere["d_sphere_modification"].add(sphereBrick("d_sphere_modification", gc, alpha, sinAlpha) * V / truthSpec,
-                                        where);
-    bricksOf["d_sphere_modification"] = {"d_sphere_modification"};
+    for (const auto& d : sphereDs) {
+      sphere[d].add(sphereBrick(d, gc, alpha, sinAlpha) * V / truthSpec, where);
+      bricksOf[d] = {d};
+    }
     // The floor of every representative-point method: the exact D averaged over the cap, with V
     // and the cosine taken at the centre.
     sphere["exact D_eff at the centre (no brick)"].add(lights::sphereEffectiveD(gc, alpha, sinAlpha) * V / truthSpec,
@@ -250,7 +257,7 @@ int main(int argc, char** argv) {
         tube[key].add(kPiD * D * callBrick(k, a)[0] * V / truthRatio, where);
         bricksOf[key] = {p, k};
       }
-      if (p != "tube_point_karis") continue;
+      if (p != karisPoint) continue;
       // Settling the line's alpha' (Karis 2013 eq. 17 gives only alpha / alpha'; UE4 takes
       // alpha' = saturate(alpha + 0.5 saturate(length / distance))): the widening's constant
       // and the inner saturate, with the sphere factor as norm_tube_karis.
@@ -314,7 +321,7 @@ int main(int argc, char** argv) {
              {"tube_lobe_fraction_0.02_vs_0.005", tubeConvergence.toJson()}}}};
   // LTC against the same truths, on configurations of its own (area_lights_ltc.hpp).
   out["ltc"] = mb::bench::measureLtcAreaLights(mb::ltc::loadTable(MB_SOURCE_DIR "/shaderlib/ltc/ggx.json"),
-                                               sphereSamples, tubeSamples, seed);
+                                               mb::bench::standardSphereLight(lib), sphereSamples, tubeSamples, seed);
   std::printf("%s\n", out.dump(1).c_str());
   if (argc > 5) writeMarkdown(out, argv[5]);
   return 0;
