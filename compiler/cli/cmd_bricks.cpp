@@ -1,10 +1,12 @@
 // matbricks bricks: the catalogue, with each brick's signature and probe inputs.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_common.hpp"
 #include "common/reference.hpp"
+#include "core/input_file.hpp"
 #include "emit/emitter.hpp"
 #include "library/signature.hpp"
 #include "write/package_writer.hpp"
@@ -18,6 +20,7 @@ struct BricksArgs {
   bool markdown = false;
   std::string output;
   std::string slot;
+  bool noGpu = false;
 };
 
 nlohmann::json brickJson(const ShaderLibrary& lib, const Brick& b) {
@@ -52,8 +55,17 @@ int runBricks(const BricksArgs& a, const GlobalOptions& g) {
                             "unknown slot '" + a.slot + "'",
                             didYouMean(a.slot, names)}});
   }
+  if (a.noGpu && (!a.markdown || a.output.empty()))
+    throw CLI::ValidationError("--no-gpu needs --markdown -o FILE: the figures are carried over from FILE");
   if (a.markdown) {
     if (!a.output.empty()) checkFileOutput(a.output, "catalogue", libraryInputs(lib));
+    if (a.noGpu) {
+      // The figures FILE already prints, for the bricks it lists (none when it does not exist).
+      std::string previous;
+      if (std::filesystem::exists(a.output)) previous = readInputFileOrThrow(a.output, input_kind::kMarkdown);
+      PackageWriter::writeFileAtomically(a.output, brickCatalogueMarkdown(lib, carriedCatalogueFigures(lib, previous)));
+      return kExitOk;
+    }
     auto gpu = openDevice(g);
     std::string md = brickCatalogueMarkdown(lib, *gpu);
     if (a.output.empty()) {
@@ -95,6 +107,9 @@ Command addBricksCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_flag("--markdown", args->markdown,
                 "The catalogue as Markdown with errors measured on the GPU (docs/bricks.md)");
   cmd->add_option("-o,--output", args->output, "With --markdown: write to this file (atomically) instead of stdout");
+  cmd->add_flag("--no-gpu", args->noGpu,
+                "With --markdown -o FILE: no device; the library's parts regenerated, the measured figures carried "
+                "over from FILE for the bricks it lists (a new brick shows 'not measured')");
   return {cmd, [args, &g] { return runBricks(*args, g); }};
 }
 
