@@ -27,6 +27,8 @@
 #include "preview/environment_sh.hpp"
 #include "preview/environment_textures.hpp"
 #include "support/harness_support.hpp"
+#include "support/cli_support.hpp"
+#include "support/pipeline_support.hpp"
 
 using namespace mb;
 using namespace mb::preview;
@@ -45,7 +47,8 @@ harness::VulkanHarness& testGpu() {
 const EnvironmentMaps& testEnvironment(const std::string& name) {
   static std::map<std::string, EnvironmentMaps> built;
   auto it = built.find(name);
-  if (it == built.end()) it = built.emplace(name, buildEnvironment(name, testGpu(), kTestSize)).first;
+  if (it == built.end())
+    it = built.emplace(name, buildEnvironment(test::shippedLibrary(), name, testGpu(), kTestSize)).first;
   REQUIRE(testGpu().validationMessages().empty());
   return it->second;
 }
@@ -93,7 +96,7 @@ std::shared_ptr<harness::Kernel> samplingKernel(const std::string& samplerType, 
 
 TEST_CASE("an unknown environment name is a one-line error listing the valid names", "[environment][vulkan]") {
   try {
-    buildEnvironment("studoi", testGpu());
+    buildEnvironment(test::shippedLibrary(), "studoi", testGpu());
     FAIL("no error");
   } catch (const DiagnosticError& e) {
     REQUIRE(e.diagnostics().size() == 1);
@@ -103,7 +106,8 @@ TEST_CASE("an unknown environment name is a one-line error listing the valid nam
     CHECK(line.find("studio, sky") != std::string::npos);
     CHECK(line.find("did you mean 'studio'") != std::string::npos);
   }
-  CHECK_THROWS_AS(buildEnvironment("sky", testGpu(), 100), DiagnosticError);  // not a power of two
+  CHECK_THROWS_AS(buildEnvironment(test::shippedLibrary(), "sky", testGpu(), 100),
+                  DiagnosticError);  // not a power of two
   CHECK(environmentNames() == std::vector<std::string>{"studio", "sky"});
 }
 
@@ -323,20 +327,44 @@ TEST_CASE("the DFG LUT texture returns the table's texels at their centres", "[e
         CHECK(run.outputs[(j * 8 + i) * 3 + c] == Approx(table.at(i, j, c)).margin(1e-6));
 }
 
+TEST_CASE("environments are prefiltered by the library given (--shaderlib), not the shipped one",
+          "[environment][vulkan]") {
+  // A copy of the library whose prefilter_d brick's GLSL differs (a comment appended): its kernel
+  // is another kernel, so its cube has its own cache entry.
+  const ShaderLibrary& shipped = test::shippedLibrary();
+  const std::filesystem::path root = test::freshTempDir("environment", "library"), lib = root / "shaderlib";
+  std::filesystem::copy(ShaderLibrary::defaultRoot(), lib, std::filesystem::copy_options::recursive);
+  const Brick* d = shipped.brickForKernelRole("prefilter_d");
+  REQUIRE(d);
+  std::ofstream(lib / d->file, std::ios::app) << "// a library of the user's own\n";
+  const ShaderLibrary copy = ShaderLibrary::load(lib);
+  CHECK(prefilterKernelGlsl(copy, "sky", 16) != prefilterKernelGlsl(shipped, "sky", 16));
+  const std::filesystem::path dir = root / "cache";
+  CHECK(environmentCacheEntry(copy, "sky", testGpu(), 8, dir) !=
+        environmentCacheEntry(shipped, "sky", testGpu(), 8, dir));
+  bool fromCache = true;
+  CHECK_FALSE(prefilteredLevels(copy, "sky", testGpu(), 8, dir, &fromCache).empty());
+  CHECK_FALSE(fromCache);
+  CHECK(std::filesystem::exists(environmentCacheEntry(copy, "sky", testGpu(), 8, dir)));
+  CHECK_FALSE(std::filesystem::exists(environmentCacheEntry(shipped, "sky", testGpu(), 8, dir)));
+  REQUIRE(testGpu().validationMessages().empty());
+  std::filesystem::remove_all(root);
+}
+
 TEST_CASE("built environments are cached on disk, and a corrupt entry is rebuilt", "[environment][vulkan]") {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("mb-env-cache-test-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   bool fromCache = true;
-  const std::vector<CubeLevel> built = prefilteredLevels("sky", testGpu(), 8, dir, &fromCache);
+  const std::vector<CubeLevel> built = prefilteredLevels(test::shippedLibrary(), "sky", testGpu(), 8, dir, &fromCache);
   CHECK_FALSE(fromCache);
-  const std::filesystem::path entry = environmentCacheEntry("sky", testGpu(), 8, dir);
+  const std::filesystem::path entry = environmentCacheEntry(test::shippedLibrary(), "sky", testGpu(), 8, dir);
   REQUIRE(std::filesystem::exists(entry));
   auto same = [&](const std::vector<CubeLevel>& levels) {
     REQUIRE(levels.size() == built.size());
     for (size_t i = 0; i < levels.size(); ++i) CHECK(levels[i].rgba == built[i].rgba);
   };
-  same(prefilteredLevels("sky", testGpu(), 8, dir, &fromCache));
+  same(prefilteredLevels(test::shippedLibrary(), "sky", testGpu(), 8, dir, &fromCache));
   CHECK(fromCache);
   // One flipped byte in the payload: the hash no longer matches, so the entry is rebuilt.
   {
@@ -344,9 +372,9 @@ TEST_CASE("built environments are cached on disk, and a corrupt entry is rebuilt
     f.seekp(-5, std::ios::end);
     f.put('\x7f');
   }
-  same(prefilteredLevels("sky", testGpu(), 8, dir, &fromCache));
+  same(prefilteredLevels(test::shippedLibrary(), "sky", testGpu(), 8, dir, &fromCache));
   CHECK_FALSE(fromCache);
-  same(prefilteredLevels("sky", testGpu(), 8, dir, &fromCache));
+  same(prefilteredLevels(test::shippedLibrary(), "sky", testGpu(), 8, dir, &fromCache));
   CHECK(fromCache);
   REQUIRE(testGpu().validationMessages().empty());
   std::filesystem::remove_all(dir);

@@ -32,11 +32,6 @@ namespace fs = std::filesystem;
 constexpr const char* kEntryMagic = "matbricks-environment-1\n";
 constexpr uint32_t kMaxBaseSize = 2048;
 
-const ShaderLibrary& shippedLibrary() {
-  static const ShaderLibrary lib = ShaderLibrary::load(ShaderLibrary::defaultRoot());
-  return lib;
-}
-
 void put(std::string& out, const void* data, size_t bytes) { out.append(static_cast<const char*>(data), bytes); }
 
 std::string encodeLevels(const std::vector<CubeLevel>& levels) {
@@ -93,18 +88,18 @@ bool decodeLevels(const std::string& entry, uint32_t baseSize, std::vector<CubeL
 
 }  // namespace
 
-fs::path environmentCacheEntry(const std::string& name, harness::VulkanHarness& gpu, uint32_t baseSize,
-                               const fs::path& cacheDir) {
+fs::path environmentCacheEntry(const ShaderLibrary& lib, const std::string& name, harness::VulkanHarness& gpu,
+                               uint32_t baseSize, const fs::path& cacheDir) {
   if (cacheDir.empty()) return {};
-  const std::string glsl = prefilterKernelGlsl(shippedLibrary(), name, kPrefilterSamples);
+  const std::string glsl = prefilterKernelGlsl(lib, name, kPrefilterSamples);
   const std::string key = ShaderCache::key({kEntryMagic, glsl, std::to_string(baseSize),
                                             std::to_string(kPrefilterSamples), toolchainVersion(), gpu.deviceName()});
   return cacheDir / "environments" / (key + ".mbenv");
 }
 
-std::vector<CubeLevel> prefilteredLevels(const std::string& name, harness::VulkanHarness& gpu, uint32_t baseSize,
-                                         const fs::path& cacheDir, bool* fromCache) {
-  const fs::path path = environmentCacheEntry(name, gpu, baseSize, cacheDir);
+std::vector<CubeLevel> prefilteredLevels(const ShaderLibrary& lib, const std::string& name, harness::VulkanHarness& gpu,
+                                         uint32_t baseSize, const fs::path& cacheDir, bool* fromCache) {
+  const fs::path path = environmentCacheEntry(lib, name, gpu, baseSize, cacheDir);
   std::vector<CubeLevel> levels;
   if (fromCache) *fromCache = false;
   if (!path.empty()) {
@@ -118,7 +113,7 @@ std::vector<CubeLevel> prefilteredLevels(const std::string& name, harness::Vulka
       return levels;
     }
   }
-  levels = prefilterOnGpu(gpu, prefilterKernelGlsl(shippedLibrary(), name, kPrefilterSamples), name, baseSize);
+  levels = prefilterOnGpu(gpu, prefilterKernelGlsl(lib, name, kPrefilterSamples), name, baseSize);
   if (!path.empty()) {
     std::error_code ec;
     fs::create_directories(path.parent_path(), ec);
@@ -155,19 +150,22 @@ void checkArguments(const std::string& name, uint32_t baseSize) {
 
 std::vector<std::string> environmentNames() { return {"studio", "sky"}; }
 
-EnvironmentMaps buildEnvironment(const std::string& name, harness::VulkanHarness& gpu, uint32_t baseSize) {
+EnvironmentMaps buildEnvironment(const ShaderLibrary& lib, const std::string& name, harness::VulkanHarness& gpu,
+                                 uint32_t baseSize) {
   checkArguments(name, baseSize);
   static std::mutex mutex;
+  // Keyed by the kernel's source: another library (--shaderlib) may prefilter differently.
   static std::map<std::pair<std::string, uint32_t>, EnvironmentMaps> built;
+  const std::pair<std::string, uint32_t> key{prefilterKernelGlsl(lib, name, kPrefilterSamples), baseSize};
   std::lock_guard lock(mutex);
-  auto it = built.find({name, baseSize});
+  auto it = built.find(key);
   if (it != built.end()) return it->second;
   EnvironmentMaps env;
   env.name = name;
   env.samplesPerTexel = kPrefilterSamples;
-  env.levels = prefilteredLevels(name, gpu, baseSize, ShaderCache::defaultDir());
+  env.levels = prefilteredLevels(lib, name, gpu, baseSize, ShaderCache::defaultDir());
   projectSh9(env.levels.front(), env.sh);
-  return built.emplace(std::make_pair(name, baseSize), std::move(env)).first->second;
+  return built.emplace(key, std::move(env)).first->second;
 }
 
 }  // namespace mb::preview

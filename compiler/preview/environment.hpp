@@ -12,6 +12,9 @@
 
 #include "preview/texel_filter.hpp"
 
+namespace mb {
+class ShaderLibrary;
+}
 namespace mb::harness {
 class VulkanHarness;
 }
@@ -59,10 +62,12 @@ struct EnvironmentMaps {
 // {"studio", "sky"}.
 std::vector<std::string> environmentNames();
 
-// The named environment at `baseSize` texels per face edge (a power of two, 1..2048), built
-// on `gpu` the first time and cached in memory for the process (and on disk in the
-// matbricks cache directory, keyed by the kernel source and the parameters). Throws
-// DiagnosticError E-UNKNOWN-ENVIRONMENT (one line listing the valid names) for an unknown name.
-EnvironmentMaps buildEnvironment(const std::string& name, harness::VulkanHarness& gpu, uint32_t baseSize = 128);
+// The named environment at `baseSize` texels per face edge (a power of two, 1..2048),
+// prefiltered by `lib`'s bricks (the library --shaderlib names), built on `gpu` the first time
+// and cached in memory for the process (and on disk in the matbricks cache directory, keyed by
+// the kernel source and the parameters). Throws DiagnosticError E-UNKNOWN-ENVIRONMENT (one
+// line listing the valid names) for an unknown name.
+EnvironmentMaps buildEnvironment(const ShaderLibrary& lib, const std::string& name, harness::VulkanHarness& gpu,
+                                 uint32_t baseSize = 128);
 
 }  // namespace mb::preview

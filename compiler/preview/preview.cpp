@@ -308,7 +308,7 @@ PreviewEnvironment prepareEnvironment(harness::VulkanHarness& gpu, const ShaderL
                                       uint32_t cubeSize, uint32_t lutSize) {
   const auto t0 = Clock::now();
   PreviewEnvironment env;
-  env.maps = buildEnvironment(name, gpu, cubeSize);
+  env.maps = buildEnvironment(lib, name, gpu, cubeSize);
   env.dfg = lut::generateDfgLutOnGpu(gpu, lib, lutSize, 0).table;
   env.cube = uploadEnvironmentCube(gpu, env.maps);
   env.dfgTexture = uploadDfgLut(gpu, env.dfg);
