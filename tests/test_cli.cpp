@@ -202,10 +202,11 @@ TEST_CASE("a list option takes one word per use, never the arguments after it", 
   const auto manifest = nlohmann::json::parse(test::readFile(dir / "p" / "manifest.json"));
   CHECK(manifest["targets"] == nlohmann::json::array({"spirv", "hlsl", "msl"}));
   CHECK(manifest["permutations"][0]["lights"] == nlohmann::json::array({"dir", "point"}));
-  // Space-separated values are not a list: the second word is a material path, and missing.
+  // Space-separated values are not a list: the second word would be a material path; as it is
+  // no file but a light type, that is the usage error, with the comma-separated form.
   auto words = test::runCli("compile -q --no-cache --lights dir point " + material + " -o " + (dir / "q").string());
-  CHECK(words.exitCode == 3);
-  CHECK_THAT(words.output, Catch::Contains("point"));
+  CHECK(words.exitCode == 2);
+  CHECK_THAT(words.output, Catch::Contains("--lights dir,point"));
   CHECK_FALSE(fs::exists(dir / "q"));
 }
 
@@ -279,7 +280,14 @@ TEST_CASE("compile's scene, target and cache options: usage errors exit 2; an un
   for (const Usage& u : {Usage{"compile --scene " + scene + " " + material("ue4_metal.json") + out, "not both"},
                          Usage{"compile --scene " + scene + " --lights dir" + out, "conflicts with --scene"},
                          Usage{"compile " + material("ue4_metal.json") + " --targets dxil" + out, "dxil"},
-                         Usage{"compile " + material("ue4_metal.json"), "-o DIR"}}) {
+                         Usage{"compile " + material("ue4_metal.json"), "-o DIR"},
+                         // A space-separated list: the rest would read as material files.
+                         Usage{"compile " + material("ue4_metal.json") + " --targets spirv hlsl" + out,
+                               "'hlsl' is a target, not a material file: --targets takes one comma-separated list "
+                               "(e.g. --targets spirv,hlsl)"},
+                         Usage{"compile " + material("ue4_metal.json") + " --lights dir point" + out,
+                               "'point' is a light type, not a material file: --lights takes one comma-separated "
+                               "list (e.g. --lights dir,point)"}}) {
     auto r = test::runCli(u.args);
     INFO(u.args << "\n" << r.output);
     CHECK(r.exitCode == 2);

@@ -4,6 +4,7 @@
 // it built (docs/cli.md, docs/scenes.md, docs/targets.md, docs/package.md).
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <thread>
 
 #include "cli/cli_common.hpp"
@@ -38,6 +39,16 @@ int runCompile(const CompileArgs& args, const GlobalOptions& g, const ShardSet* 
       if (o && o->count() > 0)
         throw CLI::ValidationError(o->get_name() +
                                    " conflicts with --scene: the scene file sets that axis (docs/scenes.md)");
+  // `--targets spirv hlsl` or `--lights dir point`: the list ends at the space, and the rest would
+  // be read as material files. A name of the option's values that is no file is that mistake.
+  for (const auto& m : a.materials) {
+    if (std::filesystem::exists(m)) continue;
+    const bool target = parseTarget(m).has_value(), light = parseLightType(m).has_value();
+    if (target || light)
+      throw CLI::ValidationError("'" + m + "' is a " + (target ? "target" : "light type") + ", not a material file: " +
+                                 (target ? "--targets" : "--lights") + " takes one comma-separated list (e.g. " +
+                                 (target ? "--targets spirv," : "--lights dir,") + m + ")");
+  }
   CompileHooks hooks;
   hooks.warnings = [&](const std::vector<Diagnostic>& w) { printDiagnostics(w, g); };
   hooks.built = [&](const BuiltPermutation& b) {
