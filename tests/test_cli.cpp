@@ -227,6 +227,8 @@ TEST_CASE("every subcommand has --help and usage errors exit 2", "[cli]") {
   CHECK(test::runCli("ltc --size 8").exitCode == 2);  // no -o
   CHECK(test::runCli("energy --grid huge").exitCode == 2);
   CHECK(test::runCli("bench --repeats 0").exitCode == 2);
+  CHECK(test::runCli("bricks --no-gpu").exitCode == 2);             // needs --markdown -o FILE
+  CHECK(test::runCli("bricks --markdown --no-gpu").exitCode == 2);  // the figures come from FILE
 }
 
 TEST_CASE("every example eval input evaluates within tolerance", "[cli][eval][examples][vulkan]") {
