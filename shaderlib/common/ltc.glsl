@@ -9,12 +9,27 @@
 
 // How many vertices a light's polygon can have: the capsule's hull takes at most 16 (both caps'
 // 8-gons); it is convex, so each of the two clips (horizon, then D_M's support) adds at most one:
-// 18. Two more for rounding that makes a nearly flat corner non-convex; mb_ltc_clip drops any
+// 18; more for rounding that makes a nearly flat corner non-convex, and mb_ltc_clip drops any
 // vertex beyond the last rather than write past it. The polygon lives in two private arrays,
 // clipped from one into the other and back (the second also holds the capsule's candidate
 // vertices): passing it by value (a struct or array argument) made lavapipe's JIT take 35-57 s
-// per kernel.
-const int MB_LTC_MAX_VERTICES = 20;
+// per kernel. Their size, 40, is set by the compilers rather than the polygons:
+// the loops over a polygon's vertices must stay loops. Mesa's NIR unrolls a loop that indexes a
+// private array by its counter as far as the array's size allows, up to a limit: with arrays of
+// 20 it unrolled every polygon loop, and lavapipe's JIT took ~7 s for one integral and ~37 s
+// for a rectangle and a disk light in one kernel; Mesa's OpenGL compiler ~8 s for one. Sized 40,
+// past that limit (measured: 0.2 s, 0.7 s, 0.2 s; MESA_SHADER_CACHE_DISABLE=true matbricks
+// validate --brick rect_ltc_polygon, and a material --lights rect with --target glsl450), and
+// hinted [[dont_unroll]] for compilers that read GL_EXT_control_flow_attributes (a compiler
+// without it reads the hint as nothing).
+#ifdef GL_EXT_control_flow_attributes
+#extension GL_EXT_control_flow_attributes : enable
+#define MB_DONT_UNROLL [[dont_unroll]]
+#else
+#define MB_DONT_UNROLL
+#endif
+
+const int MB_LTC_MAX_VERTICES = 40;
 vec3 mbLtcPoly[MB_LTC_MAX_VERTICES];
 vec3 mbLtcClipped[MB_LTC_MAX_VERTICES];
 
@@ -23,13 +38,13 @@ vec3 mbLtcClipped[MB_LTC_MAX_VERTICES];
 // they stand for.
 int mb_ltc_clip(int count) {
     int o = 0;
-    for (int i = 0; i < count; ++i) {
+    MB_DONT_UNROLL for (int i = 0; i < count; ++i) {
         vec3 p = mbLtcPoly[i];
         vec3 q = mbLtcPoly[i + 1 == count ? 0 : i + 1];
         if (p.z >= 0.0 && o < MB_LTC_MAX_VERTICES) mbLtcClipped[o++] = p;
         if ((p.z >= 0.0) != (q.z >= 0.0) && o < MB_LTC_MAX_VERTICES) mbLtcClipped[o++] = p + (q - p) * (p.z / (p.z - q.z));
     }
-    for (int i = 0; i < o; ++i) mbLtcPoly[i] = mbLtcClipped[i];
+    MB_DONT_UNROLL for (int i = 0; i < o; ++i) mbLtcPoly[i] = mbLtcClipped[i];
     return o;
 }
 
@@ -38,7 +53,7 @@ int mb_ltc_clip(int count) {
 // accurate for the short edges of small lights where acos(p.q) loses half its digits.
 float mb_ltc_edge_sum(int count) {
     float sum = 0.0;
-    for (int i = 0; i < count; ++i) {
+    MB_DONT_UNROLL for (int i = 0; i < count; ++i) {
         vec3 p = normalize(mbLtcPoly[i]);
         vec3 q = normalize(mbLtcPoly[i + 1 == count ? 0 : i + 1]);
         vec3 c = cross(p, q);
@@ -63,7 +78,7 @@ int mb_ltc_to_local(vec3 n, vec3 v, int count, out vec3 vLocal) {
         mb_orthonormal_basis(n, t1, t2);  // lights.glsl
     }
     t2 = cross(n, t1);
-    for (int i = 0; i < count; ++i) {
+    MB_DONT_UNROLL for (int i = 0; i < count; ++i) {
         vec3 w = mbLtcPoly[i];
         mbLtcPoly[i] = vec3(dot(w, t1), dot(w, t2), dot(w, n));
     }
@@ -75,7 +90,7 @@ int mb_ltc_to_local(vec3 n, vec3 v, int count, out vec3 vLocal) {
 // M^-1 = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]: mapped by M^-1, clipped to D_M's support
 // (M^-1 w).z >= 0, summed. Overwrites mbLtcPoly.
 float mb_ltc_local_integral(float m00, float m02, float m20, float m22, int count) {
-    for (int i = 0; i < count; ++i) {
+    MB_DONT_UNROLL for (int i = 0; i < count; ++i) {
         vec3 p = mbLtcPoly[i];
         mbLtcPoly[i] = vec3(m00 * p.x + m02 * p.z, p.y, m20 * p.x + m22 * p.z);
     }
@@ -135,10 +150,10 @@ float mb_ltc_residual(vec3 v, float alpha, float norm, float m00, float m02, flo
 // 2/3, 1/6, 1/6).
 float mb_ltc_fan_residual(vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22, int count) {
     vec3 centre = vec3(0.0);
-    for (int i = 0; i < count; ++i) centre += normalize(mbLtcPoly[i]);
+    MB_DONT_UNROLL for (int i = 0; i < count; ++i) centre += normalize(mbLtcPoly[i]);
     centre = normalize(centre);
     float sum = 0.0;
-    for (int k = 0; k < count; ++k) {
+    MB_DONT_UNROLL for (int k = 0; k < count; ++k) {
         vec3 a = centre;
         vec3 b = normalize(mbLtcPoly[k]);
         vec3 c = normalize(mbLtcPoly[k + 1 == count ? 0 : k + 1]);
@@ -196,6 +211,30 @@ int mb_ltc_sphere_polygon(vec3 n, vec3 toCenter, float radius) {
     float sinA = mb_ltc_sin_alpha(length(toCenter), radius);
     if (!(sinA > 0.0)) return 0;
     for (int i = 0; i < 8; ++i) mbLtcPoly[i] = mb_ltc_cap_vertex(n, toCenter, sinA, 1.05390926, i);  // sqrt(2 pi / (8 sin(pi / 4)))
+    return 8;
+}
+
+// A rectangle (parallelogram) light: centre c, half-edge vectors ex and ey, emitting on the side
+// ex x ey points to; from behind or edge-on it sends nothing (count 0). Exactly the light's
+// polygon (common/ltc_reference.hpp, rectPolygon). Fills mbLtcPoly; returns its count.
+int mb_ltc_rect_polygon(vec3 c, vec3 ex, vec3 ey) {
+    if (!(dot(cross(ex, ey), c) < 0.0)) return 0;
+    mbLtcPoly[0] = c - ex - ey;
+    mbLtcPoly[1] = c + ex - ey;
+    mbLtcPoly[2] = c + ex + ey;
+    mbLtcPoly[3] = c - ex + ey;
+    return 4;
+}
+
+// A disk (ellipse) light: centre c, semi-axis vectors ex and ey, one-sided as the rectangle; the
+// regular 8-gon of the ellipse's area, c + (ex cos phi_i + ey sin phi_i) sqrt(2 pi / (8 sin(pi / 4)))
+// (diskPolygon). Fills mbLtcPoly; returns its count.
+int mb_ltc_disk_polygon(vec3 c, vec3 ex, vec3 ey) {
+    if (!(dot(cross(ex, ey), c) < 0.0)) return 0;
+    const float r = 0.70710678118654752;  // cos(pi / 4)
+    const vec2 rim[8] = vec2[8](vec2(1.0, 0.0), vec2(r, r), vec2(0.0, 1.0), vec2(-r, r), vec2(-1.0, 0.0), vec2(-r, -r),
+                                vec2(0.0, -1.0), vec2(r, -r));
+    for (int i = 0; i < 8; ++i) mbLtcPoly[i] = c + (ex * rim[i].x + ey * rim[i].y) * 1.05390926;
     return 8;
 }
 

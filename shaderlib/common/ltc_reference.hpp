@@ -15,6 +15,10 @@
 namespace mb::ref::ltc {
 
 using Mat3 = std::array<std::array<double, 3>, 3>;  // row-major: m[row][col]
+// The table's M^-1 from its four stored elements (the middle one is 1; docs/models/lights.md).
+inline Mat3 minvOf(double m00, double m02, double m20, double m22) {
+  return {{{m00, 0, m02}, {0, 1, 0}, {m20, 0, m22}}};
+}
 
 inline Vec3 mul(const Mat3& m, const Vec3& v) {
   return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,

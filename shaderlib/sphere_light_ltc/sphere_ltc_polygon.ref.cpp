@@ -8,10 +8,8 @@
 namespace mb::ref {
 namespace {
 
-ltc::Mat3 minvOf(double m00, double m02, double m20, double m22) { return {{{m00, 0, m02}, {0, 1, 0}, {m20, 0, m22}}}; }
-
 double sphereLtcPolygon(Geometry g, double m00, double m02, double m20, double m22, Vec3 toCenter, double radius) {
-  return ltc::polygonIntegral(minvOf(m00, m02, m20, m22), ltc::viewFrame(g.n, g.v),
+  return ltc::polygonIntegral(ltc::minvOf(m00, m02, m20, m22), ltc::viewFrame(g.n, g.v),
                               ltc::spherePolygon(toCenter, radius, g.n));
 }
 
@@ -20,7 +18,7 @@ double sphereLtcTruth(Geometry g, double m00, double m02, double m20, double m22
   Vec3 c = d > 0.0 ? toCenter / d : g.n;
   double sinA = ltc::ballSinAlpha(d, radius);
   if (!(sinA > 0.0)) return 0.0;
-  ltc::Mat3 minv = minvOf(m00, m02, m20, m22);
+  ltc::Mat3 minv = ltc::minvOf(m00, m02, m20, m22);
   ltc::ViewFrame fr = ltc::viewFrame(g.n, g.v);
   Geometry gc = makeGeometry(g.n, g.v, c);
   // The quadrature grades its panels at the scale of alpha about the mirror ray. A table entry

@@ -8,7 +8,7 @@ namespace mb::ref {
 namespace {
 
 double tubeLtcPolygon(Geometry g, double m00, double m02, double m20, double m22, Vec3 L0, Vec3 L1, double radius) {
-  const ltc::Mat3 minv{{{m00, 0, m02}, {0, 1, 0}, {m20, 0, m22}}};
+  const ltc::Mat3 minv = ltc::minvOf(m00, m02, m20, m22);
   return ltc::polygonIntegral(minv, ltc::viewFrame(g.n, g.v), ltc::tubePolygon(L0, L1, radius, g.n));
 }
 
