@@ -180,8 +180,8 @@ TEST_CASE("validate --json gives one complete record per permutation", "[cli][va
   REQUIRE(recs.size() == 8);
   std::set<std::string> keys;
   for (const auto& rec : recs) keys.insert(rec["key"].get<std::string>());
-  CHECK(keys.count("filament_plastic.standard.dir+point+spot+sphere+tube.ibl_lut.fp32"));
-  CHECK(keys.count("ue4_metal.standard.dir+point+spot+sphere+tube.none.fp32"));
+  CHECK(keys.count("filament_plastic.standard.dir+point+spot+sphere+tube+rect+disk.ibl_lut.fp32"));
+  CHECK(keys.count("ue4_metal.standard.dir+point+spot+sphere+tube+rect+disk.none.fp32"));
   for (const auto& rec : recs) {
     for (const char* k : {"key", "samples", "max_abs_error", "max_rel_error", "max_ulp", "nan_count", "inf_count",
                           "negative_count", "passed", "gpu_ms"})

@@ -57,11 +57,13 @@ const nlohmann::json* uniformAt(const nlohmann::json& reflection, int binding) {
 }
 
 // MbFrameBlock's std140 layout (engine_frame.glsl; GLSL 4.50 spec 7.6.2.2): three vec4s, four
-// 32-byte directional records, five arrays of four 64-byte local records, vec4 sh[9], a vec4.
+// 32-byte directional records, five arrays of four 64-byte local records, vec4 sh[9], a vec4,
+// then (interface version 2) two arrays of four 64-byte area records.
 const std::vector<std::pair<std::string, int>> kFrameMembers = {
-    {"cameraPosition", 0}, {"lightCounts", 16},   {"lightCounts2", 32}, {"dirLights", 48}, {"pointLights", 176},
-    {"spotLights", 432},   {"sphereLights", 688}, {"tubeLights", 944},  {"sh", 1200},      {"environment", 1344}};
-constexpr int kFrameSize = 1360;
+    {"cameraPosition", 0}, {"lightCounts", 16},   {"lightCounts2", 32},  {"dirLights", 48},
+    {"pointLights", 176},  {"spotLights", 432},   {"sphereLights", 688}, {"tubeLights", 944},
+    {"sh", 1200},          {"environment", 1344}, {"rectLights", 1360},  {"diskLights", 1616}};
+constexpr int kFrameSize = 1872;
 
 }  // namespace
 
@@ -144,6 +146,7 @@ TEST_CASE("Every shipped permutation's fragment shader compiles, validates and r
       const EnvironmentMode env = perm.environment;
       if (env == EnvironmentMode::IblLut || env == EnvironmentMode::IblAnalytic) expected[2] = "samplerCube";
       if (env == EnvironmentMode::IblLut) expected[3] = "sampler2D";
+      if (perm.hasLight(LightType::Rect) || perm.hasLight(LightType::Disk)) expected[4] = "sampler2D";
       const auto textures = fragmentTextures(*perm.material);
       for (const auto& t : textures) expected[t.binding] = "sampler2D";
       textured += !textures.empty();
@@ -163,8 +166,8 @@ TEST_CASE("Every shipped permutation's fragment shader compiles, validates and r
         if (binding < kFirstTextureBinding) CHECK(got.count(binding));
     }
   }
-  for (const char* c : {"dir", "point", "spot", "sphere", "tube", "none/fp32", "none/fp16", "ibl_lut/fp32",
-                        "ibl_lut/fp16", "ibl_analytic/fp32", "ibl_analytic/fp16"})
+  for (const char* c : {"dir", "point", "spot", "sphere", "tube", "rect", "disk", "none/fp32", "none/fp16",
+                        "ibl_lut/fp32", "ibl_lut/fp16", "ibl_analytic/fp32", "ibl_analytic/fp16"})
     CHECK(covered.count(c));
   CHECK(textured > 0);
   CHECK(count >= 80);

@@ -73,7 +73,7 @@ void checkFragmentEntry(const fs::path& pkg, const nlohmann::json& p) {
   CHECK(f["reflection"]["stage"] == "fragment");
   bool frame = false;
   for (const auto& u : f["reflection"]["uniform_buffers"])
-    if (u["binding"] == 1) frame = u["name"] == "MbFrameBlock" && u["size"] == 1360;
+    if (u["binding"] == 1) frame = u["name"] == "MbFrameBlock" && u["size"] == 1872;
   CHECK(frame);
   // Samplers: the environment's and the material's textures, at their documented bindings.
   std::set<int> samplers;
@@ -82,12 +82,17 @@ void checkFragmentEntry(const fs::path& pkg, const nlohmann::json& p) {
     CHECK(samplers.count(2));
     CHECK(samplers.count(3));
   }
+  // The LTC table at 4 with a rectangle or disk light, the material's textures from 5.
+  bool area = false;
+  for (const auto& l : p["lights"]) area = area || l == "rect" || l == "disk";
+  CHECK(samplers.count(4) == (area ? 1u : 0u));
   for (const auto& t : f["textures"]) {
-    CHECK(t["binding"].get<int>() >= 4);
+    CHECK(t["binding"].get<int>() >= 5);
     samplers.erase(t["binding"].get<int>());
   }
   samplers.erase(2);
   samplers.erase(3);
+  samplers.erase(4);
   CHECK(samplers.empty());
 }
 
@@ -96,17 +101,17 @@ void checkFragmentEntry(const fs::path& pkg, const nlohmann::json& p) {
 TEST_CASE("compile writes each permutation's fragment shader in every target, with manifest entry and header",
           "[fragment][package]") {
   const fs::path dir = test::freshTempDir("fragment", "package");
-  const std::string inputs = test::materialPath("worn_car_paint.json") + " " +
-                             (test::sourceDir() / "examples/gltf/textured_props.gltf").string() +
-                             " --lights dir,point,spot,sphere,tube --environment ibl_lut --namespace frag_pkg" +
-                             kAllTargets;
+  const std::string inputs =
+      test::materialPath("worn_car_paint.json") + " " +
+      (test::sourceDir() / "examples/gltf/textured_props.gltf").string() +
+      " --lights dir,point,spot,sphere,tube,rect,disk --environment ibl_lut --namespace frag_pkg" + kAllTargets;
   const nlohmann::json manifest = compileTo("-j1 " + inputs, dir / "a");
   // Byte-identical at another -j and with one permutation per stream window.
   compileTo("-j2 --stream-window 1 " + inputs, dir / "b");
   const auto files = treeOf(dir / "a");
   CHECK(files == treeOf(dir / "b"));
 
-  CHECK(manifest["fragment"]["interface_version"] == 1);
+  CHECK(manifest["fragment"]["interface_version"] == 2);
   CHECK(manifest["fragment"]["frame"]["binding"] == 1);
   REQUIRE(manifest["permutations"].size() == 5);  // worn_car_paint and textured_props' four
   size_t textured = 0;
@@ -118,8 +123,10 @@ TEST_CASE("compile writes each permutation's fragment shader in every target, wi
 
   // The header: MbFrameBlock and the bindings, and per permutation its fragment shader.
   std::string tu = "#include \"matbricks_materials.hpp\"\n";
-  tu += "static_assert(sizeof(frag_pkg::MbFrameBlock) == 1360);\n";
-  tu += "static_assert(frag_pkg::kFragmentFrameBinding == 1 && frag_pkg::kFragmentFirstTextureBinding == 4);\n";
+  tu += "static_assert(sizeof(frag_pkg::MbFrameBlock) == 1872);\n";
+  tu +=
+      "static_assert(frag_pkg::kFragmentFrameBinding == 1 && frag_pkg::kFragmentLtcTableBinding == 4 && "
+      "frag_pkg::kFragmentFirstTextureBinding == 5);\n";
   for (const auto& p : manifest["permutations"]) {
     const std::string find = "frag_pkg::findPermutation(\"" + p["key"].get<std::string>() + "\")";
     tu += "static_assert(" + find + "->fragmentSpirv == \"" + p["fragment"]["files"]["spirv"].get<std::string>() +

@@ -90,10 +90,16 @@ TEST_CASE("HLSL and MSL includes of every shipped material compile in their wrap
       CHECK(definedContract(body) == expected);
       CHECK(body.find("main(") == std::string::npos);
       CHECK(body.find("gl_WorkGroupSize") == std::string::npos);
-      // The hooks the environment calls, and only those, are left to the engine.
-      const size_t hooks = c.key.find(".ibl_lut.") != std::string::npos        ? 2
-                           : c.key.find(".ibl_analytic.") != std::string::npos ? 1
-                                                                               : 0;
+      // The hooks the environment and the lights call, and only those, are left to the engine:
+      // the LTC table's two for rectangle and disk lights.
+      const size_t ltcHooks = c.key.find("+rect") != std::string::npos || c.key.find("+disk") != std::string::npos ||
+                                      c.key.find(".rect") != std::string::npos ||
+                                      c.key.find(".disk") != std::string::npos
+                                  ? 2
+                                  : 0;
+      const size_t hooks = ltcHooks + (c.key.find(".ibl_lut.") != std::string::npos        ? 2
+                                       : c.key.find(".ibl_analytic.") != std::string::npos ? 1
+                                                                                           : 0);
       CHECK(hookPrototypes(body).size() == hooks);
       CHECK(missingContractFunctions(glsl, body).empty());
       const bool msl = target == "msl";

@@ -8,6 +8,8 @@
 #include "compile/target_checks.hpp"
 #include "compile/targets.hpp"
 #include "core/diagnostics.hpp"
+#include "core/light_type.hpp"
+#include "emit/light_contract.hpp"
 
 namespace mb {
 namespace {
@@ -130,14 +132,19 @@ int balance(const std::string& s, char open, char close) {
 }  // namespace
 
 const std::vector<std::string>& contractFunctionNames() {
-  static const std::vector<std::string> names{
-      "materialInputs", "preparePixel",     "emittedRadiance", "shadeDirectionalLight", "shadePointLight",
-      "shadeSpotLight", "shadeSphereLight", "shadeTubeLight",  "shadeEnvironment",      "evaluateMaterial"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n{"materialInputs", "preparePixel", "emittedRadiance"};
+    for (LightType t : allLightTypes()) n.push_back(lightEntryPoint(t));
+    n.push_back("shadeEnvironment");
+    n.push_back("evaluateMaterial");
+    return n;
+  }();
   return names;
 }
 
 const std::vector<std::string>& fetchHookNames() {
-  static const std::vector<std::string> names{"mb_fetch_prefiltered", "mb_fetch_dfg"};
+  static const std::vector<std::string> names{"mb_fetch_prefiltered", "mb_fetch_dfg", "mb_fetch_ltc_matrix",
+                                              "mb_fetch_ltc_magnitude"};
   return names;
 }
 

@@ -24,7 +24,8 @@ namespace mb {
 // The contract's public functions (docs/models.md "GLSL contract"), in calling order; a
 // permutation has those of its lights and environment.
 const std::vector<std::string>& contractFunctionNames();
-// The texture-fetch hooks an engine defines (needed by the IBL environments).
+// The texture-fetch hooks an engine defines (needed by the IBL environments and, the LTC table's,
+// by rectangle and disk lights).
 const std::vector<std::string>& fetchHookNames();
 
 enum class IncludeLanguage { Glsl, Hlsl, Msl };

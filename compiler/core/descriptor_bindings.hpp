@@ -16,11 +16,13 @@ inline constexpr int kKernelParamsBinding = 2;
 // none, so the two never meet in one kernel.
 inline constexpr int kKernelFirstTextureBinding = 2;
 
-// Fragment shaders: interface version 1 (docs/fragment-stage.md).
+// Fragment shaders: interface version 2 (docs/fragment-stage.md).
+inline constexpr int kFragmentInterfaceVersion = 2;
 inline constexpr int kFragmentParamsBinding = 0;       // the material's parameters, std140
 inline constexpr int kFragmentFrameBinding = 1;        // MbFrameBlock (engine_frame.glsl)
 inline constexpr int kFragmentPrefilteredBinding = 2;  // samplerCube, ibl_* environments
 inline constexpr int kFragmentDfgBinding = 3;          // sampler2D, ibl_lut
-inline constexpr int kFirstTextureBinding = 4;         // sampler2D per texture record
+inline constexpr int kFragmentLtcBinding = 4;          // sampler2D, the LTC table: rect and disk lights
+inline constexpr int kFirstTextureBinding = 5;         // sampler2D per texture record
 
 }  // namespace mb

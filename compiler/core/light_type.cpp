@@ -16,6 +16,8 @@ const AxisNames<LightType>& lightTypeAxis() {
       {LightType::Spot, "spot"},
       {LightType::Sphere, "sphere"},
       {LightType::Tube, "tube"},
+      {LightType::Rect, "rect"},
+      {LightType::Disk, "disk"},
   });
   return a;
 }

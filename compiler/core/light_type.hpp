@@ -16,9 +16,9 @@ namespace mb {
 // In axis order: the order a permutation's key, the command line and a scene's "expected one
 // of" list them. canonicalLights() sorts by the enumerators' order, so a new type goes here and
 // in light_type.cpp's table at the same place.
-enum class LightType { Dir, Point, Spot, Sphere, Tube };
+enum class LightType { Dir, Point, Spot, Sphere, Tube, Rect, Disk };
 
-const std::string& lightTypeName(LightType t);  // "dir", "point", "spot", "sphere", "tube"
+const std::string& lightTypeName(LightType t);  // "dir", "point", "spot", "sphere", "tube", "rect", "disk"
 // Every type, in axis order.
 const std::vector<LightType>& allLightTypes();
 // Their names, in the same order (what the command line, a scene and a manifest accept).

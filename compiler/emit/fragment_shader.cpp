@@ -30,7 +30,8 @@ struct LightKind {
 constexpr LightKind kLightKinds[] = {
     {LightType::Dir, "dirLights", "lightCounts.x"},    {LightType::Point, "pointLights", "lightCounts.y"},
     {LightType::Spot, "spotLights", "lightCounts.z"},  {LightType::Sphere, "sphereLights", "lightCounts.w"},
-    {LightType::Tube, "tubeLights", "lightCounts2.x"},
+    {LightType::Tube, "tubeLights", "lightCounts2.x"}, {LightType::Rect, "rectLights", "lightCounts2.y"},
+    {LightType::Disk, "diskLights", "lightCounts2.z"},
 };
 
 // The contract struct of light `L` (an MbDirectionalLightGpu or MbLocalLightGpu expression)
@@ -44,6 +45,9 @@ std::string lightStruct(LightType type, const std::string& L) {
     return "SpotLight(" + rel + ", vec3(" + L + ".axis.xyz), " + intensity + ", float(" + L + ".axis.w), float(" + L +
            ".params.x))";
   if (type == LightType::Sphere) return "SphereLight(" + rel + ", float(" + L + ".position.w), " + intensity + ")";
+  if (type == LightType::Rect || type == LightType::Disk)
+    return lightStructName(type) + "(" + rel + ", vec3(" + L + ".halfX.xyz), vec3(" + L + ".halfY.xyz), vec3(" + L +
+           ".luminance.rgb))";
   return "TubeLight(" + rel + ", vec3(" + L + ".axis.xyz - mbWorldPosition), float(" + L + ".position.w), " +
          intensity + ")";
 }
@@ -58,7 +62,8 @@ class FragmentWriter {
   }
 
   void write() {
-    w_.line("// Fragment stage (docs/fragment-stage.md, interface version 1).");
+    w_.line("// Fragment stage (docs/fragment-stage.md, interface version " +
+            std::to_string(kFragmentInterfaceVersion) + ").");
     declarations();
     hooks();
     main();
@@ -66,6 +71,7 @@ class FragmentWriter {
 
  private:
   bool ibl() const { return isIbl(perm_.environment); }
+  bool ltc() const { return perm_.hasLight(LightType::Rect) || perm_.hasLight(LightType::Disk); }
   // Shading-side text: written in fp32 GLSL, rewritten at fp16.
   void shading(const std::string& glsl) { w_.line(p_ == ShaderPrecision::Fp16 ? rewriteToFp16(glsl) : glsl); }
   const FragmentTexture* textureOf(const std::string& param) const {
@@ -101,6 +107,9 @@ class FragmentWriter {
     if (usesDfgLut(perm_.environment))
       w_.line("layout(set = 0, binding = " + std::to_string(kFragmentDfgBinding) + ") uniform " + hp_ +
               "sampler2D mbDfgLut;");
+    if (ltc())
+      w_.line("layout(set = 0, binding = " + std::to_string(kFragmentLtcBinding) + ") uniform " + hp_ +
+              "sampler2D mbLtcTable;");
     for (const auto& t : textures_)
       w_.line("layout(set = 0, binding = " + std::to_string(t.binding) + ") uniform " + hp_ + "sampler2D mbTexture" +
               std::to_string(t.binding - kFirstTextureBinding) + ";  // " + t.param + (t.srgb ? ", sRGB view" : ""));
@@ -111,6 +120,7 @@ class FragmentWriter {
   // backs them (probe_scene.cpp): no prefiltered radiance outside the IBL modes, and the DFG
   // texel (0, 1, 0) outside ibl_lut, which the models do not read there.
   void hooks() {
+    if (ltc()) ltcHooks();
     if (perm_.environment == EnvironmentMode::None) return;
     const bool half = p_ == ShaderPrecision::Fp16;
     shading("vec3 mb_fetch_prefiltered(vec3 r, float lod) {");
@@ -128,6 +138,36 @@ class FragmentWriter {
       w_.line("    return f16vec3(textureLod(mbDfgLut, vec2(float(NoV), float(perceptualRoughness)), 0.0).rgb);");
     else
       w_.line("    return textureLod(mbDfgLut, vec2(NoV, perceptualRoughness), 0.0).rgb;");
+    w_.line("}");
+  }
+
+  // The LTC table (docs/fragment-stage.md "LTC table"): 128 x 64 texels, M^-1's elements in
+  // columns 0-63 and the magnitudes in 64-127 (rg); row i is perceptual roughness i / 63,
+  // column j is u = j / 63 with n.v = 1 - u^2 (shaderlib/ltc/ggx.json). Interpolated here from
+  // four texelFetch rather than by the sampler: a GPU's bilinear filter may weigh texels with as
+  // few as 8 fractional bits (Vulkan's subTexelPrecisionBits), and M^-1 changes by up to half
+  // its value from one texel to the next at low roughness, so the filter's rounding would decide
+  // the result; in fp32 arithmetic every conforming GPU computes the same.
+  void ltcHooks() {
+    const bool half = p_ == ShaderPrecision::Fp16;
+    w_.line(hp_ + "vec4 mb_ltc_texel(" + hp_ + "float NoV, " + hp_ + "float perceptualRoughness, int column0) {");
+    w_.line("    " + hp_ + "vec2 p = clamp(vec2(sqrt(max(1.0 - NoV, 0.0)), perceptualRoughness), 0.0, 1.0) * 63.0;");
+    w_.line("    " + hp_ + "vec2 i = min(floor(p), vec2(62.0));");
+    w_.line("    " + hp_ + "vec2 t = p - i;");
+    w_.line("    ivec2 c = ivec2(i) + ivec2(column0, 0);");
+    w_.line("    " + hp_ +
+            "vec4 a = mix(texelFetch(mbLtcTable, c, 0), texelFetch(mbLtcTable, c + ivec2(1, 0), 0), t.x);");
+    w_.line(
+        "    " + hp_ +
+        "vec4 b = mix(texelFetch(mbLtcTable, c + ivec2(0, 1), 0), texelFetch(mbLtcTable, c + ivec2(1, 1), 0), t.x);");
+    w_.line("    return mix(a, b, t.y);");
+    w_.line("}");
+    const std::string args = half ? "float(NoV), float(perceptualRoughness)" : "NoV, perceptualRoughness";
+    shading("vec4 mb_fetch_ltc_matrix(float NoV, float perceptualRoughness) {");
+    w_.line(std::string("    return ") + (half ? "f16vec4(" : "(") + "mb_ltc_texel(" + args + ", 0));");
+    w_.line("}");
+    shading("vec2 mb_fetch_ltc_magnitude(float NoV, float perceptualRoughness) {");
+    w_.line(std::string("    return ") + (half ? "f16vec2(" : "(") + "mb_ltc_texel(" + args + ", 64).xy);");
     w_.line("}");
   }
 

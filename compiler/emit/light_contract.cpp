@@ -16,6 +16,10 @@ std::string lightStructName(LightType t) {
       return "SphereLight";
     case LightType::Tube:
       return "TubeLight";
+    case LightType::Rect:
+      return "RectLight";
+    case LightType::Disk:
+      return "DiskLight";
   }
   throw std::logic_error("lightStructName: a light type without a GLSL struct");
 }

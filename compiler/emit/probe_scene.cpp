@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numbers>
 
+#include "emit/light_contract.hpp"
+
 namespace mb {
 namespace {
 
@@ -13,10 +15,28 @@ constexpr Range kIntensity{0.0, 4.0};
 constexpr Range kDistance{0.25, 20.0};
 constexpr Range kFalloffRadius{0.5, 40.0};
 constexpr Range kPrefiltered{0.0, 4.0};
+// Rectangle and disk lights: luminance (pre-exposed units), so the irradiance reaches pi times it.
+constexpr Range kLuminance{0.0, 4.0};
+
+bool hasLtcLight(const ProbeScene& scene) { return scene.has(LightType::Rect) || scene.has(LightType::Disk); }
 
 void lightInputs(LightType type, std::vector<ProbeSceneInput>& out) {
   auto add = [&](const std::string& name, ValueType t, Range r) { out.push_back({lightTypeName(type) + name, t, r}); };
   if (type == LightType::Dir) return;  // l and the optional illuminance
+  if (type == LightType::Rect || type == LightType::Disk) {
+    // Centred on l at Distance; the edges (semi-axes) turned by AxisAngle about l and the
+    // second tilted by Tilt from facing the point (0 and pi: edge-on). Sizes are fractions of
+    // the distance; a negative HalfWidth turns the light's back to the point (no light).
+    // HalfHeight stays below 1, so the light stays at least a tenth of its distance from the
+    // point (a point on an emitter has no meaningful fp32 polygon: the bricks' domains).
+    add("Luminance", ValueType::Vec3, kLuminance);
+    add("Distance", ValueType::Float, kDistance);
+    add("AxisAngle", ValueType::Float, {0.0, std::numbers::pi});
+    add("Tilt", ValueType::Float, {0.0, std::numbers::pi});
+    add("HalfWidth", ValueType::Float, {-0.4, 1.5});
+    add("HalfHeight", ValueType::Float, {0.0, 0.9});
+    return;
+  }
   add("Intensity", ValueType::Vec3, kIntensity);
   add("Distance", ValueType::Float, kDistance);
   add("FalloffRadius", ValueType::Float, kFalloffRadius);
@@ -53,6 +73,16 @@ std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene) {
     out.push_back({"ao", ValueType::Float, {0.0, 1.0}});
   }
   if (isIbl(scene.environment)) out.push_back({"prefiltered", ValueType::Vec3, kPrefiltered});
+  if (hasLtcLight(scene)) {
+    // The LTC table's texel: M^-1 within the table's ranges for roughness >= 0.05 (as the
+    // polygon bricks' domains), norm = Int D V (n.l) <= 1 and its Fresnel part below it.
+    out.push_back({"ltcM00", ValueType::Float, {0.05, 1.0}});
+    out.push_back({"ltcM02", ValueType::Float, {0.0, 0.6}});
+    out.push_back({"ltcM20", ValueType::Float, {-0.3, 0.0}});
+    out.push_back({"ltcM22", ValueType::Float, {0.05, 1.7}});
+    out.push_back({"ltcNorm", ValueType::Float, {0.45, 1.0}});
+    out.push_back({"ltcFresnel", ValueType::Float, {0.0, 0.45}});
+  }
   if (usesDfgLut(scene.environment)) {
     // DFG LUT texels: Int Gv Fc <= Int Gv <= 1 in Filament's LUT.
     out.push_back({"dfgX", ValueType::Float, {0.0, 0.45}});
@@ -64,8 +94,14 @@ std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene) {
 
 double probeSceneRadianceBound(const ProbeScene& scene) {
   double bound = 0;
-  for (LightType type : scene.lights)
-    bound += type == LightType::Dir ? 1.0 : kIntensity.hi / (kDistance.lo * kDistance.lo);
+  for (LightType type : scene.lights) {
+    if (type == LightType::Dir)
+      bound += 1.0;
+    else if (type == LightType::Rect || type == LightType::Disk)
+      bound += std::numbers::pi * kLuminance.hi;  // irradiance Int L (n.l)+ dw <= pi L
+    else
+      bound += kIntensity.hi / (kDistance.lo * kDistance.lo);
+  }
   if (scene.environment != EnvironmentMode::None) {
     // |E(n)| <= pi (|L00| + 2/3 sum |L1m| + 1/4 sum |L2m|) * sqrt(4 pi)-ish; 4 pi covers it.
     bound += 4.0 * std::numbers::pi * (2.0 + 8 * 0.5);
@@ -77,7 +113,7 @@ double probeSceneRadianceBound(const ProbeScene& scene) {
 
 std::vector<std::string> probeSceneGlobals(const ProbeScene& scene) {
   std::vector<std::string> g;
-  if (scene.fullFrame || scene.has(LightType::Spot) || scene.has(LightType::Tube)) {
+  if (scene.fullFrame || scene.has(LightType::Spot) || scene.has(LightType::Tube) || hasLtcLight(scene)) {
     // The frame's tangent and the spot and tube axes turn by an input angle, and the reference
     // reads that angle exactly (probe_scene_reference.cpp). GLSL sin and cos are bounded by the
     // Vulkan spec only to 2^-11 absolute ("Precision of GLSL.std.450 Instructions"); SwiftShader
@@ -92,6 +128,17 @@ std::vector<std::string> probeSceneGlobals(const ProbeScene& scene) {
     g.push_back("        x2 * (-2.75573192e-7 + x2 * (2.08767570e-9 + x2 * -1.14707456e-11))))));  // cos(x)");
     g.push_back("    c = -x * (1.0 + x2 * (-1.66666667e-1 + x2 * (8.33333333e-3 + x2 * (-1.98412698e-4 +");
     g.push_back("        x2 * (2.75573192e-6 + x2 * (-2.50521084e-8 + x2 * 1.60590438e-10))))));  // -sin(x)");
+    g.push_back("}");
+  }
+  if (hasLtcLight(scene)) {
+    g.push_back("// The LTC table's fetches: the record's texel for every lookup (as the DFG texel).");
+    g.push_back("vec4 mbProbeLtcMatrix;");
+    g.push_back("vec2 mbProbeLtcMagnitude;");
+    g.push_back("vec4 mb_fetch_ltc_matrix(float NoV, float perceptualRoughness) {");
+    g.push_back("    return mbProbeLtcMatrix;");
+    g.push_back("}");
+    g.push_back("vec2 mb_fetch_ltc_magnitude(float NoV, float perceptualRoughness) {");
+    g.push_back("    return mbProbeLtcMagnitude;");
     g.push_back("}");
   }
   if (scene.environment == EnvironmentMode::None) return g;
@@ -126,6 +173,10 @@ std::vector<std::string> probeSceneFrame(const ProbeScene& scene) {
   } else {
     s.push_back("f.ng = f.n;");
     s.push_back("f.t = mbT0;");
+  }
+  if (hasLtcLight(scene)) {
+    s.push_back("mbProbeLtcMatrix = vec4(p_ltcM00, p_ltcM02, p_ltcM20, p_ltcM22);");
+    s.push_back("mbProbeLtcMagnitude = vec2(p_ltcNorm, p_ltcFresnel);");
   }
   if (scene.environment != EnvironmentMode::None) {
     // Before preparePixel: an IBL mode fetches the DFG texel while preparing the pixel.
@@ -174,6 +225,19 @@ std::vector<std::string> probeSceneShading(const ProbeScene& scene) {
       s.push_back(
           "    r += shadeTubeLight(px, f, TubeLight(center - halfSegment, center + halfSegment, "
           "p_tubeRadiusFraction * p_tubeDistance, p_tubeIntensity, p_tubeFalloffRadius));");
+      s.push_back("}");
+    } else if (type == LightType::Rect || type == LightType::Disk) {
+      const std::string p = "p_" + lightTypeName(type);
+      s.push_back("{");
+      s.push_back("    float sinA, cosA, sinT, cosT;");
+      s.push_back("    mb_probe_sincos(" + p + "AxisAngle, sinA, cosA);");
+      s.push_back("    mb_probe_sincos(" + p + "Tilt, sinT, cosT);");
+      s.push_back("    vec3 e1 = cosA * lt + sinA * lb;");
+      s.push_back("    vec3 e2 = cross(lu, e1);");
+      s.push_back("    vec3 halfX = e1 * (" + p + "HalfWidth * " + p + "Distance);");
+      s.push_back("    vec3 halfY = -(e2 * sinT + lu * cosT) * (" + p + "HalfHeight * " + p + "Distance);");
+      s.push_back("    r += " + lightEntryPoint(type) + "(px, f, " + lightStructName(type) + "(lu * " + p +
+                  "Distance, halfX, halfY, " + p + "Luminance));");
       s.push_back("}");
     }
   }

@@ -11,6 +11,9 @@
 
 namespace mb::ltc {
 
+// The table the library ships, relative to its root (the fragment stage's LTC texture).
+inline constexpr const char* kLibraryTableFile = "ltc/ggx.json";
+
 struct TableEntry {
   float m00 = 1, m02 = 0, m20 = 0, m22 = 1;  // M^-1 = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]
   float norm = 0, fresnel = 0;

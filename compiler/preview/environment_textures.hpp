@@ -6,6 +6,7 @@
 
 #include "harness/gpu_texture.hpp"
 #include "lut/dfg_lut.hpp"
+#include "ltc/ltc_table.hpp"
 #include "preview/environment.hpp"
 
 namespace mb::preview {
@@ -19,5 +20,10 @@ std::shared_ptr<harness::GpuTexture> uploadEnvironmentCube(harness::VulkanHarnes
 // The LUT as a size x size 2D image, one level; its three channels in r, g, b (lut/dfg_lut.hpp
 // order, row 0 = smoothest at t = 0) and a = 1.
 std::shared_ptr<harness::GpuTexture> uploadDfgLut(harness::VulkanHarness& gpu, const lut::LutTable& table);
+
+// The LTC table as the fragment stage reads it (docs/fragment-stage.md "LTC table"): 2 size x
+// size texels, entry (i, j) at texel (j, i) as (m00, m02, m20, m22) and at (size + j, i) as
+// (norm, fresnel, 0, 0).
+std::shared_ptr<harness::GpuTexture> uploadLtcTable(harness::VulkanHarness& gpu, const ltc::Table& table);
 
 }  // namespace mb::preview

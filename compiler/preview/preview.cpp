@@ -126,6 +126,9 @@ std::vector<std::map<std::string, std::vector<double>>> sphereModelInputs(harnes
 harness::GraphicsJob sphereJob(const PreviewOptions& o, const MaterialDesc& m, const std::vector<SphereParams>& spheres,
                                const std::vector<PreviewLight>& lights, const PreviewEnvironment& env,
                                EnvironmentMode environmentMode) {
+  const bool ltcTable = std::any_of(lights.begin(), lights.end(), [](const PreviewLight& l) {
+    return l.type == LightType::Rect || l.type == LightType::Disk;
+  });
   harness::GraphicsJob job;
   job.width = o.size * static_cast<uint32_t>(spheres.size());
   job.height = o.size;
@@ -149,6 +152,7 @@ harness::GraphicsJob sphereJob(const PreviewOptions& o, const MaterialDesc& m, c
     if (ibl) d.textures.push_back({kFragmentPrefilteredBinding, {env.cube->view(), env.cube->sampler()}});
     if (usesDfgLut(environmentMode))
       d.textures.push_back({kFragmentDfgBinding, {env.dfgTexture->view(), env.dfgTexture->sampler()}});
+    if (ltcTable) d.textures.push_back({kFragmentLtcBinding, {env.ltcTexture->view(), env.ltcTexture->sampler()}});
     d.pushConstants = push;
     d.viewport = {o.size * static_cast<uint32_t>(s), 0, o.size, o.size};
     job.draws.push_back(std::move(d));
@@ -312,6 +316,8 @@ PreviewEnvironment prepareEnvironment(harness::VulkanHarness& gpu, const ShaderL
   env.dfg = lut::generateDfgLutOnGpu(gpu, lib, lutSize, 0).table;
   env.cube = uploadEnvironmentCube(gpu, env.maps);
   env.dfgTexture = uploadDfgLut(gpu, env.dfg);
+  env.ltc = ltc::loadTable((lib.root() / ltc::kLibraryTableFile).string());
+  env.ltcTexture = uploadLtcTable(gpu, env.ltc);
   env.buildMs = msSince(t0);
   return env;
 }
@@ -380,6 +386,7 @@ PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& li
   scene.lights = lights;
   scene.environment = &env.maps;
   scene.dfg = &env.dfg;
+  scene.ltc = &env.ltc;
   scene.samplerLimits = r.samplerPrecision = o.samplerLimits.value_or(harness::samplerPrecision(gpu));
   scene.tile = o.size;
   scene.sphereInputs = sphereModelInputs(gpu, lib, perm, spheres);

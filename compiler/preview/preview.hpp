@@ -19,6 +19,7 @@
 #include "harness/vulkan_harness.hpp"
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
+#include "ltc/ltc_table.hpp"
 #include "lut/dfg_lut.hpp"
 #include "preview/environment.hpp"
 #include "preview/preview_image.hpp"
@@ -62,7 +63,8 @@ struct PreviewOptions {
 struct PreviewEnvironment {
   EnvironmentMaps maps;
   lut::LutTable dfg;
-  std::shared_ptr<harness::GpuTexture> cube, dfgTexture;
+  ltc::Table ltc;  // the library's LTC table (rectangle and disk lights)
+  std::shared_ptr<harness::GpuTexture> cube, dfgTexture, ltcTexture;
   double buildMs = 0;  // environment, LUT and uploads
 };
 // Throws DiagnosticError E-UNKNOWN-ENVIRONMENT for an unknown name (listing the valid ones).

@@ -60,6 +60,14 @@ ref::ModelEvalInput referenceWorkspace(const ReferenceScene& scene, size_t spher
   e.bricks = scene.bricks;
   e.features.insert(scene.features.begin(), scene.features.end());
   e.inputs = scene.sphereInputs.at(sphere);
+  if (const ltc::Table* table = scene.ltc) {
+    // The fragment shader's mb_ltc_texel: the four entries around the point, blended in fp32
+    // arithmetic (docs/fragment-stage.md "LTC table"); here in double, the same weights.
+    e.fetchLtc = [table](double NoV, double perceptualRoughness) {
+      const ltc::TableSample s = ltc::sampleBilinear(*table, perceptualRoughness, NoV);
+      return ref::LtcTexel{s.minv[0][0], s.minv[0][2], s.minv[2][0], s.minv[2][2], s.norm, s.fresnel};
+    };
+  }
   if (scene.environmentMode == EnvironmentMode::None) return e;
   ref::Environment env;
   env.mode = environmentModeName(scene.environmentMode);  // the reference's own vocabulary
@@ -112,6 +120,8 @@ ref::Vec3 referencePixel(const ReferenceScene& scene, const PixelAttributes& a, 
   e.spot.reset();
   e.sphere.reset();
   e.tube.reset();
+  e.rect.reset();
+  e.disk.reset();
   for (LightType type : scene.lightTypes) setLight(scene.lights, type, 0, position, e);
   return scene.model(e);
 }

@@ -13,6 +13,7 @@
 
 #include "common/model_reference.hpp"
 #include "core/environment_mode.hpp"
+#include "ltc/ltc_table.hpp"
 #include "lut/dfg_lut.hpp"
 #include "preview/environment.hpp"
 #include "preview/preview_scene.hpp"
@@ -36,6 +37,7 @@ struct ReferenceScene {
   std::vector<PreviewLight> lights;
   const EnvironmentMaps* environment = nullptr;  // IBL and SH modes
   const lut::LutTable* dfg = nullptr;            // ibl_lut
+  const ltc::Table* ltc = nullptr;               // rectangle and disk lights
   // The device's sampler precision, which every fetch's sampling bound assumes, and (test
   // double only) a quantizer that makes the fetches filter as such a device may.
   harness::SamplerPrecision samplerLimits;

@@ -22,6 +22,9 @@ struct DirectionalGpu {
 struct LocalGpu {
   float position[4], intensity[4], axis[4], params[4];
 };
+struct AreaGpu {
+  float position[4], halfX[4], halfY[4], luminance[4];
+};
 struct FrameBlock {
   float cameraPosition[4];
   uint32_t lightCounts[4], lightCounts2[4];
@@ -29,8 +32,9 @@ struct FrameBlock {
   LocalGpu pointLights[kMaxLights], spotLights[kMaxLights], sphereLights[kMaxLights], tubeLights[kMaxLights];
   float sh[9][4];
   float environment[4];
+  AreaGpu rectLights[kMaxLights], diskLights[kMaxLights];
 };
-static_assert(sizeof(FrameBlock) == 1360, "std140 size of MbFrameBlock");
+static_assert(sizeof(FrameBlock) == 1872, "std140 size of MbFrameBlock");
 
 std::array<float, 3> unit(double x, double y, double z) {
   const double l = std::sqrt(x * x + y * y + z * z);
@@ -102,13 +106,25 @@ std::vector<PreviewLight> defaultLights(const std::vector<LightType>& types) {
       l.position = {-2.0f, 2.0f, 2.5f};
       l.radius = 0.4f;
       l.intensity = {12.0f, 14.0f, 16.0f};
+    } else if (type == LightType::Rect || type == LightType::Disk) {
+      // A soft box above right and a round panel lower left, each facing the sphere's centre:
+      // halfX across, halfY = facing x halfX, so that halfX x halfY points at the sphere.
+      const bool rect = type == LightType::Rect;
+      l.position = rect ? std::array<float, 3>{1.5f, 2.5f, 2.0f} : std::array<float, 3>{-2.5f, -1.0f, 2.0f};
+      const Vec3 facing = ref::normalize(v3(l.position) * -1.0);
+      const Vec3 across = ref::normalize(ref::cross(facing, Vec3{0, 1, 0}));
+      const Vec3 up = ref::cross(facing, across);
+      const double w = rect ? 0.8 : 0.5, h = rect ? 0.5 : 0.5;
+      l.halfX = {static_cast<float>(across.x * w), static_cast<float>(across.y * w), static_cast<float>(across.z * w)};
+      l.halfY = {static_cast<float>(up.x * h), static_cast<float>(up.y * h), static_cast<float>(up.z * h)};
+      l.intensity = rect ? std::array<float, 3>{6.0f, 6.0f, 6.5f} : std::array<float, 3>{7.0f, 6.0f, 5.0f};
     } else {
       l.position = {1.0f, -1.5f, 2.5f};
       l.end = {2.5f, -0.5f, 2.0f};
       l.radius = 0.1f;
       l.intensity = {10.0f, 9.0f, 8.0f};
     }
-    l.falloffRadius = type == LightType::Dir ? 0.0f : 12.0f;
+    l.falloffRadius = type == LightType::Dir || type == LightType::Rect || type == LightType::Disk ? 0.0f : 12.0f;
     lights.push_back(l);
   }
   return lights;
@@ -157,6 +173,16 @@ std::vector<uint8_t> frameBlockBytes(const std::vector<PreviewLight>& lights, co
       copy3(g.illuminance, l.intensity, 0.0f);
       continue;
     }
+    if (l.type == LightType::Rect || l.type == LightType::Disk) {
+      uint32_t& count = l.type == LightType::Rect ? b.lightCounts2[1] : b.lightCounts2[2];
+      if (count == kMaxLights) continue;
+      AreaGpu& g = (l.type == LightType::Rect ? b.rectLights : b.diskLights)[count++];
+      copy3(g.position, l.position, 0.0f);
+      copy3(g.halfX, l.halfX, 0.0f);
+      copy3(g.halfY, l.halfY, 0.0f);
+      copy3(g.luminance, l.intensity, 0.0f);
+      continue;
+    }
     const LocalSlots slots = localSlots(b, l.type);
     if (*slots.count == kMaxLights) continue;
     LocalGpu& g = slots.records[(*slots.count)++];
@@ -190,6 +216,8 @@ bool setLight(const std::vector<PreviewLight>& lights, LightType type, size_t k,
     if (type == LightType::Sphere) in.sphere = ref::SphereLight{rel, l.radius, v3(l.intensity), l.falloffRadius};
     if (type == LightType::Tube)
       in.tube = ref::TubeLight{rel, v3(l.end) - worldPos, l.radius, v3(l.intensity), l.falloffRadius};
+    if (type == LightType::Rect) in.rect = ref::RectLight{rel, v3(l.halfX), v3(l.halfY), v3(l.intensity)};
+    if (type == LightType::Disk) in.disk = ref::DiskLight{rel, v3(l.halfX), v3(l.halfY), v3(l.intensity)};
     return true;
   }
   return false;
@@ -201,6 +229,10 @@ double sceneRadianceBound(const std::vector<PreviewLight>& lights, const Environ
     const double peak = std::max({l.intensity[0], l.intensity[1], l.intensity[2]});
     if (l.type == LightType::Dir) {
       bound += peak;
+      continue;
+    }
+    if (l.type == LightType::Rect || l.type == LightType::Disk) {
+      bound += std::numbers::pi * peak;  // irradiance Int L (n.l)+ dw <= pi L
       continue;
     }
     // Closest approach of the light (its nearest point, for a tube) to the unit sphere.

@@ -23,13 +23,14 @@ inline constexpr double kFieldOfViewDegrees = 31.0;
 // One light of the frame block, in world space (engine_frame.glsl's record fields).
 struct PreviewLight {
   LightType type = LightType::Dir;
-  std::array<float, 3> direction{};     // dir: unit, towards the light
-  std::array<float, 3> position{};      // local lights; tube: segment start
-  std::array<float, 3> end{};           // tube: segment end
-  std::array<float, 3> axis{};          // spot: unit axis the spot shines along
-  std::array<float, 3> intensity{};     // dir: illuminance; others: luminous intensity
-  float radius = 0, falloffRadius = 0;  // sphere, tube radius; local lights' falloff
-  float cosOuter = 0, cosInner = 0;     // spot cone
+  std::array<float, 3> direction{};       // dir: unit, towards the light
+  std::array<float, 3> position{};        // local lights; tube: segment start
+  std::array<float, 3> end{};             // tube: segment end
+  std::array<float, 3> axis{};            // spot: unit axis the spot shines along
+  std::array<float, 3> halfX{}, halfY{};  // rect: half edges; disk: semi-axes (emitting towards halfX x halfY)
+  std::array<float, 3> intensity{};       // dir: illuminance; rect, disk: luminance; others: luminous intensity
+  float radius = 0, falloffRadius = 0;    // sphere, tube radius; local lights' falloff
+  float cosOuter = 0, cosInner = 0;       // spot cone
 };
 
 // The light types `--lights` names (allLightTypeNames()); throws DiagnosticError E-PREVIEW-LIGHT

@@ -60,7 +60,24 @@ SceneColumns sceneColumns(const ProbeScene& scene, const ProbeLayout& layout) {
       c.tubeRadiusFraction = at("tubeRadiusFraction");
       c.tubeIntensity = at("tubeIntensity");
       c.tubeFalloffRadius = at("tubeFalloffRadius");
+    } else if (type == LightType::Rect || type == LightType::Disk) {
+      const int k = type == LightType::Rect ? 0 : 1;
+      const std::string name = lightTypeName(type);
+      c.areaLuminance[k] = at(name + "Luminance");
+      c.areaDistance[k] = at(name + "Distance");
+      c.areaAxisAngle[k] = at(name + "AxisAngle");
+      c.areaTilt[k] = at(name + "Tilt");
+      c.areaHalfWidth[k] = at(name + "HalfWidth");
+      c.areaHalfHeight[k] = at(name + "HalfHeight");
     }
+  }
+  if (scene.has(LightType::Rect) || scene.has(LightType::Disk)) {
+    c.ltcM00 = at("ltcM00");
+    c.ltcM02 = at("ltcM02");
+    c.ltcM20 = at("ltcM20");
+    c.ltcM22 = at("ltcM22");
+    c.ltcNorm = at("ltcNorm");
+    c.ltcFresnel = at("ltcFresnel");
   }
   if (scene.environment == EnvironmentMode::None) return c;
   for (int i = 0; i < 9; ++i) c.sh[i] = at("sh" + std::to_string(i));
@@ -119,8 +136,22 @@ void sceneFromRecord(const ProbeScene& scene, const SceneColumns& c, const doubl
       Vec3 center = lu * d, halfSegment = axis * (scalar(c.tubeHalfLengthFraction) * d);
       in.tube = ref::TubeLight{center - halfSegment, center + halfSegment, scalar(c.tubeRadiusFraction) * d,
                                vec3(c.tubeIntensity), scalar(c.tubeFalloffRadius)};
+    } else if (type == LightType::Rect || type == LightType::Disk) {
+      const int k = type == LightType::Rect ? 0 : 1;
+      double a = scalar(c.areaAxisAngle[k]), tilt = scalar(c.areaTilt[k]), d = scalar(c.areaDistance[k]);
+      Vec3 e1 = lt * std::cos(a) + lb * std::sin(a);
+      Vec3 e2 = ref::cross(lu, e1);
+      Vec3 halfX = e1 * (scalar(c.areaHalfWidth[k]) * d);
+      Vec3 halfY = (e2 * std::sin(tilt) + lu * std::cos(tilt)) * (-scalar(c.areaHalfHeight[k]) * d);
+      if (k == 0)
+        in.rect = ref::RectLight{lu * d, halfX, halfY, vec3(c.areaLuminance[k])};
+      else
+        in.disk = ref::DiskLight{lu * d, halfX, halfY, vec3(c.areaLuminance[k])};
     }
   }
+  if (scene.has(LightType::Rect) || scene.has(LightType::Disk))
+    in.ltc = ref::LtcTexel{scalar(c.ltcM00), scalar(c.ltcM02),  scalar(c.ltcM20),
+                           scalar(c.ltcM22), scalar(c.ltcNorm), scalar(c.ltcFresnel)};
   if (scene.environment == EnvironmentMode::None) return;
   // Filled in place: assigning a fresh Environment would copy its mode string and hooks per
   // record. The hooks stay unset (validation's probe has no textures).

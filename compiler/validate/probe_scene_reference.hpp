@@ -16,6 +16,10 @@ struct SceneColumns {
   uint32_t sphereDistance = 0, sphereRadiusFraction = 0, sphereIntensity = 0, sphereFalloffRadius = 0;
   uint32_t tubeAxisAngle = 0, tubeDistance = 0, tubeAxisTilt = 0, tubeHalfLengthFraction = 0, tubeRadiusFraction = 0,
            tubeIntensity = 0, tubeFalloffRadius = 0;
+  // Rectangle and disk lights: [0] rect, [1] disk.
+  uint32_t areaLuminance[2] = {}, areaDistance[2] = {}, areaAxisAngle[2] = {}, areaTilt[2] = {}, areaHalfWidth[2] = {},
+           areaHalfHeight[2] = {};
+  uint32_t ltcM00 = 0, ltcM02 = 0, ltcM20 = 0, ltcM22 = 0, ltcNorm = 0, ltcFresnel = 0;
   uint32_t sh[9] = {}, ao = 0, prefiltered = 0, dfgX = 0, dfgY = 0, dfgZ = 0;
 };
 // Throws std::logic_error when the layout lacks one of the scene's inputs.

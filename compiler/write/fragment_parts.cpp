@@ -29,6 +29,8 @@ const std::vector<std::pair<std::string, std::string>>& frameMembers() {
       {"tubeLights", "MbLocalLightGpu tubeLights[kMaxLightsPerType];"},
       {"sh", "float sh[9][4];"},
       {"environment", "float environment[4];"},
+      {"rectLights", "MbAreaLightGpu rectLights[kMaxLightsPerType];"},
+      {"diskLights", "MbAreaLightGpu diskLights[kMaxLightsPerType];"},
   };
   return m;
 }
@@ -48,6 +50,13 @@ struct MbLocalLightGpu {
   float params[4];     // spot: x cos(inner)
 };
 
+struct MbAreaLightGpu {
+  float position[4];   // xyz: centre
+  float halfX[4];      // xyz: half edge (rect) or semi-axis (disk)
+  float halfY[4];      // xyz: the other; emits towards cross(halfX, halfY)
+  float luminance[4];  // rgb: luminance
+};
+
 )";
 
 // One constant of the C++ header, its comment in the column the block aligns to.
@@ -61,13 +70,15 @@ std::string headerConstant(const std::string& name, int value, const std::string
 // The interface's binding numbers come from descriptor_bindings.hpp, the compiler's own, so
 // that the engine's header cannot disagree with the shaders.
 std::string frameTypes() {
-  return "// The fragment stage's interface, version 1 (docs/fragment-stage.md), all in descriptor set 0.\n" +
-         headerConstant("kFragmentInterfaceVersion", 1) +
+  return "// The fragment stage's interface, version " + std::to_string(kFragmentInterfaceVersion) +
+         " (docs/fragment-stage.md), all in descriptor set 0.\n" +
+         headerConstant("kFragmentInterfaceVersion", kFragmentInterfaceVersion) +
          headerConstant("kFragmentParamsBinding", kFragmentParamsBinding, "the material's <material>_Params") +
          headerConstant("kFragmentFrameBinding", kFragmentFrameBinding, "MbFrameBlock") +
          headerConstant("kFragmentPrefilteredEnvBinding", kFragmentPrefilteredBinding,
                         "samplerCube, ibl_* environments") +
          headerConstant("kFragmentDfgLutBinding", kFragmentDfgBinding, "sampler2D, ibl_lut") +
+         headerConstant("kFragmentLtcTableBinding", kFragmentLtcBinding, "sampler2D, rect and disk lights") +
          headerConstant("kFragmentFirstTextureBinding", kFirstTextureBinding, "sampler2D per texture record") +
          headerConstant("kMaxLightsPerType", 4, "MB_MAX_LIGHTS") + kFrameRecords;
 }
@@ -97,7 +108,7 @@ nlohmann::json fragmentInterfaceJson() {
   params["layout"] = frame["layout"] = "std140";
   params["block"] = "MbMaterialParams";
   frame["block"] = "MbFrameBlock";
-  return {{"interface_version", 1},
+  return {{"interface_version", kFragmentInterfaceVersion},
           {"attributes",
            {{{"location", 0}, {"name", "mbWorldPosition"}, {"type", "vec3"}},
             {{"location", 1}, {"name", "mbWorldNormal"}, {"type", "vec3"}},
@@ -108,6 +119,7 @@ nlohmann::json fragmentInterfaceJson() {
           {"frame", std::move(frame)},
           {"prefiltered_env", binding(kFragmentPrefilteredBinding)},
           {"dfg_lut", binding(kFragmentDfgBinding)},
+          {"ltc_table", binding(kFragmentLtcBinding)},
           {"first_texture", binding(kFirstTextureBinding)}};
 }
 

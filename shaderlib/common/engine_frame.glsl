@@ -17,10 +17,18 @@ struct MbLocalLightGpu {
     vec4 params;     // spot: x cos(inner half-angle)
 };
 
+// Rectangle and disk lights share one record (lights.glsl's RectLight and DiskLight).
+struct MbAreaLightGpu {
+    vec4 position;   // xyz: world position of the centre
+    vec4 halfX;      // xyz: half the first edge (rect) or the first semi-axis (disk), world space
+    vec4 halfY;      // xyz: the second; the light emits on the side cross(halfX, halfY) points to
+    vec4 luminance;  // rgb: luminance (colour times nits)
+};
+
 layout(set = 0, binding = 1, std140) uniform MbFrameBlock {
     vec4 cameraPosition;  // xyz: world position of the eye
     uvec4 lightCounts;    // x dir, y point, z spot, w sphere (each <= MB_MAX_LIGHTS)
-    uvec4 lightCounts2;   // x tube
+    uvec4 lightCounts2;   // x tube, y rect, z disk
     MbDirectionalLightGpu dirLights[MB_MAX_LIGHTS];
     MbLocalLightGpu pointLights[MB_MAX_LIGHTS];
     MbLocalLightGpu spotLights[MB_MAX_LIGHTS];
@@ -28,4 +36,6 @@ layout(set = 0, binding = 1, std140) uniform MbFrameBlock {
     MbLocalLightGpu tubeLights[MB_MAX_LIGHTS];
     vec4 sh[9];        // rgb: radiance SH9 coefficients L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22
     vec4 environment;  // x: ambient occlusion, y: mip level of the roughest prefiltered level
+    MbAreaLightGpu rectLights[MB_MAX_LIGHTS];  // after the version 1 members, which keep their offsets
+    MbAreaLightGpu diskLights[MB_MAX_LIGHTS];
 } mbFrame;

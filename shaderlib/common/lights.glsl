@@ -45,6 +45,24 @@ struct TubeLight {
     float falloffRadius;
 };
 
+// Rectangle and disk lights (docs/models/lights.md, "Rectangle and disk lights"): one-sided
+// Lambertian emitters of uniform luminance, shaded by linearly transformed cosines. A rectangle
+// has the half-edge vectors halfX and halfY, a disk (an ellipse) the semi-axis vectors; both
+// emit on the side cross(halfX, halfY) points to.
+struct RectLight {
+    vec3 toCenter;
+    vec3 halfX;
+    vec3 halfY;
+    vec3 luminance;  // colour times nits (cd/m^2)
+};
+
+struct DiskLight {
+    vec3 toCenter;
+    vec3 halfX;
+    vec3 halfY;
+    vec3 luminance;
+};
+
 struct Environment {
     vec3 sh[9];    // radiance SH coefficients L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22
     float ao;      // ambient occlusion in [0, 1]
@@ -55,6 +73,10 @@ struct Environment {
 // so that validation can feed their values per sample.
 vec3 mb_fetch_prefiltered(vec3 r, float lod);
 vec3 mb_fetch_dfg(float NoV, float perceptualRoughness);
+// The LTC table (shaderlib/ltc/ggx.json) at (n.v, perceptual roughness): M^-1's elements
+// (m00, m02, m20, m22) and the lobe's magnitudes (norm, fresnel).
+vec4 mb_fetch_ltc_matrix(float NoV, float perceptualRoughness);
+vec2 mb_fetch_ltc_magnitude(float NoV, float perceptualRoughness);
 
 // Filament's smooth spot cone: saturate(cos * scale + offset), squared.
 float mb_spot_attenuation(vec3 l, vec3 axis, float cosOuter, float cosInner) {

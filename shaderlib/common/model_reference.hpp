@@ -44,6 +44,20 @@ struct TubeLight {
   Vec3 intensity;
   double falloffRadius = 0;
 };
+// Rectangle and disk lights: centre, half-edge (semi-axis) vectors, luminance; one-sided, emitting
+// on the side of cross(halfX, halfY).
+struct RectLight {
+  Vec3 toCenter, halfX, halfY, luminance;
+};
+struct DiskLight {
+  Vec3 toCenter, halfX, halfY, luminance;
+};
+// One entry of the LTC table (shaderlib/ltc/ggx.json): M^-1's stored elements and the lobe's
+// magnitudes, as mb_fetch_ltc_matrix / mb_fetch_ltc_magnitude return them.
+struct LtcTexel {
+  double m00 = 1, m02 = 0, m20 = 0, m22 = 1;
+  double norm = 1, fresnel = 0;
+};
 struct Environment {
   std::string mode;  // "sh", "ibl_lut", "ibl_analytic"
   Vec3 sh[9];
@@ -103,6 +117,7 @@ inline constexpr std::string_view kRoles[] = {"anisotropy_alpha",
                                               "clearcoat_v",
                                               "dfg_lut",
                                               "diffuse",
+                                              "disk_light_ltc",
                                               "diffuse_wrap",
                                               "energy_compensation",
                                               "env_brdf",
@@ -110,6 +125,7 @@ inline constexpr std::string_view kRoles[] = {"anisotropy_alpha",
                                               "fresnel",
                                               "light_falloff",
                                               "mip_mapping",
+                                              "rect_light_ltc",
                                               "roughness",
                                               "sh_irradiance",
                                               "sheen_d",
@@ -168,7 +184,17 @@ struct ModelEvalInput {
   std::optional<SpotLight> spot;
   std::optional<SphereLight> sphere;
   std::optional<TubeLight> tube;
+  std::optional<RectLight> rect;
+  std::optional<DiskLight> disk;
   std::optional<Environment> env;
+  // The LTC table's fetch (rectangle and disk lights): fetchLtc when set (the preview's
+  // reference render reads the table as the fragment shader does), else the probe's record
+  // texel `ltc`, the same for every lookup.
+  LtcTexel ltc;
+  std::function<LtcTexel(double NoV, double perceptualRoughness)> fetchLtc;
+  LtcTexel ltcAt(double NoV, double perceptualRoughness) const {
+    return fetchLtc ? fetchLtc(NoV, perceptualRoughness) : ltc;
+  }
 
   std::map<std::string, std::vector<double>> inputs;  // model input name -> value
   std::map<std::string, std::string> bricks;          // role -> brick id

@@ -60,6 +60,8 @@ static Vec3 evaluateStandard(const ModelEvalInput& in) {
   if (in.spot) color = color + shadeSpot(in, px, *in.spot);
   if (in.sphere) color = color + shadeSphere(in, px, *in.sphere);
   if (in.tube) color = color + shadeTube(in, px, *in.tube);
+  if (in.rect) color = color + shadeRect(in, px, *in.rect);
+  if (in.disk) color = color + shadeDisk(in, px, *in.disk);
   if (in.env) color = color + shadeEnvironment(in, px, *in.env);
   return color;
 }

@@ -138,3 +138,83 @@ vec3 mb_shade_tube(ShadingPixel px, ShadingFrame f, TubeLight light) {
     return MB_SATURATE_MEDIUMP(mb_standard_light(px, f, s.g, gD, energy, s.cosine, s.cosine) * s.illuminance);
 }
 #endif
+
+#if defined(MB_LIGHT_RECT) || defined(MB_LIGHT_DISK)
+// Rectangle and disk lights by linearly transformed cosines (Heitz, Dupuy, Hill & Neubelt 2016;
+// docs/models/lights.md "Rectangle and disk lights"). A one-sided Lambertian emitter of
+// luminance L sends the radiance L Int f (n.l)+ dw over its solid angle. With the LTC table's
+// entry at (n.v, roughness), the specular lobe's integral is norm Int D_M dw, and Schlick's
+// Fresnel splits as the DFG LUT splits it: f0 (norm - fresnel) + f90 fresnel with f90 = 1 (the
+// table's lobe is GGX with the height-correlated Smith V, so the D, V and Fresnel roles are
+// not called for these lights). The diffuse brick is taken at the light centre's direction
+// times the exact irradiance per unit luminance, pi times the light's form factor (the same
+// edge sum with M = I): exact for Lambert. Sheen is the sheen lobe at the centre direction
+// times that irradiance; the clear coat is a second LTC lobe about the coat's normal, from the
+// table at the coat's roughness, attenuating the layers below by 1 - strength Fc(nc.v), as the
+// coat's image-based light does.
+// `specular` is Int D_M over the light for the base's entry, `formFactor` the same with M = I,
+// `coat` the coat's Int D_M (0 without a clear coat).
+vec3 mb_standard_ltc_light(ShadingPixel px, ShadingFrame f, Geometry g, float specular, float formFactor, float coat,
+                           vec3 luminance) {
+    vec2 magnitude = mb_fetch_ltc_magnitude(g.NoV, px.perceptualRoughness);
+    vec3 Fr = ((px.f0 * (magnitude.x - magnitude.y) + magnitude.y) * specular) * px.energyCompensation;
+    float irradiance = MB_PI * formFactor;
+    vec3 Fd = px.diffuseColor * (MB_SLOT_diffuse(g, px.perceptualRoughness, px.alpha) * irradiance);
+    vec3 color = Fd + Fr;
+#ifdef MB_FEATURE_SHEEN
+    color = color * px.sheen.scaling + mb_sheen_direct(px.sheen, g, g, 1.0) * irradiance;
+#endif
+#ifdef MB_FEATURE_CLEARCOAT
+    float coatAttenuation;
+    vec3 coatLobe = mb_clearcoat_ltc(px.clearCoat, f, coat, coatAttenuation);
+    color = color * coatAttenuation + coatLobe;
+#endif
+    return MB_SATURATE_MEDIUMP(color * luminance);
+}
+
+// The integrals mb_standard_ltc_light takes, for a rectangle (isDisk false) or a disk: the base's
+// lobe, its form factor (M = I) and the coat's lobe, each the bound polygon brick. One call site
+// in a loop: every inlined copy of the polygon integration costs lavapipe's JIT seconds.
+vec3 mb_ltc_area_light(ShadingPixel px, ShadingFrame f, bool isDisk, vec3 toCenter, vec3 halfX, vec3 halfY,
+                       vec3 luminance) {
+    float d = length(toCenter);
+    // The centre's direction; the normal where the shading point is the centre, which has none.
+    Geometry g = makeGeometry(f.n, f.v, d > 0.0 ? toCenter / d : f.n);
+    vec4 m = mb_fetch_ltc_matrix(g.NoV, px.perceptualRoughness);
+#ifdef MB_FEATURE_CLEARCOAT
+    Geometry gc = makeGeometry(px.clearCoat.normal, f.v, g.l);
+    vec4 mc = mb_fetch_ltc_matrix(gc.NoV, px.clearCoat.perceptualRoughness);
+    const int count = 3;
+#else
+    Geometry gc = g;
+    vec4 mc = m;
+    const int count = 2;
+#endif
+    float integral[3] = float[3](0.0, 0.0, 0.0);
+    for (int k = 0; k < count; ++k) {
+        Geometry gk = k == 2 ? gc : g;
+        vec4 mk = k == 0 ? vec4(1.0, 0.0, 0.0, 1.0) : (k == 1 ? m : mc);
+        float value = 0.0;
+#ifdef MB_LIGHT_RECT
+        if (!isDisk) value = MB_SLOT_rect_light_ltc(gk, mk.x, mk.y, mk.z, mk.w, toCenter, halfX, halfY);
+#endif
+#ifdef MB_LIGHT_DISK
+        if (isDisk) value = MB_SLOT_disk_light_ltc(gk, mk.x, mk.y, mk.z, mk.w, toCenter, halfX, halfY);
+#endif
+        integral[k] = value;
+    }
+    return mb_standard_ltc_light(px, f, g, integral[1], integral[0], integral[2], luminance);
+}
+#endif
+
+#ifdef MB_LIGHT_RECT
+vec3 mb_shade_rect(ShadingPixel px, ShadingFrame f, RectLight light) {
+    return mb_ltc_area_light(px, f, false, light.toCenter, light.halfX, light.halfY, light.luminance);
+}
+#endif
+
+#ifdef MB_LIGHT_DISK
+vec3 mb_shade_disk(ShadingPixel px, ShadingFrame f, DiskLight light) {
+    return mb_ltc_area_light(px, f, true, light.toCenter, light.halfX, light.halfY, light.luminance);
+}
+#endif

@@ -115,4 +115,56 @@ Vec3 shadeTube(const ModelEvalInput& in, const Pixel& px, const TubeLight& tube)
   return light(in, px, s.l, lD, energy, s.cosine, s.cosine) * s.illuminance;
 }
 
+namespace {
+
+// Rectangle and disk lights by linearly transformed cosines (Heitz et al. 2016): a one-sided
+// Lambertian emitter of luminance L sends L Int f (n.l)+ dw. `integral(texel)` is Int D_M over
+// the light (above the horizon) for a table entry, about the frame (n, v); with the identity
+// it is the form factor Int (n.l)+ dw / pi. The specular lobe is norm Int D_M with Schlick's
+// Fresnel split f0 (norm - fresnel) + fresnel (f90 = 1), times the multiscatter compensation;
+// the diffuse brick at the centre's direction times the irradiance pi x form factor; sheen at
+// the centre's direction times that irradiance; the coat its own lobe about its normal.
+template <typename Integral>
+Vec3 ltcLight(const ModelEvalInput& in, const Pixel& px, const Vec3& toCenter, const Vec3& luminance,
+              Integral integral) {
+  const Vec3 n = in.frame.n, v = in.frame.v;
+  double d = length(toCenter);
+  const Vec3 l = d > 0.0 ? toCenter / d : n;
+  const double NoV = makeGeometry(n, v, l).NoV;
+  const LtcTexel t = in.ltcAt(NoV, px.perceptualRoughness);
+  const double specular = integral(n, t);
+  const double irradiance = kPi * integral(n, LtcTexel{});
+  Vec3 Fr = (px.f0 * (t.norm - t.fresnel) + splat(t.fresnel)) * specular * px.energyCompensation;
+  double fd = in.scalar("diffuse", Args().geometry(n, v, l) << px.perceptualRoughness << px.alpha);
+  Vec3 color = px.diffuseColor * (fd * irradiance) + Fr;
+  if (in.has("sheen")) color = color * px.sheen.scaling + sheenDirect(in, px.sheen, l, l, 1.0) * irradiance;
+  if (in.has("clearcoat")) {
+    const Vec3 nc = px.clearCoat.normal;
+    const LtcTexel tc = in.ltcAt(makeGeometry(nc, v, l).NoV, px.clearCoat.perceptualRoughness);
+    double attenuation = 1;
+    Vec3 coat = clearCoatLtc(in, px.clearCoat, integral(nc, tc), attenuation);
+    color = color * attenuation + coat;
+  }
+  return color * luminance;
+}
+
+}  // namespace
+
+// The polygon bricks' references are the rect_light_ltc and disk_light_ltc roles.
+Vec3 shadeRect(const ModelEvalInput& in, const Pixel& px, const RectLight& rect) {
+  const Vec3 v = in.frame.v;
+  return ltcLight(in, px, rect.toCenter, rect.luminance, [&](const Vec3& n, const LtcTexel& t) {
+    return in.scalar("rect_light_ltc", Args().geometry(n, v, n) << t.m00 << t.m02 << t.m20 << t.m22 << rect.toCenter
+                                                                << rect.halfX << rect.halfY);
+  });
+}
+
+Vec3 shadeDisk(const ModelEvalInput& in, const Pixel& px, const DiskLight& disk) {
+  const Vec3 v = in.frame.v;
+  return ltcLight(in, px, disk.toCenter, disk.luminance, [&](const Vec3& n, const LtcTexel& t) {
+    return in.scalar("disk_light_ltc", Args().geometry(n, v, n) << t.m00 << t.m02 << t.m20 << t.m22 << disk.toCenter
+                                                                << disk.halfX << disk.halfY);
+  });
+}
+
 }  // namespace mb::ref::standard

@@ -46,6 +46,8 @@ Vec3 shadePoint(const ModelEvalInput& in, const Pixel& px, const PointLight& lig
 Vec3 shadeSpot(const ModelEvalInput& in, const Pixel& px, const SpotLight& light);
 Vec3 shadeSphere(const ModelEvalInput& in, const Pixel& px, const SphereLight& light);
 Vec3 shadeTube(const ModelEvalInput& in, const Pixel& px, const TubeLight& light);
+Vec3 shadeRect(const ModelEvalInput& in, const Pixel& px, const RectLight& light);
+Vec3 shadeDisk(const ModelEvalInput& in, const Pixel& px, const DiskLight& light);
 
 // standard_environment.ref.cpp
 void environmentPrepare(const ModelEvalInput& in, Pixel& px);  // IBL modes: dfg, compensation
@@ -58,6 +60,9 @@ ClearCoatPixel clearCoatPrepare(const ModelEvalInput& in, Vec3& f0, double& perc
 Vec3 clearCoatDirect(const ModelEvalInput& in, const ClearCoatPixel& cc, const Vec3& l, double& attenuation);
 Vec3 clearCoatEnvironment(const ModelEvalInput& in, const ClearCoatPixel& cc, const Environment& env,
                           double& attenuation);
+// The coat under a rectangle or disk light (per unit luminance), from the integral of its LTC
+// table entry's D_M over the light; `attenuation` as for image-based light, 1 - strength Fc(nc.v).
+Vec3 clearCoatLtc(const ModelEvalInput& in, const ClearCoatPixel& cc, double coatIntegral, double& attenuation);
 
 // standard_anisotropy.ref.cpp
 AnisotropyPixel anisotropyPrepare(const ModelEvalInput& in, double alpha);
