@@ -125,6 +125,49 @@ TEST_CASE("glTF scene: referenced lights and the materials meshes use", "[scene]
   CHECK(cc->value == std::vector<double>{0.0});
 }
 
+TEST_CASE("glTF scene: a light's matbricks_area_light extras make it a rectangle or disk light", "[scene][gltf]") {
+  // docs/gltf.md "Area lights": KHR_lights_punctual has no area lights; the convention rides in
+  // a light's extras, and a reader without it sees the light's own type.
+  const ShaderLibrary& lib = test::shippedLibrary();
+  const std::string gallery = test::readFile(test::sourceDir() / "examples/scenes/gallery.gltf");
+  auto withExtras = [&](const std::string& light, const std::string& extras) {
+    const std::string name = "\"name\": \"" + light + "\",";
+    const size_t at = gallery.find(name);
+    REQUIRE(at != std::string::npos);
+    return gallery.substr(0, at + name.size()) + " \"extras\": {\"note\": 1, \"matbricks_area_light\": " + extras +
+           "}," + gallery.substr(at + name.size());
+  };
+  {
+    test::TempFile f("area_rect.gltf", withExtras("desk lamp", R"({"shape": "rect", "size": [1.0, 0.5]})"));
+    CHECK(lightTypeNames(loadScene(f.path(), lib).lightTypes()) == std::vector<std::string>{"dir", "rect"});
+  }
+  {
+    test::TempFile f("area_disk.gltf", withExtras("desk lamp", R"({"shape": "disk", "size": [0.3, 0.3]})"));
+    CHECK(lightTypeNames(loadScene(f.path(), lib).lightTypes()) == std::vector<std::string>{"dir", "disk"});
+  }
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"desk lamp", R"({"shape": "hexagon", "size": [1, 1]})"},
+      {"desk lamp", R"({"shape": "rect", "size": [1, -2]})"},
+      {"desk lamp", R"({"shape": "rect"})"},
+      {"sun", R"({"shape": "rect", "size": [1, 1]})"},
+  };
+  for (const auto& [light, extras] : bad) {
+    const std::string text = withExtras(light, extras);
+    test::TempFile f("area_bad.gltf", text);
+    INFO(extras);
+    std::vector<Diagnostic> ds;
+    try {
+      loadScene(f.path(), lib);
+    } catch (const DiagnosticError& e) {
+      ds = e.diagnostics();
+    }
+    REQUIRE(!ds.empty());
+    CHECK((ds[0].code == "E-SCENE-AREA-LIGHT" || ds[0].code == "E-MISSING-FIELD"));
+    // Located inside the extras, not at the file's start.
+    CHECK(ds[0].where.line >= test::positionOf(text, "matbricks_area_light").first);
+  }
+}
+
 // The scene walk builds a tree only of the node members it reads (load/gltf_container.hpp,
 // loadGltfSceneJson): the others are blanked in place, so what remains keeps its position, and
 // a node left with none of them is still an object (no type error).

@@ -108,6 +108,41 @@ std::optional<LightType> lightType(const std::string& t) {
   return std::nullopt;
 }
 
+// KHR_lights_punctual has no area lights. A light's extras may say that it stands for one
+// (docs/gltf.md "Area lights"):
+//   "extras": {"matbricks_area_light": {"shape": "rect" | "disk", "size": [x, y]}}
+// a rectangle of x by y, or a disk (ellipse) of those diameters, in the node's local x-y plane,
+// centred on the node and emitting towards its -z (where a spot light points); `intensity` is
+// then its luminance in nits. A reader without the convention sees the light's own type, so a
+// spot light is the closest fallback; a directional light has no position to stand for one.
+// nullopt: no such extras (or an error, reported to `f`'s sink).
+std::optional<LightType> areaLightType(JsonFields& f, const std::string& light, const std::string& type) {
+  const std::string ptr = JsonFields::member(JsonFields::member(light, "extras"), "matbricks_area_light");
+  if (!f.find(ptr)) return std::nullopt;
+  if (!f.object(ptr, {"shape", "size"}, {}, "matbricks_area_light")) return std::nullopt;
+  const auto shape = f.string(JsonFields::member(ptr, "shape"));
+  std::optional<LightType> ours;
+  if (shape == "rect") ours = LightType::Rect;
+  if (shape == "disk") ours = LightType::Disk;
+  if (shape && !ours)
+    f.error("E-SCENE-AREA-LIGHT", f.valueAt(JsonFields::member(ptr, "shape")),
+            "unknown area light shape '" + clipped(*shape) + "': expected 'rect' or 'disk'",
+            suggest(*shape, {"rect", "disk"}));
+  const std::string size = JsonFields::member(ptr, "size");
+  const nlohmann::json* s = f.find(size);
+  if (s) {
+    bool ok = s->is_array() && s->size() == 2;
+    for (size_t k = 0; ok && k < 2; ++k) ok = (*s)[k].is_number() && (*s)[k].get<double>() > 0.0;
+    if (!ok) f.error("E-SCENE-AREA-LIGHT", f.valueAt(size), "area light size must be two positive numbers [x, y]");
+  }
+  if (type == "directional") {
+    f.error("E-SCENE-AREA-LIGHT", f.valueAt(ptr),
+            "a directional light cannot stand for an area light (it has no position): make it a spot or point light");
+    return std::nullopt;
+  }
+  return ours;
+}
+
 }  // namespace
 
 GltfSceneContents readGltfScene(const std::string& path, const ShaderLibrary& lib) {
@@ -133,6 +168,7 @@ GltfSceneContents readGltfScene(const std::string& path, const ShaderLibrary& li
           suggest(*type, {"directional", "point", "spot"}));
       continue;
     }
+    if (std::optional<LightType> area = areaLightType(f, ptr, *type)) ours = area;
     out.lights.push_back({*ours, f.string(ptr + "/name").value_or(""), f.valueAt(ptr + "/type")});
   }
   for (const auto& where : walker.defaultMaterialUses)
