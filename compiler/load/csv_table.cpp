@@ -28,7 +28,10 @@ std::string quotedExcerpt(const std::string& text, size_t maxChars) {
   return out;
 }
 
-namespace {
+// A named namespace, not an anonymous one: CsvReader::State (declared in the header) holds a
+// LineSource and Fields, and GCC warns (-Wsubobject-linkage) when a type with external linkage
+// has members of internal-linkage types outside the main file, as in a unity build.
+namespace csv_detail {
 
 std::string_view trim(std::string_view s) {
   const size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
@@ -110,17 +113,17 @@ class LineSource {
   size_t pos_ = 0, scanFrom_ = 0;
 };
 
-}  // namespace
+}  // namespace csv_detail
 
 struct CsvReader::State {
   State(std::optional<InputFile> file, std::string text, const std::string& name)
       : lines(std::move(file), std::move(text)) {
     header.file = name;
   }
-  LineSource lines;
+  csv_detail::LineSource lines;
   CsvHeader header;
   std::vector<Diagnostic> errors;
-  std::vector<Field> fields;
+  std::vector<csv_detail::Field> fields;
   int lineNo = 0;
   bool stopped = false;
 
@@ -145,7 +148,7 @@ struct CsvReader::State {
         stopped = true;
         return false;
       }
-      const std::string_view content = trim(*line);
+      const std::string_view content = csv_detail::trim(*line);
       if (content.empty() || content[0] == '#') continue;
       splitFields(*line, fields);
       return true;
@@ -167,7 +170,7 @@ struct CsvReader::State {
   }
 
   // The value of one field, or an error at its column.
-  bool number(const Field& f, double& v) {
+  bool number(const csv_detail::Field& f, double& v) {
     const char* end = f.text.data() + f.text.size();
     const auto res = std::from_chars(f.text.data(), end, v);
     if (f.text.empty() || res.ec != std::errc() || res.ptr != end) {
