@@ -24,8 +24,9 @@ struct SphereLightBricks {
 };
 SphereLightBricks standardSphereLight(const ShaderLibrary& lib);
 
+// planarSamples: rectangles and disks (half each) drawn after the spheres and tubes.
 nlohmann::json measureLtcAreaLights(const ltc::Table& table, const SphereLightBricks& representative, int sphereSamples,
-                                    int tubeSamples, uint64_t seed);
+                                    int tubeSamples, int planarSamples, uint64_t seed);
 
 // The section's tables as Markdown (docs/models/lights.md).
 std::string ltcMarkdown(const nlohmann::json& section);

@@ -321,7 +321,8 @@ int main(int argc, char** argv) {
              {"tube_lobe_fraction_0.02_vs_0.005", tubeConvergence.toJson()}}}};
   // LTC against the same truths, on configurations of its own (area_lights_ltc.hpp).
   out["ltc"] = mb::bench::measureLtcAreaLights(mb::ltc::loadTable(MB_SOURCE_DIR "/shaderlib/ltc/ggx.json"),
-                                               mb::bench::standardSphereLight(lib), sphereSamples, tubeSamples, seed);
+                                               mb::bench::standardSphereLight(lib), sphereSamples, tubeSamples,
+                                               sphereSamples, seed);
   std::printf("%s\n", out.dump(1).c_str());
   if (argc > 5) writeMarkdown(out, argv[5]);
   return 0;
