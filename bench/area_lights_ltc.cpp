@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <map>
 #include <random>
 #include <sstream>
@@ -61,46 +60,6 @@ RepresentativeSphere representativeSphere(const SphereLightBricks& b, const Geom
       lights::ggxD(gD.NoH, alpha) * norm * smithGgxCorrelatedV(std::max(gc.NoV, kMinNoV), gc.NoL, alpha) * wrap * E;
   return out;
 }
-
-// ---- The brute-force lobe integral over a polygonal light (rectangles, disks).
-// The fan of the horizon-clipped polygon's spherical triangles, each subdivided adaptively: split
-// in four at its edge midpoints while the children's degree-2 estimates (triangleQuadrature)
-// differ from the parent's by more than `tol`, or while the triangle holds the mirror direction
-// and is wider than alpha / 4 (a sharp peak between the sample points would look like no
-// peak), to depth 18.
-struct AdaptiveFan {
-  std::function<double(const Vec3&)> f;
-  Vec3 mirror;
-  double alpha = 1;
-
-  double triangle(const Vec3& a, const Vec3& b, const Vec3& c) { return ref::ltc::triangleQuadrature(a, b, c, f, 0); }
-  bool holdsPeak(const Vec3& a, const Vec3& b, const Vec3& c) const {
-    double s0 = dot(cross(a, b), mirror), s1 = dot(cross(b, c), mirror), s2 = dot(cross(c, a), mirror);
-    bool inside = (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
-    double size = std::max({length(a - b), length(b - c), length(c - a)});
-    return inside && size > 0.25 * alpha;
-  }
-  double refine(const Vec3& a, const Vec3& b, const Vec3& c, double estimate, double tol, int depth) {
-    Vec3 ab = normalize(a + b), bc = normalize(b + c), ca = normalize(c + a);
-    double k0 = triangle(a, ab, ca), k1 = triangle(ab, b, bc), k2 = triangle(ca, bc, c), k3 = triangle(ab, bc, ca);
-    double sum = k0 + k1 + k2 + k3;
-    if (depth >= 18 || (depth >= 3 && std::abs(sum - estimate) <= tol && !holdsPeak(a, b, c))) return sum;
-    return refine(a, ab, ca, k0, tol * 0.5, depth + 1) + refine(ab, b, bc, k1, tol * 0.5, depth + 1) +
-           refine(ca, bc, c, k2, tol * 0.5, depth + 1) + refine(ab, bc, ca, k3, tol * 0.5, depth + 1);
-  }
-  double integrate(const std::vector<Vec3>& polygon, double tol) {
-    if (polygon.size() < 3) return 0.0;
-    Vec3 centre{0, 0, 0};
-    for (const Vec3& p : polygon) centre = centre + normalize(p);
-    centre = normalize(centre);
-    double sum = 0.0;
-    for (size_t k = 0; k < polygon.size(); ++k) {
-      Vec3 b = normalize(polygon[k]), c = normalize(polygon[(k + 1) % polygon.size()]);
-      sum += refine(centre, b, c, triangle(centre, b, c), tol, 0);
-    }
-    return sum;
-  }
-};
 
 // A rectangle or disk light facing the shading point: centre c (unit direction, distance 1),
 // half-edges (semi-axes) of lengths hx, hy along e1 and e2 turned about c by `turn` and tilted
@@ -237,8 +196,7 @@ json measureLtcAreaLights(const mb::ltc::Table& table, const SphereLightBricks& 
     Vec3 c = nearMirror ? around(r, (alpha + std::max(hx, hy)) * 2.0 * U(rng), 2 * kPi * U(rng))
                         : unitFromAngles(-0.3 + 1.3 * U(rng), 2 * kPi * U(rng));
     PlanarLight l = planarLight(c, hx, hy, 2 * kPi * U(rng), (2 * U(rng) - 1) * kPi / 3);
-    std::vector<Vec3> polygon =
-        disk ? ref::ltc::diskPolygon(l.c, l.ex, l.ey) : ref::ltc::rectPolygon(l.c, l.ex, l.ey);
+    std::vector<Vec3> polygon = disk ? ref::ltc::diskPolygon(l.c, l.ex, l.ey) : ref::ltc::rectPolygon(l.c, l.ex, l.ey);
     std::vector<Vec3> exact = disk ? ref::ltc::diskPolygon(l.c, l.ex, l.ey, 256) : polygon;
     ref::ltc::ViewFrame fr = ref::ltc::viewFrame(n, v);
     std::vector<Vec3> local;
@@ -256,13 +214,11 @@ json measureLtcAreaLights(const mb::ltc::Table& table, const SphereLightBricks& 
       m["diffuse: LTC (M = I)"].add(kPi * ref::ltc::polygonIntegral(kIdentity, fr, polygon) / diffuseTruth, where);
     mb::ltc::TableSample s = mb::ltc::sampleBilinear(table, roughness, NoV);
     const double ltcSpec = s.norm * ref::ltc::polygonIntegral(s.minv, fr, polygon);
-    AdaptiveFan fan{[&](const Vec3& d) { return ref::ltc::ggxLobeLocal(vl, alpha, d); },
-                    normalize(fr.toLocal(r)), alpha};
     const double scale = std::max(ltcSpec, 1e-3 * diffuseTruth);
-    const double truth = fan.integrate(local, 1e-6 * scale);
+    const double truth = ref::ltc::lobeIntegralAdaptive(local, vl, alpha, 1e-6 * scale);
     if (!(truth > 1e-6 * diffuseTruth)) continue;
     if (planarConvergence.ratios.size() < 40)
-      planarConvergence.add(fan.integrate(local, 1e-7 * scale) / truth, where);
+      planarConvergence.add(ref::ltc::lobeIntegralAdaptive(local, vl, alpha, 1e-7 * scale) / truth, where);
     const std::string shape = disk ? "disk_ltc_polygon" : "rect_ltc_polygon";
     m["specular: LTC (" + shape + ")"].add(ltcSpec / truth, where);
     if (nearMirror) m["specular: LTC, lights near the mirror ray"].add(ltcSpec / truth, where);

@@ -314,6 +314,57 @@ inline double ggxLobeLocal(const Vec3& v, double alpha, const Vec3& l) {
   return D * V * NoL;
 }
 
+// ---- The brute-force lobe integral over a polygonal light (ground truth of the rectangle and
+// disk bricks, mb_bench_area_lights): the fan of the horizon-clipped polygon's spherical
+// triangles, each subdivided adaptively: split in four at its edge midpoints while the
+// children's degree-2 estimates (triangleQuadrature) differ from the parent's by more than the
+// tolerance (halved per level), or while it holds the mirror direction and is wider than
+// alpha / 4 (a sharp peak between the sample points would look like no peak), to depth 18.
+// Made 10 times stricter it moves by at most 2.4e-7 (docs/models/lights.md).
+class AdaptiveLobeFan {
+ public:
+  AdaptiveLobeFan(const Vec3& v, double alpha) : v_(v), alpha_(alpha), mirror_(Vec3{-v.x, -v.y, v.z}) {}
+  double integrate(const std::vector<Vec3>& local, double tol) {
+    if (local.size() < 3) return 0.0;
+    Vec3 centre{0, 0, 0};
+    for (const Vec3& p : local) centre = centre + normalize(p);
+    centre = normalize(centre);
+    double sum = 0.0;
+    for (size_t k = 0; k < local.size(); ++k) {
+      Vec3 b = normalize(local[k]), c = normalize(local[(k + 1) % local.size()]);
+      sum += refine(centre, b, c, triangle(centre, b, c), tol, 0);
+    }
+    return sum;
+  }
+
+ private:
+  double triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
+    auto f = [this](const Vec3& l) { return ggxLobeLocal(v_, alpha_, l); };
+    return triangleQuadrature(a, b, c, f, 0);
+  }
+  bool holdsPeak(const Vec3& a, const Vec3& b, const Vec3& c) const {
+    double s0 = dot(cross(a, b), mirror_), s1 = dot(cross(b, c), mirror_), s2 = dot(cross(c, a), mirror_);
+    bool inside = (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
+    return inside && std::max({length(a - b), length(b - c), length(c - a)}) > 0.25 * alpha_;
+  }
+  double refine(const Vec3& a, const Vec3& b, const Vec3& c, double estimate, double tol, int depth) {
+    Vec3 ab = normalize(a + b), bc = normalize(b + c), ca = normalize(c + a);
+    double k0 = triangle(a, ab, ca), k1 = triangle(ab, b, bc), k2 = triangle(ca, bc, c), k3 = triangle(ab, bc, ca);
+    double sum = k0 + k1 + k2 + k3;
+    if (depth >= 18 || (depth >= 3 && std::abs(sum - estimate) <= tol && !holdsPeak(a, b, c))) return sum;
+    return refine(a, ab, ca, k0, tol * 0.5, depth + 1) + refine(ab, b, bc, k1, tol * 0.5, depth + 1) +
+           refine(ca, bc, c, k2, tol * 0.5, depth + 1) + refine(ab, bc, ca, k3, tol * 0.5, depth + 1);
+  }
+  Vec3 v_;
+  double alpha_;
+  Vec3 mirror_;  // reflect(-v, z)
+};
+
+// Int of the lobe (F = 1) over the local, horizon-clipped polygon, to `tol` absolute.
+inline double lobeIntegralAdaptive(const std::vector<Vec3>& local, const Vec3& v, double alpha, double tol) {
+  return AdaptiveLobeFan(v, alpha).integrate(local, tol);
+}
+
 // Int over the light polygon `world` of the lobe (F = 1) above the horizon: norm times the LTC
 // integral, plus the residual's fan quadrature.
 inline double polygonSpecularWithResidual(const Mat3& minv, double norm, double alpha, const ViewFrame& fr,
