@@ -145,9 +145,10 @@ class FragmentWriter {
   // columns 0-63 and the magnitudes in 64-127 (rg); row i is perceptual roughness i / 63,
   // column j is u = j / 63 with n.v = 1 - u^2 (shaderlib/ltc/ggx.json). Interpolated here from
   // four texelFetch rather than by the sampler: a GPU's bilinear filter may weigh texels with as
-  // few as 8 fractional bits (Vulkan's subTexelPrecisionBits), and M^-1 changes by up to half
-  // its value from one texel to the next at low roughness, so the filter's rounding would decide
-  // the result; in fp32 arithmetic every conforming GPU computes the same.
+  // few as 4 fractional bits (Vulkan's minimum subTexelPrecisionBits), and neighbouring entries
+  // of M^-1 differ by up to 44 % (m22), near grazing views by their whole value (the shipped
+  // table, roughness >= 0.05), so the filter's rounding would decide the result; in fp32
+  // arithmetic every conforming GPU computes the same.
   void ltcHooks() {
     const bool half = p_ == ShaderPrecision::Fp16;
     w_.line(hp_ + "vec4 mb_ltc_texel(" + hp_ + "float NoV, " + hp_ + "float perceptualRoughness, int column0) {");
