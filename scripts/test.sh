@@ -5,7 +5,9 @@
 #
 # Each test runs once: the tests that need no device (CTest label `host`, tests/CMakeLists.txt)
 # run in the sanitizer pass, which runs exactly those under ASan + UBSan, so the Release part
-# runs the rest: the device tests (label `device`) and the tests CMake registers itself.
+# runs the rest: the device tests (label `device`), the host tests that sweep every shipped
+# material (label `release-pass`; tests/CMakeLists.txt says why) and the tests CMake registers
+# itself.
 #
 #   scripts/test.sh          CI's run: every test but the opt-in sweeps (CTest label `sweep`)
 #   scripts/test.sh --all    the sweeps too, and the host tests in the Release build as well

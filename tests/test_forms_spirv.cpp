@@ -12,7 +12,7 @@
 
 using namespace mb;
 
-TEST_CASE("JSON and macro forms of each shipped material give byte-identical SPIR-V", "[forms][spirv]") {
+TEST_CASE("JSON and macro forms of each shipped material give byte-identical SPIR-V", "[forms][spirv][release-pass]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   std::set<std::string> modelsCovered;
   size_t pairs = 0, permutations = 0;

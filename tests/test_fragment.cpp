@@ -68,7 +68,7 @@ constexpr int kFrameSize = 1872;
 }  // namespace
 
 TEST_CASE("Every shipped permutation's fragment shader compiles, validates and reflects the documented interface",
-          "[fragment]") {
+          "[fragment][release-pass]") {
   const ShaderLibrary& lib = test::shippedLibrary();
   const std::vector<MaterialDesc> materials = shippedFragmentMaterials();
   std::string frameLayout;  // the first permutation's MbFrameBlock reflection

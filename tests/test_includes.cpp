@@ -67,7 +67,7 @@ std::vector<std::string> definedContract(const std::string& code) {
 
 }  // namespace
 
-TEST_CASE("HLSL and MSL includes of every shipped material compile in their wrappers", "[includes]") {
+TEST_CASE("HLSL and MSL includes of every shipped material compile in their wrappers", "[includes][release-pass]") {
   const std::vector<MaterialDesc> materials = shippedMaterials();
   std::vector<Permutation> perms;
   for (const auto& m : materials)

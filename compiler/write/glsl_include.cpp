@@ -67,6 +67,12 @@ std::string engineInclude(const PackagedPermutation& p) {
         << (perm.precision == Precision::Fp16 ? ", in half types (f16vec3, float16_t)" : "") << ":\n"
         << "//   vec3 mb_fetch_prefiltered(vec3 r, float lod);   prefiltered radiance along r at mip lod\n"
         << "//   vec3 mb_fetch_dfg(float NoV, float perceptualRoughness);   the DFG LUT texel\n";
+  if (perm.hasLight(LightType::Rect) || perm.hasLight(LightType::Disk))
+    out << "// The engine defines the LTC table's hooks (declared in shaderlib/common/lights.glsl; the table and\n"
+        << "// how the fragment stage reads it: docs/fragment-stage.md \"LTC table\")"
+        << (perm.precision == Precision::Fp16 ? ", in half types (f16vec4, f16vec2)" : "") << ":\n"
+        << "//   vec4 mb_fetch_ltc_matrix(float NoV, float perceptualRoughness);   M^-1's (m00, m02, m20, m22)\n"
+        << "//   vec2 mb_fetch_ltc_magnitude(float NoV, float perceptualRoughness);   (norm, fresnel)\n";
   out << "// Entry points (docs/models.md \"GLSL contract\"): MaterialInputs materialInputs(...),\n"
       << "//   ShadingPixel preparePixel(MaterialInputs, ShadingFrame), vec3 emittedRadiance(ShadingPixel)";
   for (LightType t : allLightTypes())

@@ -8,13 +8,13 @@ namespace mb::ref {
 namespace {
 
 double rectLtcCv(Geometry g, double alpha, double norm, double m00, double m02, double m20, double m22, Vec3 toCenter,
-             Vec3 halfX, Vec3 halfY) {
+                 Vec3 halfX, Vec3 halfY) {
   return ltc::polygonSpecularWithResidual(ltc::minvOf(m00, m02, m20, m22), norm, alpha, ltc::viewFrame(g.n, g.v), g.v,
                                           ltc::rectPolygon(toCenter, halfX, halfY));
 }
 
 double rectLobeTruth(Geometry g, double alpha, double, double, double, double, double, Vec3 toCenter, Vec3 halfX,
-             Vec3 halfY) {
+                     Vec3 halfY) {
   const ltc::ViewFrame fr = ltc::viewFrame(g.n, g.v);
   std::vector<Vec3> local;
   for (const Vec3& w : ltc::rectPolygon(toCenter, halfX, halfY)) local.push_back(fr.toLocal(w));
