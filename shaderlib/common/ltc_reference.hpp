@@ -365,6 +365,17 @@ inline double lobeIntegralAdaptive(const std::vector<Vec3>& local, const Vec3& v
   return AdaptiveLobeFan(v, alpha).integrate(local, tol);
 }
 
+// The same over a light polygon `world` (points relative to the shading point) above the
+// horizon of n, to 1e-7 of the light's irradiance (the lobe's integral is at most a few times
+// it): the ground truth of the rectangle and disk bricks.
+inline double lobeOverPolygon(const Vec3& n, const Vec3& v, double alpha, const std::vector<Vec3>& world) {
+  const ViewFrame fr = viewFrame(n, v);
+  std::vector<Vec3> local;
+  for (const Vec3& w : world) local.push_back(fr.toLocal(w));
+  local = clipToHalfSpace(local, Vec3{0, 0, 1});
+  return lobeIntegralAdaptive(local, fr.toLocal(v), alpha, 1e-7 * kPi * clampedCosinePolygon(local));
+}
+
 // Int over the light polygon `world` of the lobe (F = 1) above the horizon: norm times the LTC
 // integral, plus the residual's fan quadrature.
 inline double polygonSpecularWithResidual(const Mat3& minv, double norm, double alpha, const ViewFrame& fr,

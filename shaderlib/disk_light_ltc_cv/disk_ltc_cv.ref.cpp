@@ -15,12 +15,7 @@ double diskLtcCv(Geometry g, double alpha, double norm, double m00, double m02, 
 
 double diskLobeTruth(Geometry g, double alpha, double, double, double, double, double, Vec3 toCenter, Vec3 halfX,
                      Vec3 halfY) {
-  const ltc::ViewFrame fr = ltc::viewFrame(g.n, g.v);
-  std::vector<Vec3> local;
-  for (const Vec3& w : ltc::diskPolygon(toCenter, halfX, halfY, 256)) local.push_back(fr.toLocal(w));
-  local = ltc::clipToHalfSpace(local, Vec3{0, 0, 1});
-  // To 1e-7 of the light's irradiance (the lobe's integral is at most a few times it).
-  return ltc::lobeIntegralAdaptive(local, fr.toLocal(g.v), alpha, 1e-7 * kPi * ltc::clampedCosinePolygon(local));
+  return ltc::lobeOverPolygon(g.n, g.v, alpha, ltc::diskPolygon(toCenter, halfX, halfY, 256));
 }
 
 }  // namespace
