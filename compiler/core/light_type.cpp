@@ -33,6 +33,9 @@ std::vector<LightType> parseLightTypes(const std::vector<std::string>& names) {
 }
 std::vector<std::string> lightTypeNames(const std::vector<LightType>& types) { return lightTypeAxis().namesOf(types); }
 
+bool isLtcLight(LightType t) { return t == LightType::Rect || t == LightType::Disk; }
+bool usesLtcTable(const std::vector<LightType>& types) { return std::any_of(types.begin(), types.end(), isLtcLight); }
+
 std::vector<LightType> canonicalLights(std::vector<LightType> lights) {
   std::sort(lights.begin(), lights.end());
   lights.erase(std::unique(lights.begin(), lights.end()), lights.end());

@@ -30,6 +30,11 @@ std::vector<LightType> parseLightTypes(const std::vector<std::string>& names);
 // The names of `types`, in their order (messages, keys, JSON).
 std::vector<std::string> lightTypeNames(const std::vector<LightType>& types);
 
+// Rectangle and disk lights: given by luminance and shaded with the LTC table
+// (docs/models/lights.md "Rectangle and disk lights"); a set that has one needs the table.
+bool isLtcLight(LightType t);
+bool usesLtcTable(const std::vector<LightType>& types);
+
 // Sorts light types into axis order and drops duplicates: a scene's lights (load/), a
 // permutation's and its key (permute/) all use this one order.
 std::vector<LightType> canonicalLights(std::vector<LightType> lights);

@@ -45,7 +45,7 @@ std::string lightStruct(LightType type, const std::string& L) {
     return "SpotLight(" + rel + ", vec3(" + L + ".axis.xyz), " + intensity + ", float(" + L + ".axis.w), float(" + L +
            ".params.x))";
   if (type == LightType::Sphere) return "SphereLight(" + rel + ", float(" + L + ".position.w), " + intensity + ")";
-  if (type == LightType::Rect || type == LightType::Disk)
+  if (isLtcLight(type))
     return lightStructName(type) + "(" + rel + ", vec3(" + L + ".halfX.xyz), vec3(" + L + ".halfY.xyz), vec3(" + L +
            ".luminance.rgb))";
   return "TubeLight(" + rel + ", vec3(" + L + ".axis.xyz - mbWorldPosition), float(" + L + ".position.w), " +
@@ -71,7 +71,7 @@ class FragmentWriter {
 
  private:
   bool ibl() const { return isIbl(perm_.environment); }
-  bool ltc() const { return perm_.hasLight(LightType::Rect) || perm_.hasLight(LightType::Disk); }
+  bool ltc() const { return usesLtcTable(perm_.lights); }
   // Shading-side text: written in fp32 GLSL, rewritten at fp16.
   void shading(const std::string& glsl) { w_.line(p_ == ShaderPrecision::Fp16 ? rewriteToFp16(glsl) : glsl); }
   const FragmentTexture* textureOf(const std::string& param) const {

@@ -18,12 +18,10 @@ constexpr Range kPrefiltered{0.0, 4.0};
 // Rectangle and disk lights: luminance (pre-exposed units), so the irradiance reaches pi times it.
 constexpr Range kLuminance{0.0, 4.0};
 
-bool hasLtcLight(const ProbeScene& scene) { return scene.has(LightType::Rect) || scene.has(LightType::Disk); }
-
 void lightInputs(LightType type, std::vector<ProbeSceneInput>& out) {
   auto add = [&](const std::string& name, ValueType t, Range r) { out.push_back({lightTypeName(type) + name, t, r}); };
   if (type == LightType::Dir) return;  // l and the optional illuminance
-  if (type == LightType::Rect || type == LightType::Disk) {
+  if (isLtcLight(type)) {
     // Centred on l at Distance; the edges (semi-axes) turned by AxisAngle about l and the
     // second tilted by Tilt from facing the point (0 and pi: edge-on). Sizes are fractions of
     // the distance; a negative HalfWidth turns the light's back to the point (no light).
@@ -73,7 +71,7 @@ std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene) {
     out.push_back({"ao", ValueType::Float, {0.0, 1.0}});
   }
   if (isIbl(scene.environment)) out.push_back({"prefiltered", ValueType::Vec3, kPrefiltered});
-  if (hasLtcLight(scene)) {
+  if (usesLtcTable(scene.lights)) {
     // The LTC table's texel: M^-1 within the table's ranges for roughness >= 0.05 (as the
     // polygon bricks' domains), norm = Int D V (n.l) <= 1 and its Fresnel part below it.
     out.push_back({"ltcM00", ValueType::Float, {0.05, 1.0}});
@@ -97,7 +95,7 @@ double probeSceneRadianceBound(const ProbeScene& scene) {
   for (LightType type : scene.lights) {
     if (type == LightType::Dir)
       bound += 1.0;
-    else if (type == LightType::Rect || type == LightType::Disk)
+    else if (isLtcLight(type))
       bound += std::numbers::pi * kLuminance.hi;  // irradiance Int L (n.l)+ dw <= pi L
     else
       bound += kIntensity.hi / (kDistance.lo * kDistance.lo);
@@ -113,7 +111,7 @@ double probeSceneRadianceBound(const ProbeScene& scene) {
 
 std::vector<std::string> probeSceneGlobals(const ProbeScene& scene) {
   std::vector<std::string> g;
-  if (scene.fullFrame || scene.has(LightType::Spot) || scene.has(LightType::Tube) || hasLtcLight(scene)) {
+  if (scene.fullFrame || scene.has(LightType::Spot) || scene.has(LightType::Tube) || usesLtcTable(scene.lights)) {
     // The frame's tangent and the spot and tube axes turn by an input angle, and the reference
     // reads that angle exactly (probe_scene_reference.cpp). GLSL sin and cos are bounded by the
     // Vulkan spec only to 2^-11 absolute ("Precision of GLSL.std.450 Instructions"); SwiftShader
@@ -130,7 +128,7 @@ std::vector<std::string> probeSceneGlobals(const ProbeScene& scene) {
     g.push_back("        x2 * (2.75573192e-6 + x2 * (-2.50521084e-8 + x2 * 1.60590438e-10))))));  // -sin(x)");
     g.push_back("}");
   }
-  if (hasLtcLight(scene)) {
+  if (usesLtcTable(scene.lights)) {
     g.push_back("// The LTC table's fetches: the record's texel for every lookup (as the DFG texel).");
     g.push_back("vec4 mbProbeLtcMatrix;");
     g.push_back("vec2 mbProbeLtcMagnitude;");
@@ -174,7 +172,7 @@ std::vector<std::string> probeSceneFrame(const ProbeScene& scene) {
     s.push_back("f.ng = f.n;");
     s.push_back("f.t = mbT0;");
   }
-  if (hasLtcLight(scene)) {
+  if (usesLtcTable(scene.lights)) {
     s.push_back("mbProbeLtcMatrix = vec4(p_ltcM00, p_ltcM02, p_ltcM20, p_ltcM22);");
     s.push_back("mbProbeLtcMagnitude = vec2(p_ltcNorm, p_ltcFresnel);");
   }
@@ -226,7 +224,7 @@ std::vector<std::string> probeSceneShading(const ProbeScene& scene) {
           "    r += shadeTubeLight(px, f, TubeLight(center - halfSegment, center + halfSegment, "
           "p_tubeRadiusFraction * p_tubeDistance, p_tubeIntensity, p_tubeFalloffRadius));");
       s.push_back("}");
-    } else if (type == LightType::Rect || type == LightType::Disk) {
+    } else if (isLtcLight(type)) {
       const std::string p = "p_" + lightTypeName(type);
       s.push_back("{");
       s.push_back("    float sinA, cosA, sinT, cosT;");

@@ -106,7 +106,7 @@ std::vector<PreviewLight> defaultLights(const std::vector<LightType>& types) {
       l.position = {-2.0f, 2.0f, 2.5f};
       l.radius = 0.4f;
       l.intensity = {12.0f, 14.0f, 16.0f};
-    } else if (type == LightType::Rect || type == LightType::Disk) {
+    } else if (isLtcLight(type)) {
       // A soft box above right and a round panel lower left, each facing the sphere's centre:
       // halfX across, halfY = facing x halfX, so that halfX x halfY points at the sphere.
       const bool rect = type == LightType::Rect;
@@ -124,7 +124,7 @@ std::vector<PreviewLight> defaultLights(const std::vector<LightType>& types) {
       l.radius = 0.1f;
       l.intensity = {10.0f, 9.0f, 8.0f};
     }
-    l.falloffRadius = type == LightType::Dir || type == LightType::Rect || type == LightType::Disk ? 0.0f : 12.0f;
+    l.falloffRadius = type == LightType::Dir || isLtcLight(type) ? 0.0f : 12.0f;
     lights.push_back(l);
   }
   return lights;
@@ -173,7 +173,7 @@ std::vector<uint8_t> frameBlockBytes(const std::vector<PreviewLight>& lights, co
       copy3(g.illuminance, l.intensity, 0.0f);
       continue;
     }
-    if (l.type == LightType::Rect || l.type == LightType::Disk) {
+    if (isLtcLight(l.type)) {
       uint32_t& count = l.type == LightType::Rect ? b.lightCounts2[1] : b.lightCounts2[2];
       if (count == kMaxLights) continue;
       AreaGpu& g = (l.type == LightType::Rect ? b.rectLights : b.diskLights)[count++];
@@ -231,7 +231,7 @@ double sceneRadianceBound(const std::vector<PreviewLight>& lights, const Environ
       bound += peak;
       continue;
     }
-    if (l.type == LightType::Rect || l.type == LightType::Disk) {
+    if (isLtcLight(l.type)) {
       bound += std::numbers::pi * peak;  // irradiance Int L (n.l)+ dw <= pi L
       continue;
     }

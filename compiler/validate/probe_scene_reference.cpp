@@ -60,7 +60,7 @@ SceneColumns sceneColumns(const ProbeScene& scene, const ProbeLayout& layout) {
       c.tubeRadiusFraction = at("tubeRadiusFraction");
       c.tubeIntensity = at("tubeIntensity");
       c.tubeFalloffRadius = at("tubeFalloffRadius");
-    } else if (type == LightType::Rect || type == LightType::Disk) {
+    } else if (isLtcLight(type)) {
       const int k = type == LightType::Rect ? 0 : 1;
       const std::string name = lightTypeName(type);
       c.areaLuminance[k] = at(name + "Luminance");
@@ -71,7 +71,7 @@ SceneColumns sceneColumns(const ProbeScene& scene, const ProbeLayout& layout) {
       c.areaHalfHeight[k] = at(name + "HalfHeight");
     }
   }
-  if (scene.has(LightType::Rect) || scene.has(LightType::Disk)) {
+  if (usesLtcTable(scene.lights)) {
     c.ltcM00 = at("ltcM00");
     c.ltcM02 = at("ltcM02");
     c.ltcM20 = at("ltcM20");
@@ -136,7 +136,7 @@ void sceneFromRecord(const ProbeScene& scene, const SceneColumns& c, const doubl
       Vec3 center = lu * d, halfSegment = axis * (scalar(c.tubeHalfLengthFraction) * d);
       in.tube = ref::TubeLight{center - halfSegment, center + halfSegment, scalar(c.tubeRadiusFraction) * d,
                                vec3(c.tubeIntensity), scalar(c.tubeFalloffRadius)};
-    } else if (type == LightType::Rect || type == LightType::Disk) {
+    } else if (isLtcLight(type)) {
       const int k = type == LightType::Rect ? 0 : 1;
       double a = scalar(c.areaAxisAngle[k]), tilt = scalar(c.areaTilt[k]), d = scalar(c.areaDistance[k]);
       Vec3 e1 = lt * std::cos(a) + lb * std::sin(a);
@@ -149,7 +149,7 @@ void sceneFromRecord(const ProbeScene& scene, const SceneColumns& c, const doubl
         in.disk = ref::DiskLight{lu * d, halfX, halfY, vec3(c.areaLuminance[k])};
     }
   }
-  if (scene.has(LightType::Rect) || scene.has(LightType::Disk))
+  if (usesLtcTable(scene.lights))
     in.ltc = ref::LtcTexel{scalar(c.ltcM00), scalar(c.ltcM02),  scalar(c.ltcM20),
                            scalar(c.ltcM22), scalar(c.ltcNorm), scalar(c.ltcFresnel)};
   if (scene.environment == EnvironmentMode::None) return;
