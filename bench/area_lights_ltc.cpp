@@ -32,6 +32,20 @@ double quadratureAlone(const ref::ltc::ViewFrame& fr, const Vec3& v, double alph
                                  [&](const Vec3& l) { return ref::ltc::ggxLobeLocal(vl, alpha, l); });
 }
 
+// The control variate as the bricks had it before: the residual's fan quadrature (unsplit) in
+// the light's own directions instead of the LTC's space (common/ltc_reference.hpp says why).
+double residualInLightDirections(const mb::ltc::TableSample& s, double alpha, const ref::ltc::ViewFrame& fr,
+                                 const Vec3& v, const std::vector<Vec3>& polygon) {
+  std::vector<Vec3> local;
+  for (const Vec3& w : polygon) local.push_back(fr.toLocal(w));
+  local = ref::ltc::clipToHalfSpace(local, Vec3{0, 0, 1});
+  const Vec3 vl = fr.toLocal(v);
+  double residual = ref::ltc::fanQuadrature(local, [&](const Vec3& l) {
+    return ref::ltc::ggxLobeLocal(vl, alpha, l) - s.norm * ref::ltc::density(s.minv, l);
+  });
+  return std::max(s.norm * ref::ltc::polygonIntegral(s.minv, fr, polygon) + residual, 0.0);
+}
+
 // The standard model's sphere light by its default bricks (standard.json, standard_lights.glsl):
 // D at the point brick's direction times the normalization brick, V at the centre, both times
 // the horizon wrap brick; specular and diffuse as integrals over the light's radiance, so that they
@@ -132,7 +146,9 @@ json measureLtcAreaLights(const mb::ltc::Table& table, const SphereLightBricks& 
     sphere["specular: LTC + residual quadrature (sphere_ltc_cv)"].add(cv / truth.specular, where);
     if (nearMirror)
       sphere["specular: LTC + residual quadrature, lights near the mirror ray"].add(cv / truth.specular, where);
-    sphere["specular: the residual's quadrature alone (no LTC)"].add(
+    sphere["specular: LTC + residual in the light's directions (the bricks before)"].add(
+        residualInLightDirections(s, alpha, fr, v, polygon) / truth.specular, where);
+    sphere["specular: a fan quadrature of the lobe alone (no LTC)"].add(
         quadratureAlone(fr, v, alpha, polygon) / truth.specular, where);
   }
   for (int i = 0; i < tubeSamples; ++i) {
@@ -164,14 +180,23 @@ json measureLtcAreaLights(const mb::ltc::Table& table, const SphereLightBricks& 
     tube["specular: LTC, capsule polygon"].add(spec / truth.specular, where);
     if (i % 2) tube["specular: LTC, capsule polygon, lights near the mirror ray"].add(spec / truth.specular, where);
     double cv = ref::ltc::polygonSpecularWithResidual(s.minv, s.norm, alpha, fr, v, polygon);
-    // The residual's quadrature on 4 and 16 sub-triangles per fan triangle (not what the brick
-    // does: 4x and 16x its lobe evaluations): how much of tube_ltc_cv's error is the quadrature's.
-    for (int levels : {1, 2})
-      tube["specular: LTC + residual on " + std::to_string(1 << (2 * levels)) + "x the sub-triangles"].add(
+    // The residual's quadrature with each fan triangle unsplit and split twice (the bricks split it
+    // once: a quarter and 4x their lobe evaluations): how much of tube_ltc_cv's error is the
+    // quadrature's.
+    for (int levels : {0, 2})
+      tube[std::string("specular: LTC + residual, fan triangles ") + (levels ? "split twice" : "unsplit")].add(
           ref::ltc::polygonSpecularWithResidual(s.minv, s.norm, alpha, fr, v, polygon, levels) / truth.specular, where);
+    // The capsule with the 8-gon caps it had before (the sides' width 0.948-1.026 of the circle's).
+    std::vector<Vec3> polygon8 = ref::ltc::tubePolygon(L0, L1, R, n, 8);
+    tube["diffuse: LTC, capsule polygon of 8-gon caps"].add(
+        kPi * ref::ltc::polygonIntegral(kIdentity, fr, polygon8) / truth.diffuse, where);
+    tube["specular: LTC + residual, capsule polygon of 8-gon caps"].add(
+        ref::ltc::polygonSpecularWithResidual(s.minv, s.norm, alpha, fr, v, polygon8) / truth.specular, where);
     tube["specular: LTC + residual quadrature (tube_ltc_cv)"].add(cv / truth.specular, where);
     if (i % 2) tube["specular: LTC + residual quadrature, lights near the mirror ray"].add(cv / truth.specular, where);
-    tube["specular: the residual's quadrature alone (no LTC)"].add(
+    tube["specular: LTC + residual in the light's directions (the bricks before)"].add(
+        residualInLightDirections(s, alpha, fr, v, polygon) / truth.specular, where);
+    tube["specular: a fan quadrature of the lobe alone (no LTC)"].add(
         quadratureAlone(fr, v, alpha, polygon) / truth.specular, where);
     if (diffuse > 0.0)
       tube["specular over diffuse: LTC, capsule polygon"].add((spec / diffuse) / (truth.specular / truth.diffuse),
@@ -222,8 +247,10 @@ json measureLtcAreaLights(const mb::ltc::Table& table, const SphereLightBricks& 
     const std::string shape = disk ? "disk_ltc_polygon" : "rect_ltc_polygon";
     m["specular: LTC (" + shape + ")"].add(ltcSpec / truth, where);
     if (nearMirror) m["specular: LTC, lights near the mirror ray"].add(ltcSpec / truth, where);
-    m["specular: LTC + residual quadrature (as sphere_ltc_cv)"].add(
+    m["specular: LTC + residual quadrature (" + std::string(disk ? "disk_ltc_cv" : "rect_ltc_cv") + ")"].add(
         ref::ltc::polygonSpecularWithResidual(s.minv, s.norm, alpha, fr, v, polygon) / truth, where);
+    m["specular: LTC + residual in the light's directions (the bricks before)"].add(
+        residualInLightDirections(s, alpha, fr, v, polygon) / truth, where);
   }
   auto rows = [](const std::map<std::string, Summary>& m) {
     json out = json::array();

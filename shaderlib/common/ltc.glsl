@@ -7,9 +7,9 @@
 // Needs lights.glsl (mb_orthonormal_basis, Duff et al. 2017, which the reference mirrors so
 // that both orient a light's polygon alike).
 
-// How many vertices a light's polygon can have: the capsule's hull takes at most 16 (both caps'
-// 8-gons); it is convex, so each of the two clips (horizon, then D_M's support) adds at most one:
-// 18; more for rounding that makes a nearly flat corner non-convex, and mb_ltc_clip drops any
+// How many vertices a light's polygon can have: the capsule's hull takes at most 32 (both caps'
+// 16-gons); it is convex, so each of the two clips (horizon, then D_M's support) adds at most one:
+// 34; more for rounding that makes a nearly flat corner non-convex, and mb_ltc_clip drops any
 // vertex beyond the last rather than write past it. The polygon lives in two private arrays,
 // clipped from one into the other and back (the second also holds the capsule's candidate
 // vertices): passing it by value (a struct or array argument) made lavapipe's JIT take 35-57 s
@@ -33,17 +33,24 @@ const int MB_LTC_MAX_VERTICES = 40;
 vec3 mbLtcPoly[MB_LTC_MAX_VERTICES];
 vec3 mbLtcClipped[MB_LTC_MAX_VERTICES];
 
-// Sutherland-Hodgman of mbLtcPoly[0, count) against z >= 0 into mbLtcPoly again; returns the
-// new count. The plane passes through the origin, so clipping the points clips the directions
-// they stand for.
-int mb_ltc_clip(int count) {
+// Sutherland-Hodgman of mbLtcPoly[0, count) against side z >= 0 (side 1 or -1) into
+// mbLtcClipped, mbLtcPoly unchanged; returns the new count. The plane passes through the origin,
+// so clipping the points clips the directions they stand for.
+int mb_ltc_clip_into(int count, float side) {
     int o = 0;
     MB_DONT_UNROLL for (int i = 0; i < count; ++i) {
         vec3 p = mbLtcPoly[i];
         vec3 q = mbLtcPoly[i + 1 == count ? 0 : i + 1];
-        if (p.z >= 0.0 && o < MB_LTC_MAX_VERTICES) mbLtcClipped[o++] = p;
-        if ((p.z >= 0.0) != (q.z >= 0.0) && o < MB_LTC_MAX_VERTICES) mbLtcClipped[o++] = p + (q - p) * (p.z / (p.z - q.z));
+        float pz = side * p.z, qz = side * q.z;
+        if (pz >= 0.0 && o < MB_LTC_MAX_VERTICES) mbLtcClipped[o++] = p;
+        if ((pz >= 0.0) != (qz >= 0.0) && o < MB_LTC_MAX_VERTICES) mbLtcClipped[o++] = p + (q - p) * (pz / (pz - qz));
     }
+    return o;
+}
+
+// mbLtcPoly[0, count) clipped to z >= 0 in place; returns the new count.
+int mb_ltc_clip(int count) {
+    int o = mb_ltc_clip_into(count, 1.0);
     MB_DONT_UNROLL for (int i = 0; i < o; ++i) mbLtcPoly[i] = mbLtcClipped[i];
     return o;
 }
@@ -78,8 +85,13 @@ int mb_ltc_to_local(vec3 n, vec3 v, int count, out vec3 vLocal) {
         mb_orthonormal_basis(n, t1, t2);  // lights.glsl
     }
     t2 = cross(n, t1);
+    // Unit directions from here on: a clip's new vertex is then interpolated between two unit
+    // vectors, not between two far points of a large light whose edge passes near the shading
+    // point, where the difference of the points would cost the direction most of its digits.
     MB_DONT_UNROLL for (int i = 0; i < count; ++i) {
         vec3 w = mbLtcPoly[i];
+        float len = length(w);
+        if (len > 0.0) w = w / len;
         mbLtcPoly[i] = vec3(dot(w, t1), dot(w, t2), dot(w, n));
     }
     vLocal = vec3(dot(v, t1), dot(v, t2), dot(v, n));
@@ -92,7 +104,7 @@ int mb_ltc_to_local(vec3 n, vec3 v, int count, out vec3 vLocal) {
 float mb_ltc_local_integral(float m00, float m02, float m20, float m22, int count) {
     MB_DONT_UNROLL for (int i = 0; i < count; ++i) {
         vec3 p = mbLtcPoly[i];
-        mbLtcPoly[i] = vec3(m00 * p.x + m02 * p.z, p.y, m20 * p.x + m22 * p.z);
+        mbLtcPoly[i] = normalize(vec3(m00 * p.x + m02 * p.z, p.y, m20 * p.x + m22 * p.z));  // unit, as above
     }
     count = mb_ltc_clip(count);
     return count < 3 ? 0.0 : mb_ltc_edge_sum(count);
@@ -103,16 +115,6 @@ float mb_ltc_integrate(vec3 n, vec3 v, float m00, float m02, float m20, float m2
     vec3 vLocal;
     count = mb_ltc_to_local(n, v, count, vLocal);
     return mb_ltc_local_integral(m00, m02, m20, m22, count);
-}
-
-// D_M at the unit direction l of the table's frame (Heitz et al. 2016 eq. 2 with the Jacobian
-// of l_o = M^-1 l / |M^-1 l|).
-float mb_ltc_density(float m00, float m02, float m20, float m22, vec3 l) {
-    vec3 o = vec3(m00 * l.x + m02 * l.z, l.y, m20 * l.x + m22 * l.z);
-    float len2 = dot(o, o);
-    float len = sqrt(len2);
-    if (!(o.z > 0.0)) return 0.0;
-    return (o.z / len) * abs(m00 * m22 - m02 * m20) / (MB_PI * len2 * len);
 }
 
 // The lobe the table was fitted to (F = 1) at the unit l of the table's frame (n = z): GGX D,
@@ -139,46 +141,74 @@ float mb_ltc_lobe(vec3 v, float alpha, vec3 l) {
     return MB_SATURATE_MEDIUMP(D * VNoL);
 }
 
-float mb_ltc_residual(vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22, vec3 l) {
-    return mb_ltc_lobe(v, alpha, l) - norm * mb_ltc_density(m00, m02, m20, m22, l);
+// The residual's integrand in the LTC's space (common/ltc_reference.hpp, warpedResidual) at the
+// unit o: the lobe at w = M o / |M o| times the Jacobian |det M| / |M o|^3, less norm D_o(o). With
+// d = m00 m22 - m02 m20, the determinant of M^-1 (positive over the table), M o is W / d for
+// W = (m22 o.x - m02 o.z, d o.y, m00 o.z - m20 o.x), so the Jacobian is d^2 / |W|^3.
+float mb_ltc_warped_residual(vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22, vec3 o) {
+    float d = m00 * m22 - m02 * m20;
+    vec3 w = vec3(m22 * o.x - m02 * o.z, d * o.y, m00 * o.z - m20 * o.x);
+    float len = length(w);
+    float dl = d / len;  // one factor at a time: d^2 underflows half precision at small alpha
+    return mb_ltc_lobe(v, alpha, w / len) * (dl * dl / len) - norm * max(o.z, 0.0) * (1.0 / MB_PI);
 }
 
-// The LTC as a control variate (common/ltc_reference.hpp, polygonSpecularWithResidual): what
-// norm D_M misses of the lobe, Int (lobe - norm D_M), integrated over the local, horizon-clipped
-// mbLtcPoly[0, count) by triangles fanned from the vertices' mean direction, each its solid
-// angle (Van Oosterom & Strackee 1983) times the mean at three interior points (barycentric
-// 2/3, 1/6, 1/6).
+// The residual's quadrature over mbLtcClipped[0, count), a polygon of the LTC's space: triangles
+// fanned from its vertices' mean direction, each split into its four midpoint children, each
+// child its solid angle (Van Oosterom & Strackee 1983) times the mean at three interior points
+// (barycentric 2/3, 1/6, 1/6); common/ltc_reference.hpp, polygonSpecularWithResidual.
 float mb_ltc_fan_residual(vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22, int count) {
+    if (count < 3) return 0.0;
     vec3 centre = vec3(0.0);
-    MB_DONT_UNROLL for (int i = 0; i < count; ++i) centre += normalize(mbLtcPoly[i]);
+    MB_DONT_UNROLL for (int i = 0; i < count; ++i) centre += normalize(mbLtcClipped[i]);
     centre = normalize(centre);
     float sum = 0.0;
     MB_DONT_UNROLL for (int k = 0; k < count; ++k) {
         vec3 a = centre;
-        vec3 b = normalize(mbLtcPoly[k]);
-        vec3 c = normalize(mbLtcPoly[k + 1 == count ? 0 : k + 1]);
-        float omega = 2.0 * atan(abs(dot(a, cross(b, c))), 1.0 + dot(a, b) + dot(b, c) + dot(c, a));
-        // One call site in a loop: three inlined calls tripled lavapipe's JIT time.
-        float mean = 0.0;
-        for (int j = 0; j < 3; ++j) {
-            vec3 corner = j == 0 ? a : (j == 1 ? b : c);
-            vec3 l = normalize(corner * 0.5 + (a + b + c) * (1.0 / 6.0));  // 2/3 corner + 1/6 others
-            mean += mb_ltc_residual(v, alpha, norm, m00, m02, m20, m22, l);
+        vec3 b = normalize(mbLtcClipped[k]);
+        vec3 c = normalize(mbLtcClipped[k + 1 == count ? 0 : k + 1]);
+        vec3 ab = normalize(a + b), bc = normalize(b + c), ca = normalize(c + a);
+        // One call site in loops that stay loops: each inlined copy of the lobe costs lavapipe's
+        // JIT time.
+        MB_DONT_UNROLL for (int child = 0; child < 4; ++child) {
+            vec3 x = child == 0 ? a : (child == 2 ? ca : ab);  // (a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)
+            vec3 y = child == 0 ? ab : (child == 1 ? b : bc);
+            vec3 z = child == 1 ? bc : (child == 2 ? c : ca);
+            float omega = 2.0 * atan(abs(dot(x, cross(y, z))), 1.0 + dot(x, y) + dot(y, z) + dot(z, x));
+            float mean = 0.0;
+            MB_DONT_UNROLL for (int j = 0; j < 3; ++j) {
+                vec3 corner = j == 0 ? x : (j == 1 ? y : z);
+                vec3 o = normalize(corner * 0.5 + (x + y + z) * (1.0 / 6.0));  // 2/3 corner + 1/6 others
+                mean += mb_ltc_warped_residual(v, alpha, norm, m00, m02, m20, m22, o);
+            }
+            sum += omega * mean * (1.0 / 3.0);
         }
-        sum += omega * mean * (1.0 / 3.0);
     }
     return sum;
 }
 
 // Int of the lobe (F = 1) over the light polygon mbLtcPoly[0, count) above the horizon: norm times
-// D_M's integral plus the residual's quadrature. Overwrites mbLtcPoly.
+// D_M's integral plus the residual's quadrature in the LTC's space, on each side of D_M's support
+// plane (common/ltc_reference.hpp says why). Overwrites mbLtcPoly.
 float mb_ltc_specular_cv(vec3 n, vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22, int count) {
     vec3 vLocal;
     count = mb_ltc_to_local(n, v, count, vLocal);
     if (count < 3) return 0.0;
-    float residual = mb_ltc_fan_residual(vLocal, alpha, norm, m00, m02, m20, m22, count);
+    MB_DONT_UNROLL for (int i = 0; i < count; ++i) {
+        vec3 p = mbLtcPoly[i];
+        mbLtcPoly[i] = normalize(vec3(m00 * p.x + m02 * p.z, p.y, m20 * p.x + m22 * p.z));  // unit, as above
+    }
+    float residual = 0.0;
+    int inside = 0;
+    MB_DONT_UNROLL for (int part = 0; part < 2; ++part) {
+        int k = mb_ltc_clip_into(count, part == 0 ? -1.0 : 1.0);
+        residual += mb_ltc_fan_residual(vLocal, alpha, norm, m00, m02, m20, m22, k);
+        inside = k;  // the last part is D_M's support
+    }
+    MB_DONT_UNROLL for (int i = 0; i < inside; ++i) mbLtcPoly[i] = mbLtcClipped[i];
+    float ltc = inside < 3 ? 0.0 : mb_ltc_edge_sum(inside);
     // The integral of a non-negative lobe: a quadrature that overshoots a small result is cut at 0.
-    return max(norm * mb_ltc_local_integral(m00, m02, m20, m22, count) + residual, 0.0);
+    return max(norm * ltc + residual, 0.0);
 }
 
 // The sine of a ball's angular radius; inside the ball the bound of the representative-point
@@ -187,22 +217,26 @@ float mb_ltc_sin_alpha(float d, float radius) {
     return d > 0.0 ? min(radius / max(d, radius), 0.95) : 0.0;
 }
 
-// The cap of a ball seen from the shading point as the area-matched regular 8-gon of the disk
+// The cap of a ball seen from the shading point as a regular k-gon (k = 8 or 16) of the disk
 // that faces the point and whose rim is the cap's rim (centre c cos a, radius sin a at unit
 // distance; D_M and the lobe integrate over directions, so that disk is the ball exactly, as
 // Heitz & Hill 2017 shade spheres), oriented by Duff et al.'s basis about c as the reference
-// (spherePolygon), its vertices at radius sin a times scale. Vertex i of 8; sinA > 0.
-vec3 mb_ltc_cap_vertex(vec3 n, vec3 toCenter, float sinA, float scale, int i) {
+// (spherePolygon), its vertices at radius sin a times scale. Vertex i of k; sinA > 0.
+const vec2 MB_LTC_RIM16[16] = vec2[16](
+    vec2(1.0, 0.0), vec2(0.923879533, 0.382683432), vec2(0.707106781, 0.707106781), vec2(0.382683432, 0.923879533),
+    vec2(0.0, 1.0), vec2(-0.382683432, 0.923879533), vec2(-0.707106781, 0.707106781), vec2(-0.923879533, 0.382683432),
+    vec2(-1.0, 0.0), vec2(-0.923879533, -0.382683432), vec2(-0.707106781, -0.707106781),
+    vec2(-0.382683432, -0.923879533), vec2(0.0, -1.0), vec2(0.382683432, -0.923879533),
+    vec2(0.707106781, -0.707106781), vec2(0.923879533, -0.382683432));  // (cos, sin)(2 pi i / 16)
+vec3 mb_ltc_cap_vertex(vec3 n, vec3 toCenter, float sinA, float scale, int i, int k) {
     float d = length(toCenter);
     vec3 c = d > 0.0 ? toCenter / d : n;
     float cosA = sqrt(1.0 - sinA * sinA);
     vec3 e1, e2;
     mb_orthonormal_basis(c, e1, e2);
-    const float r = 0.70710678118654752;  // cos(pi / 4)
-    const vec2 rim[8] = vec2[8](vec2(1.0, 0.0), vec2(r, r), vec2(0.0, 1.0), vec2(-r, r), vec2(-1.0, 0.0), vec2(-r, -r),
-                                vec2(0.0, -1.0), vec2(r, -r));
+    vec2 rim = MB_LTC_RIM16[i * (16 / k)];
     float s = sinA * scale;
-    return c * cosA + (e2 * rim[i].x + e1 * rim[i].y) * s;
+    return c * cosA + (e2 * rim.x + e1 * rim.y) * s;
 }
 
 // The sphere light: its cap's 8-gon of the disk's area. Fills mbLtcPoly; returns its count (0 for a point light,
@@ -210,7 +244,7 @@ vec3 mb_ltc_cap_vertex(vec3 n, vec3 toCenter, float sinA, float scale, int i) {
 int mb_ltc_sphere_polygon(vec3 n, vec3 toCenter, float radius) {
     float sinA = mb_ltc_sin_alpha(length(toCenter), radius);
     if (!(sinA > 0.0)) return 0;
-    for (int i = 0; i < 8; ++i) mbLtcPoly[i] = mb_ltc_cap_vertex(n, toCenter, sinA, 1.05390926, i);  // sqrt(2 pi / (8 sin(pi / 4)))
+    for (int i = 0; i < 8; ++i) mbLtcPoly[i] = mb_ltc_cap_vertex(n, toCenter, sinA, 1.05390926, i, 8);  // sqrt(2 pi / (8 sin(pi / 4)))
     return 8;
 }
 
@@ -231,47 +265,45 @@ int mb_ltc_rect_polygon(vec3 c, vec3 ex, vec3 ey) {
 // (diskPolygon). Fills mbLtcPoly; returns its count.
 int mb_ltc_disk_polygon(vec3 c, vec3 ex, vec3 ey) {
     if (!(dot(cross(ex, ey), c) < 0.0)) return 0;
-    const float r = 0.70710678118654752;  // cos(pi / 4)
-    const vec2 rim[8] = vec2[8](vec2(1.0, 0.0), vec2(r, r), vec2(0.0, 1.0), vec2(-r, r), vec2(-1.0, 0.0), vec2(-r, -r),
-                                vec2(0.0, -1.0), vec2(r, -r));
-    for (int i = 0; i < 8; ++i) mbLtcPoly[i] = c + (ex * rim[i].x + ey * rim[i].y) * 1.05390926;
+    for (int i = 0; i < 8; ++i) mbLtcPoly[i] = c + (ex * MB_LTC_RIM16[2 * i].x + ey * MB_LTC_RIM16[2 * i].y) * 1.05390926;
     return 8;
 }
 
 // The tube (capsule) light's silhouette from the shading point: the spherical convex hull of its
-// two end caps' 8-gons (of the circle's mean width), by gift wrapping on the sphere (Jarvis 1973): from the vertex farthest
-// against e1 of the ends' mean direction, each next vertex is the one that leaves every other on
-// the left of the great circle through both. Continuous as the ends move, end-on views included
-// (common/ltc_reference.hpp, tubePolygon, which this follows step for step). The candidates sit
-// in mbLtcClipped and are read only at loop indices, vertices carried by value: reads at a
-// computed index made lavapipe's JIT take ~60 s. Fills mbLtcPoly; returns its count, at most 16.
+// two end caps' 16-gons (of the circle's mean width), by gift wrapping on the sphere (Jarvis
+// 1973): from the vertex farthest against e1 of the ends' mean direction, each next vertex is the
+// one that leaves every other on the left of the great circle through both. Continuous as the
+// ends move, end-on views included (common/ltc_reference.hpp, tubePolygon, which this follows
+// step for step). The candidates sit in mbLtcClipped and are read only at loop indices, vertices
+// carried by value: reads at a computed index made lavapipe's JIT take ~60 s; the loops stay
+// loops (32 x 32 unrolled would be 1024 copies). Fills mbLtcPoly; returns its count, at most 32.
 int mb_ltc_tube_polygon(vec3 n, vec3 L0, vec3 L1, float radius) {
     float d0 = length(L0), d1 = length(L1);
     float sin0 = mb_ltc_sin_alpha(d0, radius), sin1 = mb_ltc_sin_alpha(d1, radius);
     if (!(sin0 > 0.0) || !(sin1 > 0.0)) return 0;  // no radius: a line has no solid angle
-    for (int i = 0; i < 8; ++i) {
-        // The 8-gons of the circle's mean width, pi / (8 sin(pi / 8)): the sides take their
+    MB_DONT_UNROLL for (int i = 0; i < 16; ++i) {
+        // The 16-gons of the circle's mean width, pi / (16 sin(pi / 16)): the sides take their
         // width from them (tubePolygon).
-        mbLtcClipped[i] = mb_ltc_cap_vertex(n, L0, sin0, 1.02617215, i);
-        mbLtcClipped[8 + i] = mb_ltc_cap_vertex(n, L1, sin1, 1.02617215, i);
+        mbLtcClipped[i] = mb_ltc_cap_vertex(n, L0, sin0, 1.00645454, i, 16);
+        mbLtcClipped[16 + i] = mb_ltc_cap_vertex(n, L1, sin1, 1.00645454, i, 16);
     }
     vec3 mid = (d0 > 0.0 ? L0 / d0 : n) + (d1 > 0.0 ? L1 / d1 : n);
     vec3 m = length(mid) > 0.0 ? normalize(mid) : n;
     vec3 e1, e2;
     mb_orthonormal_basis(m, e1, e2);
     int cur = 0;
-    for (int j = 1; j < 16; ++j)
+    MB_DONT_UNROLL for (int j = 1; j < 32; ++j)
         if (dot(normalize(mbLtcClipped[j]), e1) < dot(normalize(mbLtcClipped[cur]), e1)) cur = j;
     vec3 p = mbLtcClipped[cur];
     uint seen = 0u;
     int count = 0;
-    for (int step = 0; step < 16; ++step) {
+    MB_DONT_UNROLL for (int step = 0; step < 32; ++step) {
         mbLtcPoly[step] = p;
         count = step + 1;
         seen |= 1u << uint(cur);
         int next = -1;
         vec3 best = p;
-        for (int j = 0; j < 16; ++j) {
+        MB_DONT_UNROLL for (int j = 0; j < 32; ++j) {
             vec3 q = mbLtcClipped[j];
             if (q == p) continue;
             if (next < 0) {

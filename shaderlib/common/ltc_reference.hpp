@@ -137,6 +137,10 @@ inline double polygonAreaScale(int k) { return std::sqrt(2.0 * kPi / (k * std::s
 inline double polygonWidthScale(int k) { return kPi / (k * std::sin(kPi / k)); }
 
 inline constexpr int kLtcCircleVertices = 8;
+// A capsule's end caps take twice as many: the width of its sides, which depends on the
+// capsule's orientation, is then 0.987 to 1.006 of the circle's instead of 0.948 to 1.026
+// (at polygonWidthScale; docs/models/lights.md).
+inline constexpr int kLtcTubeCapVertices = 16;
 
 // A rectangle light with centre c and half-edge vectors ex, ey, emitting on the side of
 // ex x ey. Seen from behind (or edge-on) it sends nothing: an empty polygon.
@@ -218,7 +222,7 @@ inline std::vector<Vec3> spherePolygon(const Vec3& toCenter, double R, const Vec
 // than the reference, 40 % apart: docs/devices.md.) Needs every vertex in one open hemisphere,
 // which holds unless the shading point is (nearly) inside the capsule.
 inline std::vector<Vec3> tubePolygon(const Vec3& L0, const Vec3& L1, double R, const Vec3& n,
-                                     int k = kLtcCircleVertices) {
+                                     int k = kLtcTubeCapVertices) {
   std::vector<Vec3> pts = spherePolygon(L0, R, n, k, polygonWidthScale(k));
   std::vector<Vec3> far = spherePolygon(L1, R, n, k, polygonWidthScale(k));
   if (pts.empty() || far.empty()) return {};  // no radius: a line has no solid angle
@@ -258,18 +262,26 @@ inline std::vector<Vec3> tubePolygon(const Vec3& L0, const Vec3& L1, double R, c
   return hull;
 }
 
-// ---- The LTC as a control variate (sphere_ltc_cv, tube_ltc_cv).
+// ---- The LTC as a control variate (sphere_ltc_cv, tube_ltc_cv, rect_ltc_cv, disk_ltc_cv).
 // The LTC alone is off where the fitted D_M departs from the lobe it stands for: a few percent
 // at the lobe's peak, and in its tails (D_M ends at its support plane, and does not vanish at
 // the horizon as the lobe's n.l does) by up to 100 % of a light that only the tails see
 // (docs/models/lights.md). What the integral misses is Int (lobe - norm D_M) over the light, a
-// residual that is small wherever the fit is good. It is integrated here by a deterministic
-// quadrature over the light's horizon-clipped polygon: triangles fanned from the vertices'
-// mean direction, each weighted by its solid angle (Van Oosterom & Strackee 1983) and averaged
-// at three interior points, the planar triangle's degree-2 rule (barycentric 2/3, 1/6, 1/6).
-// The quadrature alone, without the LTC, left 8 % at the 95th percentile against the
-// brute-force integral, 25 % near the mirror ray (measured beside bench_area_lights.cpp); with
-// the LTC taking the bulk, 2 % (docs/models/lights.md).
+// residual that is small wherever the fit is good. It is integrated by a deterministic
+// quadrature in the LTC's own space: with w = M w_o / |M w_o| (the substitution of Heitz et al.
+// 2016, section 3.4) the residual over the light is
+//   Int over M^-1 P of ( lobe(w) J(w_o) - norm D_o(w_o) ) dw_o,  J = dw / dw_o = |det M| / |M w_o|^3,
+// and lobe J follows norm D_o, a clamped cosine, wherever the fit is good: the lobe's peak,
+// as narrow as alpha about the mirror direction, is spread over the cosine's whole hemisphere.
+// A quadrature of the residual in the light's own directions samples that peak at a few points,
+// and one landing on it carries a value up to 1 / alpha^2 larger than the integral: in fp32,
+// whose directions carry ~1e-6 rad, that made the result 60-80 % off its double at alpha < 0.04
+// (validate, 50,000 samples; docs/models/lights.md), and the double itself 4.7-11 % off the
+// brute force at the 95th percentile for roughness < 0.1. The polygon M^-1 P is split at D_M's
+// support plane z = 0 (where D_o has its kink); each part is covered by triangles fanned from its
+// vertices' mean direction, each split once into its four midpoint children, each child its
+// solid angle (Van Oosterom & Strackee 1983) times the mean at three interior points, the
+// planar triangle's degree-2 rule (barycentric 2/3, 1/6, 1/6).
 inline constexpr double kFanPoint = 2.0 / 3.0, kFanOther = 1.0 / 6.0;
 
 // One spherical triangle a, b, c (unit vectors): its solid angle times the mean of f at the
@@ -376,24 +388,37 @@ inline double lobeOverPolygon(const Vec3& n, const Vec3& v, double alpha, const 
   return lobeIntegralAdaptive(local, fr.toLocal(v), alpha, 1e-7 * kPi * clampedCosinePolygon(local));
 }
 
+// The residual's integrand in the LTC's space at the unit w_o (M = inverse of minv, detM its
+// determinant): the lobe at w = M w_o / |M w_o| times the Jacobian, less norm D_o(w_o).
+inline double warpedResidual(const Mat3& m, double detM, double norm, const Vec3& v, double alpha, const Vec3& o) {
+  const Vec3 w = mul(m, o);
+  const double len = length(w);
+  return ggxLobeLocal(v, alpha, w / len) * std::abs(detM) / (len * len * len) - norm * std::max(o.z, 0.0) / kPi;
+}
+
 // Int over the light polygon `world` of the lobe (F = 1) above the horizon: norm times the LTC
-// integral, plus the residual's fan quadrature.
+// integral plus the residual's quadrature in the LTC's space (above), whose triangles are split
+// `levels` times (the bricks: once).
+inline constexpr int kResidualLevels = 1;
 inline double polygonSpecularWithResidual(const Mat3& minv, double norm, double alpha, const ViewFrame& fr,
-                                          const Vec3& v, const std::vector<Vec3>& world, int levels = 0) {
+                                          const Vec3& v, const std::vector<Vec3>& world, int levels = kResidualLevels) {
   std::vector<Vec3> local;
   local.reserve(world.size());
   for (const Vec3& w : world) local.push_back(fr.toLocal(w));
   local = clipToHalfSpace(local, Vec3{0, 0, 1});
   if (local.size() < 3) return 0.0;
   const Vec3 vl = fr.toLocal(v);
-  double residual = fanQuadrature(
-      local, [&](const Vec3& l) { return ggxLobeLocal(vl, alpha, l) - norm * density(minv, l); }, levels);
-  std::vector<Vec3> p;
-  for (const Vec3& q : local) p.push_back(mul(minv, q));
-  p = clipToHalfSpace(p, Vec3{0, 0, 1});
-  double ltc = p.size() < 3 ? 0.0 : clampedCosinePolygon(p);
+  const Mat3 m = inverse(minv);
+  const double detM = det(m);
+  std::vector<Vec3> mapped;
+  for (const Vec3& q : local) mapped.push_back(mul(minv, q));
+  const std::vector<Vec3> inside = clipToHalfSpace(mapped, Vec3{0, 0, 1});
+  const std::vector<Vec3> outside = clipToHalfSpace(mapped, Vec3{0, 0, -1});
+  auto residual = [&](const Vec3& o) { return warpedResidual(m, detM, norm, vl, alpha, o); };
+  const double ltc = inside.size() < 3 ? 0.0 : clampedCosinePolygon(inside);
+  const double sum = fanQuadrature(inside, residual, levels) + fanQuadrature(outside, residual, levels);
   // The lobe is non-negative; a quadrature that overshoots a small result is cut at 0.
-  return std::max(norm * ltc + residual, 0.0);
+  return std::max(norm * ltc + sum, 0.0);
 }
 
 }  // namespace mb::ref::ltc
