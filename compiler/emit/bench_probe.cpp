@@ -94,11 +94,11 @@ EmittedShader emitBrickBenchProbe(const ShaderLibrary& lib, const Brick& brick, 
 EmittedShader emitPermutationBenchProbe(const ShaderLibrary& lib, const Permutation& perm,
                                         const BenchProbeOptions& options) {
   EmittedShader s = emitPermutation(lib, perm);
-  // evaluateMaterial(n, v, l, illuminance, <non-constant parameters in layout order>).
-  std::string args = "p_n, p_v, p_l, vec3(1.0)";
-  for (const auto& prm : perm.material->params)
-    if (!prm.constant) args += ", p_" + prm.name;
-  return withBenchEntry(std::move(s), "evaluateMaterial(" + args + ")", options);
+  // The function validation's main calls (emitter.hpp): every light and the environment of the
+  // permutation, on the perturbed record.
+  std::string args;
+  for (const auto& in : permutationRadianceInputs(s.layout)) args += (args.empty() ? "p_" : ", p_") + in.name;
+  return withBenchEntry(std::move(s), std::string(kPermutationRadiance) + "(" + args + ")", options);
 }
 
 }  // namespace mb

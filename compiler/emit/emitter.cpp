@@ -368,18 +368,31 @@ void writeApi(GlslWriter& w, const Permutation& perm, ShaderPrecision precision)
   line("}");
 }
 
+// The permutation's whole evaluation (its frame, every light and its environment) is one
+// function of the probe's inputs, kPermutationRadiance: main calls it on the record, and the
+// bench kernel (bench_probe.cpp) times the same function on perturbed inputs, so that a
+// permutation's cost is what validation runs.
 void writePermutationProbe(GlslWriter& w, const ProbeLayout& layout, const Permutation& perm, const ProbeScene& scene,
                            ShaderPrecision p, const std::vector<ProbeInput>& params) {
-  std::vector<std::string> body;
-  for (const auto& s : probeSceneFrame(scene)) body.push_back(s);
   std::string args;
   for (const auto& prm : perm.material->params)
     if (!prm.constant) args += std::string(args.empty() ? "" : ", ") + "p_" + prm.name;
-  body.push_back("MaterialInputs m = materialInputs(" + args + ");");
-  body.push_back("ShadingPixel px = preparePixel(m, f);");
-  body.push_back("vec3 r = emittedRadiance(px);");
-  for (const auto& s : probeSceneShading(scene)) body.push_back(s);
-  writeProbe(w, layout, body, probeSceneGlobals(scene), p, params);
+  std::string signature, call;
+  for (const auto& in : permutationRadianceInputs(layout, params)) {
+    signature += std::string(signature.empty() ? "" : ", ") + toString(in.type) + " p_" + in.name;
+    call += std::string(call.empty() ? "" : ", ") + "p_" + in.name;
+  }
+  std::vector<std::string> globals = probeSceneGlobals(scene);
+  globals.push_back(std::string("vec3 ") + kPermutationRadiance + "(" + signature + ") {");
+  for (const auto& s : probeSceneFrame(scene)) globals.push_back("    " + s);
+  globals.push_back("    ShadingPixel px = preparePixel(materialInputs(" + args + "), f);");
+  globals.push_back("    vec3 r = emittedRadiance(px);");
+  for (const auto& s : probeSceneShading(scene)) globals.push_back("    " + s);
+  globals.push_back("    return r;");
+  globals.push_back("}");
+  std::vector<std::string> body{"vec3 r = " + std::string(kPermutationRadiance) + "(" + call + ");"};
+  if (!layout.fedOutputs.empty()) body.push_back("MaterialInputs m = materialInputs(" + args + ");");
+  writeProbe(w, layout, body, globals, p, params);
 }
 
 // Engine records: the probe's inputs without the non-constant material parameters, which move
@@ -403,6 +416,12 @@ std::vector<ProbeInput> splitEngineLayout(ProbeLayout& layout, const MaterialDes
 }
 
 }  // namespace
+
+std::vector<ProbeInput> permutationRadianceInputs(const ProbeLayout& layout, const std::vector<ProbeInput>& params) {
+  std::vector<ProbeInput> in = layout.inputs;
+  in.insert(in.end(), params.begin(), params.end());
+  return in;
+}
 
 EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput, EmitMode mode,
                               bool mediump) {
