@@ -75,22 +75,6 @@ RepresentativeSphere representativeSphere(const SphereLightBricks& b, const Geom
   return out;
 }
 
-// A rectangle or disk light facing the shading point: centre c (unit direction, distance 1),
-// half-edges (semi-axes) of lengths hx, hy along e1 and e2 turned about c by `turn` and tilted
-// from facing by `tilt`, wound so that cross(ex, ey) points back at the point.
-struct PlanarLight {
-  Vec3 c, ex, ey;
-};
-PlanarLight planarLight(const Vec3& c, double hx, double hy, double turn, double tilt) {
-  Vec3 e1, e2;
-  ref::ltc::perpendicularPair(c, e1, e2);
-  Vec3 u = e1 * std::cos(turn) + e2 * std::sin(turn), w = cross(c, u);
-  Vec3 ey = (w * std::cos(tilt) + c * std::sin(tilt)) * hy;
-  Vec3 ex = u * hx;
-  if (!(dot(cross(ex, ey), c) < 0.0)) ex = ex * -1.0;
-  return {c, ex, ey};
-}
-
 }  // namespace
 
 SphereLightBricks standardSphereLight(const ShaderLibrary& lib) {
@@ -220,7 +204,7 @@ json measureLtcAreaLights(const mb::ltc::Table& table, const SphereLightBricks& 
     double hx = size(), hy = size();
     Vec3 c = nearMirror ? around(r, (alpha + std::max(hx, hy)) * 2.0 * U(rng), 2 * kPi * U(rng))
                         : unitFromAngles(-0.3 + 1.3 * U(rng), 2 * kPi * U(rng));
-    PlanarLight l = planarLight(c, hx, hy, 2 * kPi * U(rng), (2 * U(rng) - 1) * kPi / 3);
+    ref::ltc::PlanarLight l = ref::ltc::facingPlanarLight(c, hx, hy, 2 * kPi * U(rng), (2 * U(rng) - 1) * kPi / 3);
     std::vector<Vec3> polygon = disk ? ref::ltc::diskPolygon(l.c, l.ex, l.ey) : ref::ltc::rectPolygon(l.c, l.ex, l.ey);
     std::vector<Vec3> exact = disk ? ref::ltc::diskPolygon(l.c, l.ex, l.ey, 256) : polygon;
     ref::ltc::ViewFrame fr = ref::ltc::viewFrame(n, v);

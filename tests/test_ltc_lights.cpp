@@ -288,14 +288,10 @@ TEST_CASE("tube, rectangle and disk LTC with the control variate meet the area-l
         double hx = size(), hy = size();
         Vec3 c = i % 2 ? nearRay(r, (alpha + std::max(hx, hy)) * 2.0 * U(rng), 2 * ref::kPi * U(rng))
                        : unitAt(-0.3 + 1.3 * U(rng), 2 * ref::kPi * U(rng));
-        Vec3 e1, e2;
-        rl::perpendicularPair(c, e1, e2);
         double turn = 2 * ref::kPi * U(rng), tilt = (2 * U(rng) - 1) * ref::kPi / 3;
-        Vec3 u = e1 * std::cos(turn) + e2 * std::sin(turn), w = ref::cross(c, u);
-        Vec3 ex = u * hx, ey = (w * std::cos(tilt) + c * std::sin(tilt)) * hy;
-        if (!(ref::dot(ref::cross(ex, ey), c) < 0.0)) ex = ex * -1.0;  // facing the point
-        polygon = name == "rect" ? rl::rectPolygon(c, ex, ey) : rl::diskPolygon(c, ex, ey);
-        std::vector<Vec3> exact = name == "rect" ? polygon : rl::diskPolygon(c, ex, ey, 256);
+        const rl::PlanarLight light = rl::facingPlanarLight(c, hx, hy, turn, tilt);
+        polygon = name == "rect" ? rl::rectPolygon(c, light.ex, light.ey) : rl::diskPolygon(c, light.ex, light.ey);
+        std::vector<Vec3> exact = name == "rect" ? polygon : rl::diskPolygon(c, light.ex, light.ey, 256);
         std::vector<Vec3> local;
         for (const Vec3& p : exact) local.push_back(fr.toLocal(p));
         local = rl::clipToHalfSpace(local, Vec3{0, 0, 1});

@@ -96,9 +96,8 @@ EmittedShader emitPermutationBenchProbe(const ShaderLibrary& lib, const Permutat
   EmittedShader s = emitPermutation(lib, perm);
   // The function validation's main calls (emitter.hpp): every light and the environment of the
   // permutation, on the perturbed record.
-  std::string args;
-  for (const auto& in : permutationRadianceInputs(s.layout)) args += (args.empty() ? "p_" : ", p_") + in.name;
-  return withBenchEntry(std::move(s), std::string(kPermutationRadiance) + "(" + args + ")", options);
+  const std::string call = permutationRadianceCall(s.layout);
+  return withBenchEntry(std::move(s), call, options);
 }
 
 }  // namespace mb

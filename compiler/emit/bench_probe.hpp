@@ -7,7 +7,7 @@
 // The baseline variant runs the same loop with the call replaced by the sum of the scaled
 // inputs: its time is the loop, the perturbation, the accumulation and the memory traffic,
 // which bench subtracts so that what remains is the brick's own cost. A permutation's call is
-// its probe's whole function (kPermutationRadiance, emitter.hpp): every light of the
+// its probe's whole function (permutationRadianceCall, emitter.hpp): every light of the
 // permutation and its environment, as validation evaluates it.
 #pragma once
 #include <cstdint>

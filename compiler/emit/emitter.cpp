@@ -372,16 +372,22 @@ void writeApi(GlslWriter& w, const Permutation& perm, ShaderPrecision precision)
 // function of the probe's inputs, kPermutationRadiance: main calls it on the record, and the
 // bench kernel (bench_probe.cpp) times the same function on perturbed inputs, so that a
 // permutation's cost is what validation runs.
+constexpr const char* kPermutationRadiance = "mbPermutationRadiance";
+
+std::vector<ProbeInput> permutationRadianceInputs(const ProbeLayout& layout, const std::vector<ProbeInput>& params) {
+  std::vector<ProbeInput> in = layout.inputs;
+  in.insert(in.end(), params.begin(), params.end());
+  return in;
+}
+
 void writePermutationProbe(GlslWriter& w, const ProbeLayout& layout, const Permutation& perm, const ProbeScene& scene,
                            ShaderPrecision p, const std::vector<ProbeInput>& params) {
   std::string args;
   for (const auto& prm : perm.material->params)
     if (!prm.constant) args += std::string(args.empty() ? "" : ", ") + "p_" + prm.name;
-  std::string signature, call;
-  for (const auto& in : permutationRadianceInputs(layout, params)) {
+  std::string signature;
+  for (const auto& in : permutationRadianceInputs(layout, params))
     signature += std::string(signature.empty() ? "" : ", ") + toString(in.type) + " p_" + in.name;
-    call += std::string(call.empty() ? "" : ", ") + "p_" + in.name;
-  }
   std::vector<std::string> globals = probeSceneGlobals(scene);
   globals.push_back(std::string("vec3 ") + kPermutationRadiance + "(" + signature + ") {");
   for (const auto& s : probeSceneFrame(scene)) globals.push_back("    " + s);
@@ -390,7 +396,7 @@ void writePermutationProbe(GlslWriter& w, const ProbeLayout& layout, const Permu
   for (const auto& s : probeSceneShading(scene)) globals.push_back("    " + s);
   globals.push_back("    return r;");
   globals.push_back("}");
-  std::vector<std::string> body{"vec3 r = " + std::string(kPermutationRadiance) + "(" + call + ");"};
+  std::vector<std::string> body{"vec3 r = " + permutationRadianceCall(layout, params) + ";"};
   if (!layout.fedOutputs.empty()) body.push_back("MaterialInputs m = materialInputs(" + args + ");");
   writeProbe(w, layout, body, globals, p, params);
 }
@@ -417,10 +423,11 @@ std::vector<ProbeInput> splitEngineLayout(ProbeLayout& layout, const MaterialDes
 
 }  // namespace
 
-std::vector<ProbeInput> permutationRadianceInputs(const ProbeLayout& layout, const std::vector<ProbeInput>& params) {
-  std::vector<ProbeInput> in = layout.inputs;
-  in.insert(in.end(), params.begin(), params.end());
-  return in;
+std::string permutationRadianceCall(const ProbeLayout& layout, const std::vector<ProbeInput>& params) {
+  std::string call;
+  for (const auto& in : permutationRadianceInputs(layout, params))
+    call += std::string(call.empty() ? "" : ", ") + "p_" + in.name;
+  return std::string(kPermutationRadiance) + "(" + call + ")";
 }
 
 EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput, EmitMode mode,

@@ -68,12 +68,10 @@ EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
 // for targets without 16-bit types; an fp32 one is unchanged.
 EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm, bool illuminanceInput = false,
                               EmitMode mode = EmitMode::Probe, bool mediump = false);
-// The function of a permutation's probe that evaluates it whole (frame, lights, environment):
-// vec3 mbPermutationRadiance(p_<input>...), its parameters permutationRadianceInputs(layout,
-// engine params) in that order. The validation probe's main and the bench kernel call it.
-inline constexpr const char* kPermutationRadiance = "mbPermutationRadiance";
-std::vector<ProbeInput> permutationRadianceInputs(const ProbeLayout& layout,
-                                                  const std::vector<ProbeInput>& params = {});
+// The function of a permutation's probe that evaluates it whole (frame, lights, environment),
+// vec3 mbPermutationRadiance(p_<input>...) over the layout's inputs then the engine params: its
+// call on the locals p_<input>, which the validation probe's main and the bench kernel make.
+std::string permutationRadianceCall(const ProbeLayout& layout, const std::vector<ProbeInput>& params = {});
 
 // What Permutation::precision emits (emit/precision.hpp shaderPrecision).
 ShaderPrecision precisionOf(const Permutation& perm);

@@ -174,6 +174,23 @@ inline void perpendicularPair(const Vec3& c, Vec3& e1, Vec3& e2) {
   e2 = {b, s + c.y * c.y * a, -c.y};
 }
 
+// A planar (rectangle or disk) light centred at c, of half-edges (semi-axes) hx and hy along the
+// pair perpendicular to c turned about it by `turn`, the second tilted by `tilt` from facing
+// the shading point, wound so that ex x ey points back at the point (it faces the point): how
+// the bench and the tests draw their rectangles and disks.
+struct PlanarLight {
+  Vec3 c, ex, ey;
+};
+inline PlanarLight facingPlanarLight(const Vec3& c, double hx, double hy, double turn, double tilt) {
+  Vec3 e1, e2;
+  perpendicularPair(c, e1, e2);
+  Vec3 u = e1 * std::cos(turn) + e2 * std::sin(turn), w = cross(c, u);
+  Vec3 ey = (w * std::cos(tilt) + c * std::sin(tilt)) * hy;
+  Vec3 ex = u * hx;
+  if (!(dot(cross(ex, ey), c) < 0.0)) ex = ex * -1.0;
+  return {c, ex, ey};
+}
+
 // t1 along v's component in the tangent plane; where v is (nearly) the normal any tangent will
 // do, the table's lobe being symmetric about n there (common/ltc.glsl, the same rule).
 inline ViewFrame viewFrame(const Vec3& n, const Vec3& v) {
