@@ -88,11 +88,13 @@ int main(int argc, char** argv) {
     ProbeProgram prog = buildPermutationProbe(lib, perm);
     SampleDomain domain = prog.domain;
     std::vector<float> inputs = generateSamples(prog.shader.layout, domain, evalCount, 2);
-    auto kernel = gpu.createKernel(prog.compiled.spirv);
-    gpu.run(*kernel, inputs, prog.shader.layout.inStride, prog.shader.layout.outStride, evalCount);
+    auto kernel = gpu.createKernel(prog.compiled.spirv, 0, prog.shader.readsTable);
+    const auto* table = prog.tableBuffer();
+    gpu.run(*kernel, inputs, prog.shader.layout.inStride, prog.shader.layout.outStride, evalCount, {}, table);
     std::vector<double> nsPerEval;
     for (int r = 0; r < repeats; ++r) {
-      auto res = gpu.run(*kernel, inputs, prog.shader.layout.inStride, prog.shader.layout.outStride, evalCount);
+      auto res =
+          gpu.run(*kernel, inputs, prog.shader.layout.inStride, prog.shader.layout.outStride, evalCount, {}, table);
       nsPerEval.push_back(res.gpuMs * 1e6 / double(evalCount));
     }
     out["permutations"].push_back({{"key", s.key},

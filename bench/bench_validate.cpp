@@ -121,11 +121,13 @@ Stages validateOnce(harness::VulkanHarness& gpu, const ShaderLibrary& lib, const
   std::vector<float> inputs = generateSamples(program.shader.layout, program.domain, samples, 1);
   s.samplesMs = msSince(t);
   t = Clock::now();
-  auto kernel = old ? gpu.createKernel(program.compiled.spirv) : gpu.kernelFor(program.compiled.spirv);
+  const bool table = program.shader.readsTable;
+  auto kernel = old ? gpu.createKernel(program.compiled.spirv, 0, table) : gpu.kernelFor(program.compiled.spirv, table);
   s.pipelineMs = msSince(t);
   t = Clock::now();
   const ProbeLayout& layout = program.shader.layout;
-  harness::RunResult result = gpu.run(*kernel, inputs, layout.inStride, layout.outStride, samples);
+  harness::RunResult result =
+      gpu.run(*kernel, inputs, layout.inStride, layout.outStride, samples, {}, program.tableBuffer());
   s.gpuWallMs = msSince(t);
   s.gpuMs = result.gpuMs;
   s.firstDispatchMs = result.firstDispatchMs;
@@ -220,10 +222,11 @@ int main(int argc, char** argv) {
       ProbeProgram program = buildPermutationProbe(lib, items[i].perm);
       const ProbeLayout& layout = program.shader.layout;
       std::vector<float> inputs = generateSamples(layout, program.domain, samples, 1);
-      auto kernel = gpu.kernelFor(program.compiled.spirv);
+      auto kernel = gpu.kernelFor(program.compiled.spirv, program.shader.readsTable);
       std::vector<double> gpuMs;
       for (int r = 0; r < kGpuRepeats; ++r)
-        gpuMs.push_back(gpu.run(*kernel, inputs, layout.inStride, layout.outStride, samples).gpuMs);
+        gpuMs.push_back(
+            gpu.run(*kernel, inputs, layout.inStride, layout.outStride, samples, {}, program.tableBuffer()).gpuMs);
       gpuMedian[i] = median(gpuMs);
     }
   }

@@ -333,8 +333,8 @@ TEST_CASE("bench probes evaluate the probe's function, once per iteration", "[be
     INFO(c.timed.key);
     ProbeRun run = runProbe(gpu, c.probe, generateSamples(layout, c.probe.domain, 64, 5));
     auto kernelOut = [&](const EmittedShader& s) {
-      auto k = gpu.createKernel(compileComputeGlsl(s.glsl, s.fileName).spirv);
-      return gpu.run(*k, run.inputs, layout.inStride, layout.outStride, run.count).outputs;
+      auto k = gpu.createKernel(compileComputeGlsl(s.glsl, s.fileName).spirv, 0, s.readsTable);
+      return gpu.run(*k, run.inputs, layout.inStride, layout.outStride, run.count, {}, c.probe.tableBuffer()).outputs;
     };
     std::vector<float> timed = kernelOut(c.timed), base = kernelOut(c.baseline);
     for (uint64_t i = 0; i < run.count; ++i) {

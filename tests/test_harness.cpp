@@ -167,6 +167,51 @@ TEST_CASE("harness handles empty runs and rejects bad arguments", "[harness][vul
   requireNoValidationMessages(h);
 }
 
+// A table the kernel reads beside its records (a validation probe's LTC table): record i looks
+// up entry mbIn[i] of it. Bound whole to every chunk, so a capped chunk size changes nothing.
+const char* kTableKernel = R"(#version 450
+layout(local_size_x = 64) in;
+layout(std430, set = 0, binding = 0) readonly buffer MbIn { float mbIn[]; };
+layout(std430, set = 0, binding = 1) writeonly buffer MbOut { float mbOut[]; };
+layout(std430, set = 0, binding = 2) readonly buffer MbTable { float mbTable[]; };
+layout(push_constant) uniform MbPush { uint count; } mbPush;
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= mbPush.count) return;
+  mbOut[i] = mbTable[uint(mbIn[i])];
+}
+)";
+
+TEST_CASE("a kernel reads its table buffer, whole in every chunk", "[harness][vulkan]") {
+  DeviceOptions options = testDeviceOptions();
+  options.maxRecordsPerChunk = 1000;  // several chunks
+  VulkanHarness h(options);
+  const auto spirv = compileKernel(kTableKernel);
+  auto kernel = h.createKernel(spirv, 0, true);
+  std::vector<float> table(777);
+  for (size_t k = 0; k < table.size(); ++k) table[k] = 0.5f + static_cast<float>(k * k % 1013);
+  const uint64_t count = 5000;
+  std::vector<float> in(count);
+  for (uint64_t i = 0; i < count; ++i) in[i] = static_cast<float>((i * 31) % table.size());
+  const RunResult r = h.run(*kernel, in, 1, 1, count, {}, &table);
+  CHECK(r.chunks >= 5);
+  uint64_t bad = 0;
+  for (uint64_t i = 0; i < count; ++i) bad += r.outputs[i] != table[static_cast<size_t>(in[i])];
+  CHECK(bad == 0);
+  // kernelFor keeps a module's kernel with the table's layout apart from its kernel without
+  // (a layout may declare a binding the module does not use).
+  CHECK(h.kernelFor(spirv, true) == h.kernelFor(spirv, true));
+  const auto mulAdd = compileKernel(kMulAddKernel);
+  CHECK(h.kernelFor(mulAdd, true) != h.kernelFor(mulAdd, false));
+
+  CHECK_THROWS_WITH(h.run(*kernel, in, 1, 1, count), "run: the kernel reads a table, none given");
+  auto plain = h.createKernel(compileKernel(kMulAddKernel));
+  CHECK_THROWS_WITH(h.run(*plain, makeInputs(4), kInStride, kOutStride, 4, {}, &table),
+                    "run: a table given to a kernel that reads none");
+  CHECK_THROWS_WITH(h.createKernel(spirv, 1, true), "createKernel: a kernel samples textures or reads a table");
+  requireNoValidationMessages(h);
+}
+
 TEST_CASE("harness reports device limits and picks lavapipe", "[harness][vulkan]") {
   VulkanHarness h(testDeviceOptions());
   CHECK(h.maxWorkGroupCountX() > 0);

@@ -83,15 +83,15 @@ void sweep(const std::vector<std::string>& materials, uint64_t count, uint64_t t
         ProbeProgram p = describePermutationProbe(lib, perm, illuminanceInput);
         for (bool groundTruths : {false, true}) {
           auto resolved = materialReferenceEval(perm, p.shader.layout, boundBricks(lib, perm), groundTruths,
-                                                illuminanceInput, ReferenceLookup::Resolved);
+                                                illuminanceInput, ReferenceLookup::Resolved, p.ltcTable);
           auto byName = materialReferenceEval(perm, p.shader.layout, boundBricks(lib, perm), groundTruths,
-                                              illuminanceInput, ReferenceLookup::ByName);
+                                              illuminanceInput, ReferenceLookup::ByName, p.ltcTable);
           values += requireSameDoubles(p, resolved, byName, groundTruths ? truthCount : count);
         }
         // What validate itself runs: the program's own reference is the resolved one.
         values += requireSameDoubles(p, p.reference,
                                      materialReferenceEval(perm, p.shader.layout, boundBricks(lib, perm), false,
-                                                           illuminanceInput, ReferenceLookup::ByName),
+                                                           illuminanceInput, ReferenceLookup::ByName, p.ltcTable),
                                      count);
       }
       ++permutations;

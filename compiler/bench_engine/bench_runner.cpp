@@ -65,7 +65,7 @@ BenchCost measureBenchCost(harness::VulkanHarness& gpu, const ProbeProgram& prob
         CompileOptions level;
         level.optimization = options.optimization;
         last = {compileComputeGlsl(timed.glsl, timed.fileName, level).spirv,
-                compileComputeGlsl(base.glsl, base.fileName, level).spirv};
+                compileComputeGlsl(base.glsl, base.fileName, level).spirv, probe.tableBuffer()};
         return last;
       },
       probe.shader.layout, probe.domain, options);
@@ -144,7 +144,7 @@ BenchReport runBench(const ShaderLibrary& lib, harness::VulkanHarness& gpu, cons
     ProbeProgram probe = buildPermutationProbe(lib, perm);
     mats.items.push_back(measure(
         gpu, probe, [&](const BenchProbeOptions& k) { return emitPermutationBenchProbe(lib, perm, k); },
-        materialYardstick(*perm.material, probe.shader.layout), o));
+        materialYardstick(*perm.material, probe.shader.layout, probe.ltcTable), o));
     mats.items.back().kind = "permutation";
     if (progress) progress->advance();
   }

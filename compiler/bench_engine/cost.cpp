@@ -37,8 +37,9 @@ class Session {
       : gpu_(gpu), inputs_(inputs), layout_(layout), records_(records), m_(m) {}
 
   void load(const KernelPair& pair) {
-    timed_ = gpu_.createKernel(pair.timed);
-    base_ = gpu_.createKernel(pair.baseline);
+    table_ = pair.table;
+    timed_ = gpu_.createKernel(pair.timed, 0, table_ != nullptr);
+    base_ = gpu_.createKernel(pair.baseline, 0, table_ != nullptr);
     run(*base_);  // JIT warm-up
     run(*timed_);
   }
@@ -48,7 +49,7 @@ class Session {
 
  private:
   Dispatch run(harness::Kernel& k) {
-    harness::RunResult r = gpu_.run(k, inputs_, layout_.inStride, layout_.outStride, records_);
+    harness::RunResult r = gpu_.run(k, inputs_, layout_.inStride, layout_.outStride, records_, {}, table_);
     m_.gpuTimestamps = m_.gpuTimestamps && r.gpuTimestamps;
     return {r.gpuMs, std::max(r.chunks, 1u)};
   }
@@ -58,6 +59,7 @@ class Session {
   uint64_t records_;
   CostMeasurement& m_;
   std::shared_ptr<harness::Kernel> timed_, base_;
+  const std::vector<float>* table_ = nullptr;
 };
 
 // Paired samples in ms: `order` alternates ABBA so that a load drifting over the repeats

@@ -67,6 +67,8 @@ double median(std::vector<double> v);
 
 struct KernelPair {
   std::vector<uint32_t> timed, baseline;  // SPIR-V of the two bench kernels
+  // The table both read (a permutation with rectangle or disk lights: its LTC table), or null.
+  const std::vector<float>* table = nullptr;
 };
 // The two kernels compiled for a number of evaluations per record.
 using KernelPairFactory = std::function<KernelPair(uint32_t iterations)>;

@@ -41,7 +41,8 @@ void refuseUnmeasurable(const std::vector<MaterialDesc>& materials) {
   if (!errors.empty()) throw DiagnosticError(errors);
 }
 
-Yardstick materialYardstick(const MaterialDesc& material, const ProbeLayout& layout) {
+Yardstick materialYardstick(const MaterialDesc& material, const ProbeLayout& layout,
+                            std::shared_ptr<const ProbeLtcTable> ltcTable) {
   if (auto d = unmeasurable(material)) throw DiagnosticError({*d});
   Yardstick y;
   for (const auto& [slot, id] : material.bricks)
@@ -49,7 +50,8 @@ Yardstick materialYardstick(const MaterialDesc& material, const ProbeLayout& lay
   y.kind = y.groundTruthBricks.empty() ? "reference" : "ground_truth";
   Permutation perm;  // the material's default permutation: the one bench times
   perm.material = &material;
-  y.eval = materialReferenceEval(perm, layout, material.bricks, /*groundTruths=*/true);
+  y.eval = materialReferenceEval(perm, layout, material.bricks, /*groundTruths=*/true, false, ReferenceLookup::Resolved,
+                                 std::move(ltcTable));
   return y;
 }
 

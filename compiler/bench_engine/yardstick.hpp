@@ -5,11 +5,13 @@
 #pragma once
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "emit/emitter.hpp"
 #include "load/material_desc.hpp"
+#include "validate/probe_ltc_table.hpp"
 
 namespace mb::bench {
 
@@ -26,7 +28,9 @@ Yardstick brickYardstick(const Brick& brick);
 // by it: the exact material the permutation approximates, as far as ground truths exist.
 // `layout` is the permutation probe's (n, v, l, then the non-constant parameters).
 // Throws E-BENCH-SURFACE, at the surface code, for every material with user surface code.
-Yardstick materialYardstick(const MaterialDesc& material, const ProbeLayout& layout);
+// `ltcTable`: the probe's (ProbeProgram::ltcTable), for rectangle and disk lights.
+Yardstick materialYardstick(const MaterialDesc& material, const ProbeLayout& layout,
+                            std::shared_ptr<const ProbeLtcTable> ltcTable = nullptr);
 // The same check for all materials at once, before any measuring.
 void refuseUnmeasurable(const std::vector<MaterialDesc>& materials);
 

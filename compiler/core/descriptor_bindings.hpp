@@ -15,6 +15,10 @@ inline constexpr int kKernelParamsBinding = 2;
 // VulkanHarness::run(). Only an engine kernel has a parameter block, and the harness runs
 // none, so the two never meet in one kernel.
 inline constexpr int kKernelFirstTextureBinding = 2;
+// A validation probe's lookup table (the LTC table that rectangle and disk lights read), a
+// readonly std430 float buffer the harness binds whole to every chunk. No probe samples
+// textures or has a parameter block, so this never meets either in one kernel.
+inline constexpr int kKernelTableBinding = 2;
 
 // Fragment shaders: interface version 2 (docs/fragment-stage.md).
 inline constexpr int kFragmentInterfaceVersion = 2;

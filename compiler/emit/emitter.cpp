@@ -8,6 +8,7 @@
 #include "emit/fp16_rewrite.hpp"
 #include "emit/glsl_writer.hpp"
 #include "emit/light_contract.hpp"
+#include "emit/ltc_table_lookup.hpp"
 #include "emit/probe_scene.hpp"
 #include "permute/axes.hpp"
 
@@ -103,9 +104,10 @@ std::string readInput(const ProbeInput& in) {
 // load and the result back to float before the store.
 // Engine mode adds `params`: the non-constant material parameters, read from one std140
 // uniform block (fp32 at every precision, like the record buffers) instead of the record.
+// `finalGlobals` are written as they are, before `globals` (fp32 text, rewritten at fp16).
 void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::vector<std::string>& body,
-                const std::vector<std::string>& globals, ShaderPrecision p,
-                const std::vector<ProbeInput>& params = {}) {
+                const std::vector<std::string>& globals, ShaderPrecision p, const std::vector<ProbeInput>& params = {},
+                const std::vector<std::string>& finalGlobals = {}) {
   w.line("#ifndef MB_NO_PROBE");
   w.line("// Probe: record i holds the inputs below; the result goes to mbOut.");
   w.line("layout(local_size_x = 64) in;");
@@ -122,6 +124,7 @@ void writeProbe(GlslWriter& w, const ProbeLayout& layout, const std::vector<std:
     for (const auto& prm : params) w.line("    " + fp32 + toString(prm.type) + " " + prm.name + ";");
     w.line("} mbParams;");
   }
+  for (const auto& g : finalGlobals) w.line(g);
   for (const auto& g : globals) w.line(atPrecision(g, p));
   w.line("void main() {");
   w.line("    uint i = gl_GlobalInvocationID.x;");
@@ -236,20 +239,22 @@ EmittedShader emitBrickProbe(const ShaderLibrary& lib, const Brick& brick, bool 
   return out;
 }
 
-ProbeScene probeSceneOf(const Permutation& perm, bool illuminanceInput) {
+ProbeScene probeSceneOf(const Permutation& perm, bool illuminanceInput, EmitMode mode) {
   ProbeScene scene;
   scene.lights = perm.lights;
   scene.environment = perm.environment;
   scene.illuminanceInput = illuminanceInput;
+  scene.ltcTableBuffer = mode == EmitMode::Probe && usesLtcTable(perm.lights);
   bool slice = perm.lights == std::vector<LightType>{LightType::Dir} && perm.environment == EnvironmentMode::None;
   scene.fullFrame = !slice || !perm.material->features.empty();
   return scene;
 }
 
-ProbeLayout materialProbeLayout(const Permutation& perm, bool illuminanceInput) {
+ProbeLayout materialProbeLayout(const Permutation& perm, bool illuminanceInput, EmitMode mode) {
   ProbeLayout layout;
   addGeometryInputs(layout);
-  for (const auto& in : probeSceneInputs(probeSceneOf(perm, illuminanceInput))) addInput(layout, in.name, in.type);
+  for (const auto& in : probeSceneInputs(probeSceneOf(perm, illuminanceInput, mode)))
+    addInput(layout, in.name, in.type);
   for (const auto& p : perm.material->params)
     if (!p.constant) addInput(layout, p.name, p.type);
   layout.output = ValueType::Vec3;
@@ -398,7 +403,12 @@ void writePermutationProbe(GlslWriter& w, const ProbeLayout& layout, const Permu
   globals.push_back("}");
   std::vector<std::string> body{"vec3 r = " + permutationRadianceCall(layout, params) + ";"};
   if (!layout.fedOutputs.empty()) body.push_back("MaterialInputs m = materialInputs(" + args + ");");
-  writeProbe(w, layout, body, globals, p, params);
+  std::vector<std::string> table;
+  if (scene.ltcTableBuffer) {
+    table = ltcTableBuffer(p);
+    for (const auto& line : ltcTableLookup("mb_ltc_table_entry(@)", p)) table.push_back(line);
+  }
+  writeProbe(w, layout, body, globals, p, params, table);
 }
 
 // Engine records: the probe's inputs without the non-constant material parameters, which move
@@ -440,8 +450,9 @@ EmittedShader emitPermutation(const ShaderLibrary& lib, const Permutation& perm,
   EmittedShader out;
   out.key = perm.key();
   out.fileName = out.key + (precision == ShaderPrecision::Fp16Mediump ? ".mediump.glsl" : ".glsl");
-  const ProbeScene scene = probeSceneOf(perm, illuminanceInput);
-  out.layout = materialProbeLayout(perm, illuminanceInput);
+  const ProbeScene scene = probeSceneOf(perm, illuminanceInput, mode);
+  out.layout = materialProbeLayout(perm, illuminanceInput, mode);
+  out.readsTable = scene.ltcTableBuffer;
   std::vector<ProbeInput> params;
   if (mode == EmitMode::Engine) params = splitEngineLayout(out.layout, mat);
 

@@ -51,6 +51,9 @@ struct EmittedShader {
   std::string glsl;
   ProbeLayout layout;
   std::vector<std::string> bricks;  // brick ids included, in order
+  // The kernel reads the LTC table from the harness's table buffer (a validation probe of a
+  // permutation with rectangle or disk lights; ltc::tableTexels is what to give it).
+  bool readsTable = false;
 };
 
 // With `unstableVariant`, the probe uses the brick's naive form (Brick::unstableFile).
@@ -82,9 +85,10 @@ std::string boundBrick(const ShaderLibrary& lib, const Permutation& perm, const 
 std::vector<std::pair<std::string, std::string>> boundRoles(const ShaderLibrary& lib, const Permutation& perm);
 
 // The probe scene of a permutation (which record inputs describe frame, lights, environment).
-ProbeScene probeSceneOf(const Permutation& perm, bool illuminanceInput = false);
+ProbeScene probeSceneOf(const Permutation& perm, bool illuminanceInput = false, EmitMode mode = EmitMode::Probe);
 // Inputs of a material probe: n, v, l, the scene's inputs, then each non-constant parameter
 // in the material's order.
-ProbeLayout materialProbeLayout(const Permutation& perm, bool illuminanceInput = false);
+ProbeLayout materialProbeLayout(const Permutation& perm, bool illuminanceInput = false,
+                                EmitMode mode = EmitMode::Probe);
 
 }  // namespace mb

@@ -14,6 +14,7 @@
 
 #include "emit/fp16_rewrite.hpp"
 #include "emit/fragment_textures.hpp"
+#include "emit/ltc_table_lookup.hpp"
 #include "emit/glsl_writer.hpp"
 #include "emit/light_contract.hpp"
 
@@ -141,35 +142,10 @@ class FragmentWriter {
     w_.line("}");
   }
 
-  // The LTC table (docs/fragment-stage.md "LTC table"): 128 x 64 texels, M^-1's elements in
-  // columns 0-63 and the magnitudes in 64-127 (rg); row i is perceptual roughness i / 63,
-  // column j is u = j / 63 with n.v = 1 - u^2 (shaderlib/ltc/ggx.json). Interpolated here from
-  // four texelFetch rather than by the sampler: a GPU's bilinear filter may weigh texels with as
-  // few as 4 fractional bits (Vulkan's minimum subTexelPrecisionBits), and neighbouring entries
-  // of M^-1 differ by up to 44 % (m22), near grazing views by their whole value (the shipped
-  // table, roughness >= 0.05), so the filter's rounding would decide the result; in fp32
-  // arithmetic every conforming GPU computes the same.
+  // The LTC table (docs/fragment-stage.md "LTC table"), read with texelFetch and blended in
+  // fp32 as emit/ltc_table_lookup.cpp explains.
   void ltcHooks() {
-    const bool half = p_ == ShaderPrecision::Fp16;
-    w_.line(hp_ + "vec4 mb_ltc_texel(" + hp_ + "float NoV, " + hp_ + "float perceptualRoughness, int column0) {");
-    w_.line("    " + hp_ + "vec2 p = clamp(vec2(sqrt(max(1.0 - NoV, 0.0)), perceptualRoughness), 0.0, 1.0) * 63.0;");
-    w_.line("    " + hp_ + "vec2 i = min(floor(p), vec2(62.0));");
-    w_.line("    " + hp_ + "vec2 t = p - i;");
-    w_.line("    ivec2 c = ivec2(i) + ivec2(column0, 0);");
-    w_.line("    " + hp_ +
-            "vec4 a = mix(texelFetch(mbLtcTable, c, 0), texelFetch(mbLtcTable, c + ivec2(1, 0), 0), t.x);");
-    w_.line(
-        "    " + hp_ +
-        "vec4 b = mix(texelFetch(mbLtcTable, c + ivec2(0, 1), 0), texelFetch(mbLtcTable, c + ivec2(1, 1), 0), t.x);");
-    w_.line("    return mix(a, b, t.y);");
-    w_.line("}");
-    const std::string args = half ? "float(NoV), float(perceptualRoughness)" : "NoV, perceptualRoughness";
-    shading("vec4 mb_fetch_ltc_matrix(float NoV, float perceptualRoughness) {");
-    w_.line(std::string("    return ") + (half ? "f16vec4(" : "(") + "mb_ltc_texel(" + args + ", 0));");
-    w_.line("}");
-    shading("vec2 mb_fetch_ltc_magnitude(float NoV, float perceptualRoughness) {");
-    w_.line(std::string("    return ") + (half ? "f16vec2(" : "(") + "mb_ltc_texel(" + args + ", 64).xy);");
-    w_.line("}");
+    for (const auto& line : ltcTableLookup("texelFetch(mbLtcTable, @, 0)", p_)) w_.line(line);
   }
 
   void frame() {

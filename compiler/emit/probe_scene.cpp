@@ -56,6 +56,8 @@ void lightInputs(LightType type, std::vector<ProbeSceneInput>& out) {
 
 bool ProbeScene::has(LightType light) const { return std::find(lights.begin(), lights.end(), light) != lights.end(); }
 
+bool ProbeScene::recordLtcTexel() const { return usesLtcTable(lights) && !ltcTableBuffer; }
+
 std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene) {
   std::vector<ProbeSceneInput> out;
   if (scene.has(LightType::Dir) && scene.illuminanceInput) out.push_back({"illuminance", ValueType::Vec3, {0.0, 1.0}});
@@ -71,7 +73,7 @@ std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene) {
     out.push_back({"ao", ValueType::Float, {0.0, 1.0}});
   }
   if (isIbl(scene.environment)) out.push_back({"prefiltered", ValueType::Vec3, kPrefiltered});
-  if (usesLtcTable(scene.lights)) {
+  if (scene.recordLtcTexel()) {
     // The LTC table's texel: M^-1 within the table's ranges for roughness >= 0.05 (as the
     // polygon bricks' domains), norm = Int D V (n.l) <= 1 and its Fresnel part below it.
     out.push_back({"ltcM00", ValueType::Float, {0.05, 1.0}});
@@ -128,7 +130,7 @@ std::vector<std::string> probeSceneGlobals(const ProbeScene& scene) {
     g.push_back("        x2 * (2.75573192e-6 + x2 * (-2.50521084e-8 + x2 * 1.60590438e-10))))));  // -sin(x)");
     g.push_back("}");
   }
-  if (usesLtcTable(scene.lights)) {
+  if (scene.recordLtcTexel()) {
     g.push_back("// The LTC table's fetches: the record's texel for every lookup (as the DFG texel).");
     g.push_back("vec4 mbProbeLtcMatrix;");
     g.push_back("vec2 mbProbeLtcMagnitude;");
@@ -172,7 +174,7 @@ std::vector<std::string> probeSceneFrame(const ProbeScene& scene) {
     s.push_back("f.ng = f.n;");
     s.push_back("f.t = mbT0;");
   }
-  if (usesLtcTable(scene.lights)) {
+  if (scene.recordLtcTexel()) {
     s.push_back("mbProbeLtcMatrix = vec4(p_ltcM00, p_ltcM02, p_ltcM20, p_ltcM22);");
     s.push_back("mbProbeLtcMagnitude = vec2(p_ltcNorm, p_ltcFresnel);");
   }

@@ -24,7 +24,12 @@ struct ProbeScene {
   // Geometric-normal tilt and tangent angle as inputs (else ng = n and t = basis tangent):
   // every permutation except the vertical slice's single directional light without features.
   bool fullFrame = false;
+  // Rectangle and disk lights look the LTC table up in the harness's table buffer, as the
+  // fragment stage looks up its texture (the validation probe: emit/ltc_table_lookup.hpp);
+  // otherwise every lookup returns the record's one texel (an engine kernel's records).
+  bool ltcTableBuffer = false;
   bool has(LightType light) const;
+  bool recordLtcTexel() const;  // the lights read the LTC table, from the record
 };
 
 // Inputs after n, v, l, in record order.
@@ -32,7 +37,8 @@ std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene);
 // Largest illuminance (or environment radiance) the scene's inputs can produce, summed over
 // its lights: absolute tolerances of a unit-illuminance composition scale with it.
 double probeSceneRadianceBound(const ProbeScene& scene);
-// GLSL (fp32 text) defining the fetch hooks and mb_probe_environment_shape, placed before main.
+// GLSL (fp32 text) defining the fetch hooks and mb_probe_environment_shape, placed before main;
+// with ltcTableBuffer the LTC hooks are ltcTableLookup's, which the emitter writes itself.
 std::vector<std::string> probeSceneGlobals(const ProbeScene& scene);
 // GLSL statements of main() that build `ShadingFrame f` from p_n, p_v and the inputs, and
 // set the fetch hooks' values.

@@ -22,8 +22,9 @@ std::string firstLine(const std::string& log) {
   return line.empty() ? "no message" : line;
 }
 
-constexpr GLuint kLocalSize = 64;   // the contract's local_size_x
-constexpr GLuint kPushBinding = 0;  // where the MbPush block is bound, whatever its layout binding
+constexpr GLuint kLocalSize = 64;    // the contract's local_size_x
+constexpr GLuint kTableBinding = 2;  // SPIRV-Cross keeps the storage buffer's binding
+constexpr GLuint kPushBinding = 0;   // where the MbPush block is bound, whatever its layout binding
 
 }  // namespace
 
@@ -69,7 +70,7 @@ struct GlCompute::Impl {
   std::map<std::string, GLuint> programs;
   GLint maxGroupsX = 65535;
   GLint maxBlockBytes = 1 << 27;
-  GLuint buffers[3] = {0, 0, 0};  // in, out, push
+  GLuint buffers[4] = {0, 0, 0, 0};  // in, out, push, table
 
   void makeCurrent() {
     if (eglGetCurrentContext() != context && !eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
@@ -160,7 +161,7 @@ GlCompute::GlCompute(GlApi api) : api_(api), impl_(std::make_unique<Impl>()) {
   load(f.Finish, "glFinish");
   f.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &m.maxGroupsX);
   f.GetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &m.maxBlockBytes);
-  f.GenBuffers(3, m.buffers);
+  f.GenBuffers(4, m.buffers);
   m.check("creating the context's buffers");
 }
 
@@ -168,7 +169,7 @@ GlCompute::~GlCompute() {
   Impl& m = *impl_;
   if (eglMakeCurrent(m.display, EGL_NO_SURFACE, EGL_NO_SURFACE, m.context)) {
     for (const auto& entry : m.programs) m.f.DeleteProgram(entry.second);
-    m.f.DeleteBuffers(3, m.buffers);
+    m.f.DeleteBuffers(4, m.buffers);
   }
   eglMakeCurrent(m.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(m.display, m.context);
@@ -237,7 +238,7 @@ GLuint GlCompute::Impl::program(const std::string& source, double& compileMs) {
 }
 
 GlRunResult GlCompute::run(const std::string& source, const std::vector<float>& inputs, uint32_t inStride,
-                           uint32_t outStride, uint64_t count) {
+                           uint32_t outStride, uint64_t count, const std::vector<float>* table) {
   Impl& m = *impl_;
   m.makeCurrent();
   GlRunResult r;
@@ -248,6 +249,13 @@ GlRunResult GlCompute::run(const std::string& source, const std::vector<float>& 
   const uint64_t stride = std::max(inStride, outStride) * sizeof(float);
   const uint64_t perChunk = std::max<uint64_t>(
       1, std::min<uint64_t>(static_cast<uint64_t>(m.maxGroupsX) * kLocalSize, m.maxBlockBytes / stride));
+  if (table) {
+    m.f.BindBuffer(GL_SHADER_STORAGE_BUFFER, m.buffers[3]);
+    m.f.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(std::max<size_t>(1, table->size()) * 4),
+                   table->empty() ? nullptr : table->data(), GL_STATIC_DRAW);
+    m.f.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kTableBinding, m.buffers[3]);
+    m.check("uploading the table");
+  }
   auto dispatch = [&](uint64_t begin, uint64_t n) {
     m.f.BindBuffer(GL_SHADER_STORAGE_BUFFER, m.buffers[0]);
     m.f.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(std::max<uint64_t>(1, n * inStride) * 4),

@@ -56,9 +56,11 @@ class GlCompute {
   bool hasExtension(const std::string& name) const;
 
   // Compiles (once per distinct source; the program is kept) and runs `count` records.
-  // Throws GlError with the driver's first compile or link message for a kernel it rejects.
+  // `table`: the kernel's readonly table buffer (binding 2, the harness's kernel contract), when
+  // it reads one. Throws GlError with the driver's first compile or link message for a kernel
+  // it rejects.
   GlRunResult run(const std::string& source, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
-                  uint64_t count);
+                  uint64_t count, const std::vector<float>* table = nullptr);
 
  private:
   struct Impl;

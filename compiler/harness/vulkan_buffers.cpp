@@ -2,6 +2,7 @@
 // segment of the chunk plan (inputs copied in at creation), and one descriptor set per chunk
 // binding that chunk's sub-ranges. Everything made here belongs to the run's RunResources
 // (vulkan_internal.hpp), which releases it.
+#include <algorithm>
 #include <cstring>
 
 #include "core/descriptor_bindings.hpp"
@@ -27,13 +28,22 @@ void createBuffers(const DeviceContext& ctx, const ChunkPlan& plan, const std::v
   }
 }
 
+void createTableBuffer(const DeviceContext& ctx, const std::vector<float>& table, RunResources& res) {
+  const uint64_t bytes = std::max<uint64_t>(1, table.size()) * sizeof(float);
+  MappedBuffer& b = res.table.emplace();
+  b.create(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  std::memset(b.mapped, 0, bytes);
+  if (!table.empty()) std::memcpy(b.mapped, table.data(), table.size() * sizeof(float));
+}
+
 // One descriptor set per chunk: all chunks are recorded into one command buffer, and a set
 // must not change while a recorded command still refers to it.
 void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const ChunkPlan& plan,
                           const std::vector<const GpuTexture*>& textures, RunResources& res) {
   const auto setCount = static_cast<uint32_t>(plan.chunks.size());
   const auto textureCount = static_cast<uint32_t>(textures.size());
-  const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * setCount},
+  const uint32_t buffersPerSet = res.table ? 3 : 2;
+  const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffersPerSet * setCount},
                                          {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount * setCount}};
   VkDescriptorPoolCreateInfo poolInfo{};
   poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
@@ -53,6 +63,7 @@ void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const 
 
   std::vector<VkDescriptorBufferInfo> infos(2 * size_t{setCount});  // sized once: writes point in
   std::vector<VkWriteDescriptorSet> writes(2 * size_t{setCount});
+  const VkDescriptorBufferInfo tableInfo{res.table ? res.table->buffer : VK_NULL_HANDLE, 0, VK_WHOLE_SIZE};
   for (uint32_t i = 0; i < setCount; ++i) {
     const Chunk& c = plan.chunks[i];
     infos[2 * i] = {res.inBuffers[c.segment].buffer, c.inOffset, c.inRange};
@@ -65,6 +76,15 @@ void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const 
       w.descriptorCount = 1;
       w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
       w.pBufferInfo = &infos[2 * i + j];
+    }
+    if (res.table) {
+      VkWriteDescriptorSet& w = writes.emplace_back();
+      w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+      w.dstSet = res.sets[i];
+      w.dstBinding = kKernelTableBinding;
+      w.descriptorCount = 1;
+      w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+      w.pBufferInfo = &tableInfo;
     }
     for (uint32_t k = 0; k < textureCount; ++k)
       writes.push_back(textures[k]->descriptorWrite(res.sets[i], kKernelFirstTextureBinding + k));

@@ -37,9 +37,12 @@ void createShaderModule(Kernel& k, const std::vector<uint32_t>& spirv) {
 }
 
 void createLayouts(Kernel& k) {
-  static_assert(kKernelInputBinding == 0 && kKernelOutputBinding == 1 && kKernelFirstTextureBinding == 2,
-                "the kernel's bindings are numbered consecutively: MbIn, MbOut, then the sampled textures");
-  constexpr uint32_t firstTexture{kKernelFirstTextureBinding};
+  static_assert(kKernelInputBinding == 0 && kKernelOutputBinding == 1 && kKernelFirstTextureBinding == 2 &&
+                    kKernelTableBinding == 2,
+                "the kernel's bindings are numbered consecutively: MbIn, MbOut, then the sampled textures or "
+                "the table");
+  // The storage buffers, then the textures.
+  const uint32_t firstTexture = k.readsTable ? 3 : 2;
   std::vector<VkDescriptorSetLayoutBinding> bindings(firstTexture + k.sampledTextures);
   for (uint32_t i = 0; i < bindings.size(); ++i) {
     bindings[i].binding = i;
@@ -152,7 +155,7 @@ struct VulkanHarness::Impl {
   std::atomic<bool> timestampsTrusted{true};
 
   RunResult runOnce(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
-                    uint64_t count, const std::vector<const GpuTexture*>& textures);
+                    uint64_t count, const std::vector<const GpuTexture*>& textures, const std::vector<float>* table);
 };
 
 VulkanHarness::VulkanHarness(const DeviceOptions& options) : impl_(std::make_unique<Impl>()) {
@@ -192,9 +195,12 @@ bool VulkanHarness::supportsShaderFloat16() const { return impl_->ctx->shaderFlo
 
 std::shared_ptr<DeviceContext> VulkanHarness::context() const { return impl_->ctx; }
 
-std::shared_ptr<Kernel> VulkanHarness::createKernel(const std::vector<uint32_t>& spirv, uint32_t sampledTextures) {
+std::shared_ptr<Kernel> VulkanHarness::createKernel(const std::vector<uint32_t>& spirv, uint32_t sampledTextures,
+                                                    bool readsTable) {
+  if (sampledTextures && readsTable) throw HarnessError("createKernel: a kernel samples textures or reads a table");
   auto kernel = std::make_shared<Kernel>(impl_->ctx);
   kernel->sampledTextures = sampledTextures;
+  kernel->readsTable = readsTable;
   createShaderModule(*kernel, spirv);
   createLayouts(*kernel);
   createPipeline(*kernel);
@@ -203,7 +209,8 @@ std::shared_ptr<Kernel> VulkanHarness::createKernel(const std::vector<uint32_t>&
 
 RunResult VulkanHarness::Impl::runOnce(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride,
                                        uint32_t outStride, uint64_t count,
-                                       const std::vector<const GpuTexture*>& textures) {
+                                       const std::vector<const GpuTexture*>& textures,
+                                       const std::vector<float>* table) {
   const DeviceContext& ctx = *this->ctx;
   RunResult result;
   ChunkLimits limits;
@@ -217,6 +224,7 @@ RunResult VulkanHarness::Impl::runOnce(Kernel& kernel, const std::vector<float>&
 
   RunResources res(ctx);
   createBuffers(ctx, plan, inputs, inStride, res);
+  if (table) createTableBuffer(ctx, *table, res);
   createDescriptorSets(ctx, kernel, plan, textures, res);
   createQueryPool(ctx, chunkCount, res);
   res.commands.emplace(ctx);
@@ -241,8 +249,9 @@ RunResult VulkanHarness::Impl::runOnce(Kernel& kernel, const std::vector<float>&
   return result;
 }
 
-std::shared_ptr<Kernel> VulkanHarness::kernelFor(const std::vector<uint32_t>& spirv) {
+std::shared_ptr<Kernel> VulkanHarness::kernelFor(const std::vector<uint32_t>& spirv, bool readsTable) {
   std::string bytes(reinterpret_cast<const char*>(spirv.data()), spirv.size() * sizeof(uint32_t));
+  bytes += readsTable ? 'T' : '-';  // the same module with another layout is another kernel
   {
     std::lock_guard lock(impl_->kernelMutex);
     auto& list = impl_->kernels;
@@ -255,7 +264,7 @@ std::shared_ptr<Kernel> VulkanHarness::kernelFor(const std::vector<uint32_t>& sp
   }
   // Created outside the lock: two threads asking for the same new SPIR-V both create one,
   // and the cache keeps the later; both kernels are valid.
-  auto kernel = createKernel(spirv);
+  auto kernel = createKernel(spirv, 0, readsTable);
   std::lock_guard lock(impl_->kernelMutex);
   impl_->kernels.emplace_front(std::move(bytes), kernel);
   if (impl_->kernels.size() > kKernelCacheSize) impl_->kernels.pop_back();
@@ -264,17 +273,21 @@ std::shared_ptr<Kernel> VulkanHarness::kernelFor(const std::vector<uint32_t>& sp
 
 RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
                              uint64_t count) {
-  return run(kernel, inputs, inStride, outStride, count, {});
+  return run(kernel, inputs, inStride, outStride, count, {}, nullptr);
 }
 
 RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
-                             uint64_t count, const std::vector<const GpuTexture*>& textures) {
+                             uint64_t count, const std::vector<const GpuTexture*>& textures,
+                             const std::vector<float>* table) {
   const DeviceContext& ctx = *impl_->ctx;
   if (kernel.ctx.get() != &ctx) throw HarnessError("run: the kernel belongs to another harness");
   if (textures.size() != kernel.sampledTextures) {
     throw HarnessError("run: the kernel samples " + std::to_string(kernel.sampledTextures) + " textures, got " +
                        std::to_string(textures.size()));
   }
+  if (kernel.readsTable != (table != nullptr))
+    throw HarnessError(kernel.readsTable ? "run: the kernel reads a table, none given"
+                                         : "run: a table given to a kernel that reads none");
   if (inputs.size() != count * inStride) {
     throw HarnessError("run: expected " + std::to_string(count) + " records x " + std::to_string(inStride) +
                        " floats = " + std::to_string(count * inStride) + " inputs, got " +
@@ -290,12 +303,12 @@ RunResult VulkanHarness::run(Kernel& kernel, const std::vector<float>& inputs, u
       // One record of the real inputs: the JIT happens here, outside the timed dispatches.
       const std::vector<float> first(inputs.begin(), inputs.begin() + inStride);
       const auto t0 = std::chrono::steady_clock::now();
-      impl_->runOnce(kernel, first, inStride, outStride, 1, textures);
+      impl_->runOnce(kernel, first, inStride, outStride, 1, textures, table);
       firstDispatchMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       kernel.warmedUp.store(true);
     }
   }
-  result = impl_->runOnce(kernel, inputs, inStride, outStride, count, textures);
+  result = impl_->runOnce(kernel, inputs, inStride, outStride, count, textures, table);
   result.firstDispatchMs = firstDispatchMs;
   return result;
 }

@@ -10,7 +10,9 @@
 // invocations with i >= count return at once. The harness splits a run into chunks so that
 // no dispatch exceeds maxComputeWorkGroupCount[0] groups and no bound range exceeds
 // maxStorageBufferRange, binding each chunk's sub-ranges (aligned to
-// minStorageBufferOffsetAlignment).
+// minStorageBufferOffsetAlignment). A kernel may also read a table of floats, the same for
+// every record (a probe's LTC table):
+//   layout(std430, set = 0, binding = 2) readonly buffer MbTable { float mbTable[]; };
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -86,12 +88,15 @@ class VulkanHarness {
   // `sampledTextures` > 0 the kernel also declares that many combined image samplers at
   // set 0, bindings 2, 3, ... (e.g. `layout(set = 0, binding = 2) uniform samplerCube t;`),
   // given to run() in that order.
-  std::shared_ptr<Kernel> createKernel(const std::vector<uint32_t>& spirv, uint32_t sampledTextures = 0);
+  // With `readsTable` it declares the table buffer instead (binding 2), given to run(); a
+  // kernel does not have both.
+  std::shared_ptr<Kernel> createKernel(const std::vector<uint32_t>& spirv, uint32_t sampledTextures = 0,
+                                       bool readsTable = false);
   // The same, reusing the kernel made earlier for identical SPIR-V while it is among the last
   // kKernelCacheSize asked for: a pipeline that has run once keeps its JIT-compiled code, so
   // validating a permutation again in one process skips both the pipeline and the JIT.
   // Thread-safe.
-  std::shared_ptr<Kernel> kernelFor(const std::vector<uint32_t>& spirv);
+  std::shared_ptr<Kernel> kernelFor(const std::vector<uint32_t>& spirv, bool readsTable = false);
   static constexpr size_t kKernelCacheSize = 64;
 
   // Runs `count` records. `inputs` holds count * inStride floats. Safe to call from
@@ -99,9 +104,10 @@ class VulkanHarness {
   RunResult run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride,
                 uint64_t count);
   // The same for a kernel created with sampled textures: textures[k] is bound at binding 2 + k
-  // (exactly as many as the kernel declares).
+  // (exactly as many as the kernel declares); for a kernel that reads a table, `table` (the
+  // kernel's mbTable, copied to the device for this run).
   RunResult run(Kernel& kernel, const std::vector<float>& inputs, uint32_t inStride, uint32_t outStride, uint64_t count,
-                const std::vector<const GpuTexture*>& textures);
+                const std::vector<const GpuTexture*>& textures, const std::vector<float>* table = nullptr);
 
   // The instance and device (vulkan_internal.hpp), for the harness's parts beside the compute
   // path: textures (gpu_texture.hpp) and graphics pipelines on the same device and queue.

@@ -108,6 +108,7 @@ class Kernel {
   VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
   uint32_t sampledTextures = 0;  // combined image samplers from kKernelFirstTextureBinding
+  bool readsTable = false;       // a storage buffer at kKernelTableBinding
   // Set once the first (warm-up) dispatch has been submitted (RunResult::firstDispatchMs).
   std::atomic<bool> warmedUp{false};
   std::mutex warmUpMutex;
@@ -126,6 +127,7 @@ struct RunResources {
 
   const DeviceContext& ctx;
   std::deque<MappedBuffer> inBuffers, outBuffers;  // one pair per plan segment
+  std::optional<MappedBuffer> table;               // the kernel's table, when it reads one
   VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
   std::vector<VkDescriptorSet> sets;  // one per chunk
   VkQueryPool queryPool = VK_NULL_HANDLE;
@@ -140,8 +142,10 @@ void createDevice(DeviceContext& ctx, const DeviceOptions& options);
 // --- vulkan_buffers.cpp -----------------------------------------------------------------
 void createBuffers(const DeviceContext& ctx, const ChunkPlan& plan, const std::vector<float>& inputs, uint32_t inStride,
                    RunResources& res);
+// The table buffer (res.table), `table` copied in.
+void createTableBuffer(const DeviceContext& ctx, const std::vector<float>& table, RunResources& res);
 // Textures (gpu_texture.hpp) are written at kKernelFirstTextureBinding, ... of every
-// chunk's set.
+// chunk's set, and res.table, when there is one, whole at kKernelTableBinding.
 void createDescriptorSets(const DeviceContext& ctx, const Kernel& kernel, const ChunkPlan& plan,
                           const std::vector<const GpuTexture*>& textures, RunResources& res);
 

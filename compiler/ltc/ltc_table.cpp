@@ -55,6 +55,22 @@ TableSample sampleBilinear(const Table& t, double perceptualRoughness, double No
   return s;
 }
 
+std::vector<float> tableTexels(const Table& t) {
+  std::vector<float> rgba;
+  rgba.reserve(size_t{2} * t.size * t.size * 4);
+  for (uint32_t i = 0; i < t.size; ++i) {
+    for (uint32_t j = 0; j < t.size; ++j) {
+      const TableEntry& e = t.at(i, j);
+      rgba.insert(rgba.end(), {e.m00, e.m02, e.m20, e.m22});
+    }
+    for (uint32_t j = 0; j < t.size; ++j) {
+      const TableEntry& e = t.at(i, j);
+      rgba.insert(rgba.end(), {e.norm, e.fresnel, 0.0f, 0.0f});
+    }
+  }
+  return rgba;
+}
+
 TableEntry toTableEntry(const LtcEntry& e) {
   return {static_cast<float>(e.minv[0][0]), static_cast<float>(e.minv[0][2]), static_cast<float>(e.minv[2][0]),
           static_cast<float>(e.minv[2][2]), static_cast<float>(e.norm),       static_cast<float>(e.fresnel)};

@@ -38,6 +38,11 @@ struct TableSample {
 };
 TableSample sampleBilinear(const Table& t, double perceptualRoughness, double NoV);
 
+// The table as the GPU reads it (the fragment stage's texture, a probe's table buffer): 2 size
+// by size RGBA entries, row i (roughness) holding its size matrix entries (m00, m02, m20, m22),
+// then its size magnitude entries (norm, fresnel, 0, 0); row after row.
+std::vector<float> tableTexels(const Table& t);
+
 TableEntry toTableEntry(const LtcEntry& e);
 Table makeTable(uint32_t size, const FitSettings& settings, const std::vector<LtcEntry>& fitted);
 

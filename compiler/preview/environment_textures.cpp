@@ -18,19 +18,7 @@ std::shared_ptr<harness::GpuTexture> uploadDfgLut(harness::VulkanHarness& gpu, c
 }
 
 std::shared_ptr<harness::GpuTexture> uploadLtcTable(harness::VulkanHarness& gpu, const ltc::Table& table) {
-  harness::TextureLevel level{2 * table.size, table.size, {}};
-  level.rgba.reserve(size_t{2} * table.size * table.size * 4);
-  for (uint32_t i = 0; i < table.size; ++i) {
-    for (uint32_t j = 0; j < table.size; ++j) {
-      const ltc::TableEntry& e = table.at(i, j);
-      level.rgba.insert(level.rgba.end(), {e.m00, e.m02, e.m20, e.m22});
-    }
-    for (uint32_t j = 0; j < table.size; ++j) {
-      const ltc::TableEntry& e = table.at(i, j);
-      level.rgba.insert(level.rgba.end(), {e.norm, e.fresnel, 0.0f, 0.0f});
-    }
-  }
-  return harness::uploadTexture(gpu, false, {level});
+  return harness::uploadTexture(gpu, false, {{2 * table.size, table.size, ltc::tableTexels(table)}});
 }
 
 }  // namespace mb::preview

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "validate/probe_ltc_table.hpp"
 #include "validate/probe_program.hpp"
 
 namespace mb::preview {
@@ -64,8 +65,7 @@ ref::ModelEvalInput referenceWorkspace(const ReferenceScene& scene, size_t spher
     // The fragment shader's mb_ltc_texel: the four entries around the point, blended in fp32
     // arithmetic (docs/fragment-stage.md "LTC table"); here in double, the same weights.
     e.fetchLtc = [table](double NoV, double perceptualRoughness) {
-      const ltc::TableSample s = ltc::sampleBilinear(*table, perceptualRoughness, NoV);
-      return ref::LtcTexel{s.minv[0][0], s.minv[0][2], s.minv[2][0], s.minv[2][2], s.norm, s.fresnel};
+      return ltcTableTexel(*table, NoV, perceptualRoughness);
     };
   }
   if (scene.environmentMode == EnvironmentMode::None) return e;

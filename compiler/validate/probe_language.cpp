@@ -142,7 +142,8 @@ ProbeRun runProbeOn(const ProbeDevices& devices, const LanguageProbe& probe, std
   const ProbeLayout& layout = p.shader.layout;
   ProbeRun run;
   run.count = layout.inStride ? inputs.size() / layout.inStride : 0;
-  gl::GlRunResult r = gl.run(probe.source, inputs, layout.inStride, layout.outStride, run.count);
+  gl::GlRunResult r =
+      gl.run(probe.source, inputs, layout.inStride, layout.outStride, run.count, probe.program.tableBuffer());
   run.gpu = std::move(r.outputs);
   run.gpuMs = r.ms;
   run.firstDispatchMs = r.compileMs + r.firstDispatchMs;

@@ -196,7 +196,8 @@ struct RecordInput {
 std::function<void(const double*, double*)> materialReferenceEval(const Permutation& perm, const ProbeLayout& layout,
                                                                   std::map<std::string, std::string> bricks,
                                                                   bool groundTruths, bool illuminanceInput,
-                                                                  ReferenceLookup lookup) {
+                                                                  ReferenceLookup lookup,
+                                                                  std::shared_ptr<const ProbeLtcTable> ltcTable) {
   const MaterialDesc& mat = *perm.material;
   ref::ModelReferenceFn model = ref::ModelRegistry::instance().find(mat.model);
   if (!model) missingReference("model '" + mat.model + "'");
@@ -213,6 +214,13 @@ std::function<void(const double*, double*)> materialReferenceEval(const Permutat
   proto->features.insert(mat.features.begin(), mat.features.end());
   for (const auto& prm : mat.params)
     if (!prm.user && prm.constant) proto->inputs[prm.name] = prm.value;
+  if (scene.ltcTableBuffer) {
+    if (!ltcTable)
+      throw std::logic_error("materialReferenceEval: '" + perm.key() + "' reads the LTC table, none given");
+    proto->fetchLtc = [ltcTable](double NoV, double perceptualRoughness) {
+      return ltcTableTexel(ltcTable->table, NoV, perceptualRoughness);
+    };
+  }
   static std::atomic<uint64_t> nextId{1};
   const uint64_t id = nextId++;
   if (lookup == ReferenceLookup::ByName) return byNameReferenceEval(model, layout, mat, scene, proto, id);
@@ -295,8 +303,10 @@ ProbeProgram describePermutationProbe(const ShaderLibrary& lib, const Permutatio
   p.domain = domainAtPrecision(lib, p.domain, p.precision);
   std::map<std::string, std::string> bricks;
   for (const auto& [role, id] : boundRoles(lib, perm)) bricks[role] = id;
+  if (p.shader.readsTable) p.ltcTable = probeLtcTable(lib);
 
-  p.reference = materialReferenceEval(perm, p.shader.layout, bricks, false, illuminanceInput);
+  p.reference = materialReferenceEval(perm, p.shader.layout, bricks, false, illuminanceInput, ReferenceLookup::Resolved,
+                                      p.ltcTable);
   return p;
 }
 
@@ -311,8 +321,8 @@ ProbeRun runProbeOnGpu(harness::VulkanHarness& gpu, const ProbeProgram& program,
     throw harness::HarnessError("device \"" + gpu.deviceName() + "\" does not support shaderFloat16 " +
                                 "(VK_KHR_shader_float16_int8); fp16 probes cannot run on it");
   }
-  auto kernel = gpu.kernelFor(program.compiled.spirv);
-  auto result = gpu.run(*kernel, inputs, layout.inStride, layout.outStride, run.count);
+  auto kernel = gpu.kernelFor(program.compiled.spirv, program.shader.readsTable);
+  auto result = gpu.run(*kernel, inputs, layout.inStride, layout.outStride, run.count, {}, program.tableBuffer());
   run.gpu = std::move(result.outputs);
   run.gpuMs = result.gpuMs;
   run.firstDispatchMs = result.firstDispatchMs;
@@ -321,8 +331,8 @@ ProbeRun runProbeOnGpu(harness::VulkanHarness& gpu, const ProbeProgram& program,
     // The emulated fp16 kernel under the other denormal behaviour: a value is NaN (Inf) when
     // either behaviour gives NaN (Inf), as some conforming device computes it that way;
     // otherwise the flushing kernel's value is kept.
-    auto kept =
-        gpu.run(*gpu.kernelFor(program.denormalsKeptSpirv), inputs, layout.inStride, layout.outStride, run.count);
+    auto kept = gpu.run(*gpu.kernelFor(program.denormalsKeptSpirv, program.shader.readsTable), inputs, layout.inStride,
+                        layout.outStride, run.count, {}, program.tableBuffer());
     for (size_t k = 0; k < run.gpu.size(); ++k) {
       float& v = run.gpu[k];
       const float w = kept.outputs[k];

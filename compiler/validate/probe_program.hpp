@@ -13,6 +13,7 @@
 #include "emit/emitter.hpp"
 #include "harness/vulkan_harness.hpp"
 #include "validate/error_metrics.hpp"
+#include "validate/probe_ltc_table.hpp"
 #include "validate/sampler.hpp"
 
 namespace mb {
@@ -33,6 +34,10 @@ struct ProbeProgram {
   std::vector<uint32_t> denormalsKeptSpirv;
   // "fp16 emulated", "fp16 driver" or "fp32", for reports.
   std::string arithmetic() const;
+  // The LTC table the kernel reads (shader.readsTable) and the reference looks up.
+  std::shared_ptr<const ProbeLtcTable> ltcTable;
+  // The table buffer to give the kernel's run: ltcTable's texels, or null.
+  const std::vector<float>* tableBuffer() const { return ltcTable ? &ltcTable->texels : nullptr; }
 };
 
 // Probes' SPIR-V is kept in the content-addressed ShaderCache (compile/shader_cache.hpp) under
@@ -141,13 +146,13 @@ void addErrors(ErrorStats& s, const ProbeRun& run, const ProbeProgram& program, 
 // `lookup`: Resolved finds each role's reference, each input's column and the scene's columns
 // once, when the closure is built, so that a record costs no name lookup and no allocation;
 // ByName looks every name up per record and brick call (the path the resolved one is tested
-// against: both give the same doubles).
+// against: both give the same doubles). `ltcTable`: the table the probe's rectangle and disk
+// lights read (ProbeProgram::ltcTable); required when the permutation has them.
 enum class ReferenceLookup { Resolved, ByName };
-std::function<void(const double*, double*)> materialReferenceEval(const Permutation& perm, const ProbeLayout& layout,
-                                                                  std::map<std::string, std::string> bricks,
-                                                                  bool groundTruths = false,
-                                                                  bool illuminanceInput = false,
-                                                                  ReferenceLookup lookup = ReferenceLookup::Resolved);
+std::function<void(const double*, double*)> materialReferenceEval(
+    const Permutation& perm, const ProbeLayout& layout, std::map<std::string, std::string> bricks,
+    bool groundTruths = false, bool illuminanceInput = false, ReferenceLookup lookup = ReferenceLookup::Resolved,
+    std::shared_ptr<const ProbeLtcTable> ltcTable = nullptr);
 // Record columns holding the direction vectors n, v, l (empty if the probe has none).
 std::vector<uint32_t> directionInputColumns(const ProbeLayout& layout);
 

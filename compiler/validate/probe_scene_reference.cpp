@@ -71,7 +71,7 @@ SceneColumns sceneColumns(const ProbeScene& scene, const ProbeLayout& layout) {
       c.areaHalfHeight[k] = at(name + "HalfHeight");
     }
   }
-  if (usesLtcTable(scene.lights)) {
+  if (scene.recordLtcTexel()) {
     c.ltcM00 = at("ltcM00");
     c.ltcM02 = at("ltcM02");
     c.ltcM20 = at("ltcM20");
@@ -149,7 +149,7 @@ void sceneFromRecord(const ProbeScene& scene, const SceneColumns& c, const doubl
         in.disk = ref::DiskLight{lu * d, halfX, halfY, vec3(c.areaLuminance[k])};
     }
   }
-  if (usesLtcTable(scene.lights))
+  if (scene.recordLtcTexel())
     in.ltc = ref::LtcTexel{scalar(c.ltcM00), scalar(c.ltcM02),  scalar(c.ltcM20),
                            scalar(c.ltcM22), scalar(c.ltcNorm), scalar(c.ltcFresnel)};
   if (scene.environment == EnvironmentMode::None) return;

@@ -1,0 +1,29 @@
+// The LTC table's lookup (docs/models/lights.md "LTC tables"), one text for the two shaders
+// that read the table: the fragment stage (a texture at kFragmentLtcBinding) and a
+// permutation's validation probe (the harness's table buffer at kKernelTableBinding). Both
+// define the hooks lights.glsl declares, mb_fetch_ltc_matrix and mb_fetch_ltc_magnitude, by the
+// same four-entry blend in fp32 arithmetic, so what validate certifies is what the fragment
+// stage computes from the same numbers.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "emit/precision.hpp"
+
+namespace mb {
+
+// The table's side: 64 roughness rows by 64 view columns; a row of the table as a texture is
+// the 64 matrix entries, then the 64 magnitude entries (RGBA; ltc::tableTexels).
+inline constexpr int kLtcTableSize = 64;
+
+// The lookup's GLSL, final text at precision `p` (its blend stays fp32; the hooks take and
+// return the shading precision). `entry` is the GLSL of the table's RGBA entry at ivec2 `c`
+// (column, row), with "@" standing for `c`: "texelFetch(mbLtcTable, @, 0)" in the fragment
+// stage.
+std::vector<std::string> ltcTableLookup(const std::string& entry, ShaderPrecision p);
+
+// The validation probe's table: the buffer's declaration and its entry, for ltcTableLookup's
+// `entry` ("mb_ltc_table_entry(@)"); the table's floats are ltc::tableTexels, row after row.
+std::vector<std::string> ltcTableBuffer(ShaderPrecision p);
+
+}  // namespace mb
