@@ -207,8 +207,10 @@ float mb_ltc_specular_cv(vec3 n, vec3 v, float alpha, float norm, float m00, flo
     }
     MB_DONT_UNROLL for (int i = 0; i < inside; ++i) mbLtcPoly[i] = mbLtcClipped[i];
     float ltc = inside < 3 ? 0.0 : mb_ltc_edge_sum(inside);
-    // The integral of a non-negative lobe: a quadrature that overshoots a small result is cut at 0.
-    return max(norm * ltc + residual, 0.0);
+    // The integral of a non-negative lobe over part of the hemisphere lies between 0 and its
+    // integral over the whole, norm: a quadrature that over- or undershoots is cut there (at
+    // grazing views of smooth lobes the fit is poor and one level of splitting overshoots).
+    return clamp(norm * ltc + residual, 0.0, norm);
 }
 
 // The sine of a ball's angular radius; inside the ball the bound of the representative-point

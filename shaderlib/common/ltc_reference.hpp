@@ -434,8 +434,8 @@ inline double polygonSpecularWithResidual(const Mat3& minv, double norm, double 
   auto residual = [&](const Vec3& o) { return warpedResidual(m, detM, norm, vl, alpha, o); };
   const double ltc = inside.size() < 3 ? 0.0 : clampedCosinePolygon(inside);
   const double sum = fanQuadrature(inside, residual, levels) + fanQuadrature(outside, residual, levels);
-  // The lobe is non-negative; a quadrature that overshoots a small result is cut at 0.
-  return std::max(norm * ltc + sum, 0.0);
+  // Between 0 and the lobe's integral over the whole hemisphere, norm (common/ltc.glsl).
+  return std::clamp(norm * ltc + sum, 0.0, norm);
 }
 
 }  // namespace mb::ref::ltc

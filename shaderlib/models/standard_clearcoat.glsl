@@ -73,15 +73,15 @@ vec3 mb_clearcoat_direct(ClearCoatPixel cc, ShadingFrame f, vec3 l, out float at
 }
 
 #if defined(MB_LIGHT_RECT) || defined(MB_LIGHT_DISK)
-// The coat under a rectangle or disk light, per unit luminance (standard_lights.glsl): its LTC
-// lobe's integral `coatIntegral` (the table at the coat's roughness, about its normal) times
-// Schlick's Fresnel split of the table (F0 = 0.04, F90 = 1) and the strength;
-// attenuation = 1 - strength Fc(nc.v), as for image-based light.
-vec3 mb_clearcoat_ltc(ClearCoatPixel cc, ShadingFrame f, float coatIntegral, out float attenuation) {
+// The coat under a rectangle or disk light, per unit luminance (standard_lights.glsl): its lobe's
+// integral `coatIntegral` (about its normal, at its roughness; the table's entry there gives
+// `magnitude` = (norm, fresnel)) times Schlick's Fresnel split over the table (F0 = 0.04,
+// F90 = 1) and the strength; attenuation = 1 - strength Fc(nc.v), as for image-based light.
+vec3 mb_clearcoat_ltc(ClearCoatPixel cc, ShadingFrame f, float coatIntegral, vec2 magnitude, out float attenuation) {
     Geometry g = makeGeometry(cc.normal, f.v, reflect(-f.v, cc.normal));
     attenuation = 1.0 - MB_SLOT_clearcoat_fresnel(g, vec3(MB_CLEARCOAT_F0), 1.0).x * cc.strength;
-    vec2 magnitude = mb_fetch_ltc_magnitude(g.NoV, cc.perceptualRoughness);
-    return vec3((MB_CLEARCOAT_F0 * (magnitude.x - magnitude.y) + magnitude.y) * coatIntegral * cc.strength);
+    float fresnel = (MB_CLEARCOAT_F0 * (magnitude.x - magnitude.y) + magnitude.y) / magnitude.x;
+    return vec3(fresnel * coatIntegral * cc.strength);
 }
 #endif
 

@@ -75,12 +75,12 @@ Vec3 clearCoatEnvironment(const ModelEvalInput& in, const ClearCoatPixel& cc, co
 
 // Schlick's Fresnel split over the coat's table entry (F0 = 0.04, F90 = 1), as the base's LTC
 // lobe (standard_lights.ref.cpp), times the strength; the attenuation of image-based light.
-Vec3 clearCoatLtc(const ModelEvalInput& in, const ClearCoatPixel& cc, double coatIntegral, double& attenuation) {
+Vec3 clearCoatLtc(const ModelEvalInput& in, const ClearCoatPixel& cc, double coatIntegral, const LtcTexel& t,
+                  double& attenuation) {
   const Vec3 nc = cc.normal, v = in.frame.v;
   const Vec3 r = nc * (2.0 * dot(nc, v)) - v;  // reflect(-v, nc)
   attenuation = 1.0 - coatFresnel(in, cc, r);
-  const LtcTexel t = in.ltcAt(makeGeometry(nc, v, r).NoV, cc.perceptualRoughness);
-  return splat((kCoatF0 * (t.norm - t.fresnel) + t.fresnel) * coatIntegral * cc.strength);
+  return splat((kCoatF0 * (t.norm - t.fresnel) + t.fresnel) / t.norm * coatIntegral * cc.strength);
 }
 
 }  // namespace mb::ref::standard

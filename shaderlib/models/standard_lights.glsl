@@ -142,22 +142,22 @@ vec3 mb_shade_tube(ShadingPixel px, ShadingFrame f, TubeLight light) {
 #if defined(MB_LIGHT_RECT) || defined(MB_LIGHT_DISK)
 // Rectangle and disk lights by linearly transformed cosines (Heitz, Dupuy, Hill & Neubelt 2016;
 // docs/models/lights.md "Rectangle and disk lights"). A one-sided Lambertian emitter of
-// luminance L sends the radiance L Int f (n.l)+ dw over its solid angle. With the LTC table's
-// entry at (n.v, roughness), the specular lobe's integral is norm Int D_M dw, and Schlick's
-// Fresnel splits as the DFG LUT splits it: f0 (norm - fresnel) + f90 fresnel with f90 = 1 (the
-// table's lobe is GGX with the height-correlated Smith V, so the D, V and Fresnel roles are
-// not called for these lights). The diffuse brick is taken at the light centre's direction
-// times the exact irradiance per unit luminance, pi times the light's form factor (the same
-// edge sum with M = I): exact for Lambert. Sheen is the sheen lobe at the centre direction
-// times that irradiance; the clear coat is a second LTC lobe about the coat's normal, from the
-// table at the coat's roughness, attenuating the layers below by 1 - strength Fc(nc.v), as the
-// coat's image-based light does.
-// `specular` is Int D_M over the light for the base's entry, `formFactor` the same with M = I,
-// `coat` the coat's Int D_M (0 without a clear coat).
-vec3 mb_standard_ltc_light(ShadingPixel px, ShadingFrame f, Geometry g, float specular, float formFactor, float coat,
-                           vec3 luminance) {
-    vec2 magnitude = mb_fetch_ltc_magnitude(g.NoV, px.perceptualRoughness);
-    vec3 Fr = ((px.f0 * (magnitude.x - magnitude.y) + magnitude.y) * specular) * px.energyCompensation;
+// luminance L sends the radiance L Int f (n.l)+ dw over its solid angle. The specular lobe's
+// integral Int D V (n.l) dw (F = 1) is the bound rect_light_ltc_cv / disk_light_ltc_cv brick's:
+// norm Int D_M dw with the LTC table's entry at (n.v, roughness), plus the residual's quadrature
+// (the plain LTC is 15 % off at the median). Schlick's Fresnel splits as the DFG LUT splits it,
+// over the table's magnitudes: f0 + (1 - f0) fresnel / norm (F90 = 1; the table's lobe is GGX
+// with the height-correlated Smith V, so the D, V and Fresnel roles are not called for these
+// lights). The diffuse brick is taken at the light centre's direction times the exact irradiance
+// per unit luminance, pi times the light's form factor (the polygon brick with M = I): exact for
+// Lambert. Sheen is the sheen lobe at the centre direction times that irradiance; the clear coat
+// is a second lobe about the coat's normal at the coat's roughness, attenuating the layers below
+// by 1 - strength Fc(nc.v), as the coat's image-based light does.
+// `specular` is the base's lobe integral, `magnitude` its table entry's (norm, fresnel),
+// `formFactor` Int (n.l)+ dw / pi, `coat` the coat's lobe integral (0 without a clear coat).
+vec3 mb_standard_ltc_light(ShadingPixel px, ShadingFrame f, Geometry g, vec2 magnitude, float specular,
+                           float formFactor, float coat, vec2 coatMagnitude, vec3 luminance) {
+    vec3 Fr = ((px.f0 * (magnitude.x - magnitude.y) + magnitude.y) * (specular / magnitude.x)) * px.energyCompensation;
     float irradiance = MB_PI * formFactor;
     vec3 Fd = px.diffuseColor * (MB_SLOT_diffuse(g, px.perceptualRoughness, px.alpha) * irradiance);
     vec3 color = Fd + Fr;
@@ -166,44 +166,82 @@ vec3 mb_standard_ltc_light(ShadingPixel px, ShadingFrame f, Geometry g, float sp
 #endif
 #ifdef MB_FEATURE_CLEARCOAT
     float coatAttenuation;
-    vec3 coatLobe = mb_clearcoat_ltc(px.clearCoat, f, coat, coatAttenuation);
+    vec3 coatLobe = mb_clearcoat_ltc(px.clearCoat, f, coat, coatMagnitude, coatAttenuation);
     color = color * coatAttenuation + coatLobe;
 #endif
     return MB_SATURATE_MEDIUMP(color * luminance);
 }
 
-// The integrals mb_standard_ltc_light takes, for a rectangle (isDisk false) or a disk: the base's
-// lobe, its form factor (M = I) and the coat's lobe, each the bound polygon brick. One call site
-// in a loop: every inlined copy of the polygon integration costs lavapipe's JIT seconds.
+// The table's lobe is GGX at alpha = r^2 (shaderlib/ltc/ggx.json), fitted and validated from
+// r = MB_LTC_MIN_ROUGHNESS: these lights shade a smoother surface (or coat) at that roughness,
+// just above Filament's own floor of 0.045; the roughness role is not used for them.
+const float MB_LTC_MIN_ROUGHNESS = 0.05;
+// The LTC bricks' domain starts at n.v = 0.001 (their slots' geometry): a view nearer the
+// horizon than that, or below it (a coat normal tilted away from it, an interpolated normal), is
+// lifted to it about n for the lobes. Only silhouettes are affected; there the table's M is
+// nearly singular and the residual's fp32 quadrature loses its accuracy.
+const float MB_LTC_MIN_N_DOT_V = 0.001;
+vec3 mb_ltc_view(vec3 n, vec3 v) {
+    float NoV = dot(n, v);
+    if (NoV >= MB_LTC_MIN_N_DOT_V) return v;
+    vec3 t = v - n * NoV;
+    float len = length(t);
+    // v = -n has no direction along the surface: any will do.
+    vec3 along = len > 1e-6 ? t / len : normalize(cross(n, abs(n.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0)));
+    return along * sqrt(1.0 - MB_LTC_MIN_N_DOT_V * MB_LTC_MIN_N_DOT_V) + n * MB_LTC_MIN_N_DOT_V;
+}
+
+// The integrals mb_standard_ltc_light takes, for a rectangle (isDisk false) or a disk: the form
+// factor by the polygon brick with M = I, then the base's and the coat's lobes by the
+// control-variate brick, one call site in a loop (each inlined copy of the integration costs
+// lavapipe's JIT time, common/ltc.glsl).
 vec3 mb_ltc_area_light(ShadingPixel px, ShadingFrame f, bool isDisk, vec3 toCenter, vec3 halfX, vec3 halfY,
                        vec3 luminance) {
     float d = length(toCenter);
     // The centre's direction; the normal where the shading point is the centre, which has none.
     Geometry g = makeGeometry(f.n, f.v, d > 0.0 ? toCenter / d : f.n);
-    vec4 m = mb_fetch_ltc_matrix(g.NoV, px.perceptualRoughness);
+    Geometry gb = makeGeometry(f.n, mb_ltc_view(g.n, g.v), g.l);
+    float r = clamp(px.perceptualRoughness, MB_LTC_MIN_ROUGHNESS, 1.0);
+    vec4 m = mb_fetch_ltc_matrix(gb.NoV, r);
+    vec2 magnitude = mb_fetch_ltc_magnitude(gb.NoV, r);
 #ifdef MB_FEATURE_CLEARCOAT
-    Geometry gc = makeGeometry(px.clearCoat.normal, f.v, g.l);
-    vec4 mc = mb_fetch_ltc_matrix(gc.NoV, px.clearCoat.perceptualRoughness);
-    const int count = 3;
-#else
-    Geometry gc = g;
-    vec4 mc = m;
+    vec3 nc = normalize(px.clearCoat.normal);
+    Geometry gc = makeGeometry(nc, mb_ltc_view(nc, g.v), g.l);
+    float rC = clamp(px.clearCoat.perceptualRoughness, MB_LTC_MIN_ROUGHNESS, 1.0);
+    vec4 mc = mb_fetch_ltc_matrix(gc.NoV, rC);
+    vec2 magnitudeC = mb_fetch_ltc_magnitude(gc.NoV, rC);
     const int count = 2;
+#else
+    Geometry gc = gb;
+    vec4 mc = m;
+    vec2 magnitudeC = magnitude;
+    float rC = r;
+    const int count = 1;
 #endif
-    float integral[3] = float[3](0.0, 0.0, 0.0);
-    for (int k = 0; k < count; ++k) {
-        Geometry gk = k == 2 ? gc : g;
-        vec4 mk = k == 0 ? vec4(1.0, 0.0, 0.0, 1.0) : (k == 1 ? m : mc);
-        float value = 0.0;
+    float formFactor = 0.0;
 #ifdef MB_LIGHT_RECT
-        if (!isDisk) value = MB_SLOT_rect_light_ltc(gk, mk.x, mk.y, mk.z, mk.w, toCenter, halfX, halfY);
+    if (!isDisk) formFactor = MB_SLOT_rect_light_ltc(g, 1.0, 0.0, 0.0, 1.0, toCenter, halfX, halfY);
 #endif
 #ifdef MB_LIGHT_DISK
-        if (isDisk) value = MB_SLOT_disk_light_ltc(gk, mk.x, mk.y, mk.z, mk.w, toCenter, halfX, halfY);
+    if (isDisk) formFactor = MB_SLOT_disk_light_ltc(g, 1.0, 0.0, 0.0, 1.0, toCenter, halfX, halfY);
 #endif
-        integral[k] = value;
+    float lobe[2] = float[2](0.0, 0.0);
+    for (int k = 0; k < count; ++k) {
+        Geometry gk = k == 1 ? gc : gb;
+        vec4 mk = k == 1 ? mc : m;
+        float rK = k == 1 ? rC : r;
+        float alphaK = rK * rK;
+        float normK = k == 1 ? magnitudeC.x : magnitude.x;
+        float value = 0.0;
+#ifdef MB_LIGHT_RECT
+        if (!isDisk) value = MB_SLOT_rect_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, halfX, halfY);
+#endif
+#ifdef MB_LIGHT_DISK
+        if (isDisk) value = MB_SLOT_disk_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, halfX, halfY);
+#endif
+        lobe[k] = value;
     }
-    return mb_standard_ltc_light(px, f, g, integral[1], integral[0], integral[2], luminance);
+    return mb_standard_ltc_light(px, f, g, magnitude, lobe[0], formFactor, lobe[1], magnitudeC, luminance);
 }
 #endif
 

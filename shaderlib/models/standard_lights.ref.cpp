@@ -117,32 +117,49 @@ Vec3 shadeTube(const ModelEvalInput& in, const Pixel& px, const TubeLight& tube)
 
 namespace {
 
+// mb_ltc_view: v lifted about n to n.v = kLtcMinNoV where it is nearer the horizon or below it.
+Vec3 ltcView(const Vec3& n, const Vec3& v) {
+  const double NoV = dot(n, v);
+  if (NoV >= kLtcMinNoV) return v;
+  const Vec3 t = v - n * NoV;
+  const double len = length(t);
+  const Vec3 along =
+      len > 1e-6 ? t / len : normalize(cross(n, std::abs(n.z) < 0.9 ? Vec3{0.0, 0.0, 1.0} : Vec3{1.0, 0.0, 0.0}));
+  return along * std::sqrt(1.0 - kLtcMinNoV * kLtcMinNoV) + n * kLtcMinNoV;
+}
+
 // Rectangle and disk lights by linearly transformed cosines (Heitz et al. 2016): a one-sided
-// Lambertian emitter of luminance L sends L Int f (n.l)+ dw. `integral(texel)` is Int D_M over
-// the light (above the horizon) for a table entry, about the frame (n, v); with the identity
-// it is the form factor Int (n.l)+ dw / pi. The specular lobe is norm Int D_M with Schlick's
-// Fresnel split f0 (norm - fresnel) + fresnel (f90 = 1), times the multiscatter compensation;
-// the diffuse brick at the centre's direction times the irradiance pi x form factor; sheen at
-// the centre's direction times that irradiance; the coat its own lobe about its normal.
-template <typename Integral>
+// Lambertian emitter of luminance L sends L Int f (n.l)+ dw. `formFactor(n)` is the light's
+// Int (n.l)+ dw / pi about n (the polygon brick with M = I); `lobe(n, v, texel, alpha)` the
+// specular lobe's integral Int D V (n.l) dw about the frame (n, v), by the control-variate brick
+// with the table's entry. Schlick's Fresnel splits over the table's magnitudes, f0 + (1 - f0)
+// fresnel / norm (f90 = 1), times the multiscatter compensation; the diffuse brick at the
+// centre's direction times the irradiance pi x form factor; sheen at the centre's direction
+// times that irradiance; the coat its own lobe about its normal. The table's lobe is GGX at
+// alpha = r^2, r from kLtcMinRoughness, and the lobes' view is lifted to n.v >= kLtcMinNoV
+// (standard_lights.glsl, MB_LTC_MIN_ROUGHNESS and mb_ltc_view).
+template <typename FormFactor, typename Lobe>
 Vec3 ltcLight(const ModelEvalInput& in, const Pixel& px, const Vec3& toCenter, const Vec3& luminance,
-              Integral integral) {
+              FormFactor formFactor, Lobe lobe) {
   const Vec3 n = in.frame.n, v = in.frame.v;
   double d = length(toCenter);
   const Vec3 l = d > 0.0 ? toCenter / d : n;
-  const double NoV = makeGeometry(n, v, l).NoV;
-  const LtcTexel t = in.ltcAt(NoV, px.perceptualRoughness);
-  const double specular = integral(n, t);
-  const double irradiance = kPi * integral(n, LtcTexel{});
-  Vec3 Fr = (px.f0 * (t.norm - t.fresnel) + splat(t.fresnel)) * specular * px.energyCompensation;
+  const Vec3 vb = ltcView(n, v);
+  const double r = ltcRoughness(px.perceptualRoughness);
+  const LtcTexel t = in.ltcAt(makeGeometry(n, vb, l).NoV, r);
+  const double specular = lobe(n, vb, t, r * r);
+  const double irradiance = kPi * formFactor(n);
+  Vec3 Fr = (px.f0 * (t.norm - t.fresnel) + splat(t.fresnel)) * (specular / t.norm) * px.energyCompensation;
   double fd = in.scalar("diffuse", Args().geometry(n, v, l) << px.perceptualRoughness << px.alpha);
   Vec3 color = px.diffuseColor * (fd * irradiance) + Fr;
   if (in.has("sheen")) color = color * px.sheen.scaling + sheenDirect(in, px.sheen, l, l, 1.0) * irradiance;
   if (in.has("clearcoat")) {
-    const Vec3 nc = px.clearCoat.normal;
-    const LtcTexel tc = in.ltcAt(makeGeometry(nc, v, l).NoV, px.clearCoat.perceptualRoughness);
+    const Vec3 nc = normalize(px.clearCoat.normal);
+    const Vec3 vc = ltcView(nc, v);
+    const double rc = ltcRoughness(px.clearCoat.perceptualRoughness);
+    const LtcTexel tc = in.ltcAt(makeGeometry(nc, vc, l).NoV, rc);
     double attenuation = 1;
-    Vec3 coat = clearCoatLtc(in, px.clearCoat, integral(nc, tc), attenuation);
+    Vec3 coat = clearCoatLtc(in, px.clearCoat, lobe(nc, vc, tc, rc * rc), tc, attenuation);
     color = color * attenuation + coat;
   }
   return color * luminance;
@@ -150,21 +167,30 @@ Vec3 ltcLight(const ModelEvalInput& in, const Pixel& px, const Vec3& toCenter, c
 
 }  // namespace
 
-// The polygon bricks' references are the rect_light_ltc and disk_light_ltc roles.
-Vec3 shadeRect(const ModelEvalInput& in, const Pixel& px, const RectLight& rect) {
+// The form factor by the polygon bricks' roles (rect_light_ltc, disk_light_ltc) with M = I, the
+// lobes by the control-variate roles (rect_light_ltc_cv, disk_light_ltc_cv).
+template <typename Light>
+Vec3 shadePlanar(const ModelEvalInput& in, const Pixel& px, const Light& light, RoleName polygonRole,
+                 RoleName lobeRole) {
   const Vec3 v = in.frame.v;
-  return ltcLight(in, px, rect.toCenter, rect.luminance, [&](const Vec3& n, const LtcTexel& t) {
-    return in.scalar("rect_light_ltc", Args().geometry(n, v, n) << t.m00 << t.m02 << t.m20 << t.m22 << rect.toCenter
-                                                                << rect.halfX << rect.halfY);
-  });
+  return ltcLight(
+      in, px, light.toCenter, light.luminance,
+      [&](const Vec3& n) {
+        return in.scalar(polygonRole, Args().geometry(n, v, n)
+                                          << 1.0 << 0.0 << 0.0 << 1.0 << light.toCenter << light.halfX << light.halfY);
+      },
+      [&](const Vec3& n, const Vec3& view, const LtcTexel& t, double alpha) {
+        return in.scalar(lobeRole, Args().geometry(n, view, n) << alpha << t.norm << t.m00 << t.m02 << t.m20 << t.m22
+                                                               << light.toCenter << light.halfX << light.halfY);
+      });
+}
+
+Vec3 shadeRect(const ModelEvalInput& in, const Pixel& px, const RectLight& rect) {
+  return shadePlanar(in, px, rect, "rect_light_ltc", "rect_light_ltc_cv");
 }
 
 Vec3 shadeDisk(const ModelEvalInput& in, const Pixel& px, const DiskLight& disk) {
-  const Vec3 v = in.frame.v;
-  return ltcLight(in, px, disk.toCenter, disk.luminance, [&](const Vec3& n, const LtcTexel& t) {
-    return in.scalar("disk_light_ltc", Args().geometry(n, v, n) << t.m00 << t.m02 << t.m20 << t.m22 << disk.toCenter
-                                                                << disk.halfX << disk.halfY);
-  });
+  return shadePlanar(in, px, disk, "disk_light_ltc", "disk_light_ltc_cv");
 }
 
 }  // namespace mb::ref::standard

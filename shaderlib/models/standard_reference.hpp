@@ -3,6 +3,8 @@
 // standard_lights.ref.cpp, standard_environment.ref.cpp and one file per feature. Written
 // from the seeds' equations, independently of the GLSL.
 #pragma once
+#include <algorithm>
+
 #include "common/model_reference.hpp"
 
 namespace mb::ref::standard {
@@ -60,9 +62,21 @@ ClearCoatPixel clearCoatPrepare(const ModelEvalInput& in, Vec3& f0, double& perc
 Vec3 clearCoatDirect(const ModelEvalInput& in, const ClearCoatPixel& cc, const Vec3& l, double& attenuation);
 Vec3 clearCoatEnvironment(const ModelEvalInput& in, const ClearCoatPixel& cc, const Environment& env,
                           double& attenuation);
-// The coat under a rectangle or disk light (per unit luminance), from the integral of its LTC
-// table entry's D_M over the light; `attenuation` as for image-based light, 1 - strength Fc(nc.v).
-Vec3 clearCoatLtc(const ModelEvalInput& in, const ClearCoatPixel& cc, double coatIntegral, double& attenuation);
+
+// The coat under a rectangle or disk light (per unit luminance), from its lobe's integral over the
+// light and its table entry `t` (the magnitudes); `attenuation` as for image-based light,
+// 1 - strength Fc(nc.v).
+Vec3 clearCoatLtc(const ModelEvalInput& in, const ClearCoatPixel& cc, double coatIntegral, const LtcTexel& t,
+                  double& attenuation);
+// Rectangle and disk lights use the LTC table's lobe, GGX at alpha = r^2, with r clamped to
+// [kLtcMinRoughness, 1]: the table's fitted and validated domain (standard_lights.glsl).
+inline constexpr double kLtcMinRoughness = 0.05;
+// The LTC bricks' geometry starts at n.v = 0.001: the lobes' view is lifted to it
+// (standard_lights.glsl, mb_ltc_view).
+inline constexpr double kLtcMinNoV = 0.001;
+inline double ltcRoughness(double perceptualRoughness) {
+  return std::clamp(perceptualRoughness, kLtcMinRoughness, 1.0);
+}
 
 // standard_anisotropy.ref.cpp
 AnisotropyPixel anisotropyPrepare(const ModelEvalInput& in, double alpha);
