@@ -198,7 +198,8 @@ Command addPreviewCommand(CLI::App& app, GlobalOptions& g) {
                   "With -o X.png: also write the difference heatmap to this .png file");
   cmd->add_option("--size", args->options.size, "Pixels per sphere tile edge (default 512, at most 8192)");
   cmd->add_option("--environment", args->environment, "Environment: studio (default) or sky");
-  cmd->add_option("--lights", args->lights, "Light types, one light each: dir,point,spot,sphere,tube (default: dir)")
+  cmd->add_option("--lights", args->lights,
+                  "Light types, one light each: dir,point,spot,sphere,tube,rect,disk (default: dir)")
       ->delimiter(',');
   cmd->add_option("--environment-mode", args->environmentMode, "The permutation's environment mode (default: ibl_lut)")
       ->check(CLI::IsMember(allEnvironmentModeNames()));
