@@ -22,25 +22,16 @@ namespace fs = std::filesystem;
 namespace {
 
 // x, y -> x + y, x * y, x / y, exp(x), sqrt(x), sin(x), all in half arithmetic.
-const char* kArithmeticKernel = R"(#version 450
-#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require
-layout(local_size_x = 64) in;
-layout(std430, set = 0, binding = 0) readonly buffer MbIn { float mbIn[]; };
-layout(std430, set = 0, binding = 1) writeonly buffer MbOut { float mbOut[]; };
-layout(push_constant) uniform MbPush { uint count; } mbPush;
-void main() {
-    uint i = gl_GlobalInvocationID.x;
-    if (i >= mbPush.count) return;
-    float16_t x = float16_t(mbIn[2u * i]);
-    float16_t y = float16_t(mbIn[2u * i + 1u]);
-    mbOut[6u * i + 0u] = float(x + y);
-    mbOut[6u * i + 1u] = float(x * y);
-    mbOut[6u * i + 2u] = float(x / y);
-    mbOut[6u * i + 3u] = float(exp(x));
-    mbOut[6u * i + 4u] = float(sqrt(x));
-    mbOut[6u * i + 5u] = float(sin(x));
-}
-)";
+const std::string kArithmeticKernel = harness::contractKernel(
+    "  float16_t x = float16_t(mbIn[2u * i]);\n"
+    "  float16_t y = float16_t(mbIn[2u * i + 1u]);\n"
+    "  mbOut[6u * i + 0u] = float(x + y);\n"
+    "  mbOut[6u * i + 1u] = float(x * y);\n"
+    "  mbOut[6u * i + 2u] = float(x / y);\n"
+    "  mbOut[6u * i + 3u] = float(exp(x));\n"
+    "  mbOut[6u * i + 4u] = float(sqrt(x));\n"
+    "  mbOut[6u * i + 5u] = float(sin(x));\n",
+    "", "#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require\n");
 
 constexpr uint32_t kOut = 6;
 

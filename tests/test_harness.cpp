@@ -21,22 +21,13 @@ namespace {
 // Follows the kernel contract. Input record: (a, b, global index as float). Output record:
 // (a * b + global index, chunk-local index i). The test inputs make a * b and the sum exact
 // in fp32, so the results are bit-exact whether or not the driver fuses into an fma.
-const char* kMulAddKernel = R"(#version 450
-layout(local_size_x = 64) in;
-layout(std430, set = 0, binding = 0) readonly buffer MbIn { float mbIn[]; };
-layout(std430, set = 0, binding = 1) writeonly buffer MbOut { float mbOut[]; };
-layout(push_constant) uniform MbPush { uint count; } mbPush;
-void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= mbPush.count) return;
-  mbOut[i * 2u] = mbIn[i * 3u] * mbIn[i * 3u + 1u] + mbIn[i * 3u + 2u];
-  mbOut[i * 2u + 1u] = float(i);
-}
-)";
+const std::string kMulAddKernel = contractKernel(
+    "  mbOut[i * 2u] = mbIn[i * 3u] * mbIn[i * 3u + 1u] + mbIn[i * 3u + 2u];\n"
+    "  mbOut[i * 2u + 1u] = float(i);\n");
 constexpr uint32_t kInStride = 3;
 constexpr uint32_t kOutStride = 2;
 
-std::vector<uint32_t> compileKernel(const char* source) {
+std::vector<uint32_t> compileKernel(const std::string& source) {
   return mb::compileComputeGlsl(source, "test_harness.comp").spirv;
 }
 
@@ -169,18 +160,9 @@ TEST_CASE("harness handles empty runs and rejects bad arguments", "[harness][vul
 
 // A table the kernel reads beside its records (a validation probe's LTC table): record i looks
 // up entry mbIn[i] of it. Bound whole to every chunk, so a capped chunk size changes nothing.
-const char* kTableKernel = R"(#version 450
-layout(local_size_x = 64) in;
-layout(std430, set = 0, binding = 0) readonly buffer MbIn { float mbIn[]; };
-layout(std430, set = 0, binding = 1) writeonly buffer MbOut { float mbOut[]; };
-layout(std430, set = 0, binding = 2) readonly buffer MbTable { float mbTable[]; };
-layout(push_constant) uniform MbPush { uint count; } mbPush;
-void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= mbPush.count) return;
-  mbOut[i] = mbTable[uint(mbIn[i])];
-}
-)";
+const std::string kTableKernel =
+    contractKernel("  mbOut[i] = mbTable[uint(mbIn[i])];\n",
+                   "layout(std430, set = 0, binding = 2) readonly buffer MbTable { float mbTable[]; };\n");
 
 TEST_CASE("a kernel reads its table buffer, whole in every chunk", "[harness][vulkan]") {
   DeviceOptions options = testDeviceOptions();

@@ -403,12 +403,8 @@ void writePermutationProbe(GlslWriter& w, const ProbeLayout& layout, const Permu
   globals.push_back("}");
   std::vector<std::string> body{"vec3 r = " + permutationRadianceCall(layout, params) + ";"};
   if (!layout.fedOutputs.empty()) body.push_back("MaterialInputs m = materialInputs(" + args + ");");
-  std::vector<std::string> table;
-  if (scene.ltcTableBuffer) {
-    table = ltcTableBuffer(p);
-    for (const auto& line : ltcTableLookup("mb_ltc_table_entry(@)", p)) table.push_back(line);
-  }
-  writeProbe(w, layout, body, globals, p, params, table);
+  writeProbe(w, layout, body, globals, p, params,
+             scene.ltcTableBuffer ? ltcTableBufferHooks(p) : std::vector<std::string>{});
 }
 
 // Engine records: the probe's inputs without the non-constant material parameters, which move

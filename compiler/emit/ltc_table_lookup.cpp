@@ -53,9 +53,9 @@ std::vector<std::string> ltcTableLookup(const std::string& entry, ShaderPrecisio
   };
 }
 
-std::vector<std::string> ltcTableBuffer(ShaderPrecision p) {
+std::vector<std::string> ltcTableBufferHooks(ShaderPrecision p) {
   const std::string hp = highpAt(p);
-  return {
+  std::vector<std::string> out{
       "// The LTC table, the harness's table buffer: entry (column, row) at floats 4 (row * " +
           std::to_string(2 * kLtcTableSize) + " + column), RGBA.",
       "layout(std430, set = 0, binding = " + std::to_string(kKernelTableBinding) + ") readonly buffer MbTable { " + hp +
@@ -65,6 +65,8 @@ std::vector<std::string> ltcTableBuffer(ShaderPrecision p) {
       "    return vec4(mbTable[k], mbTable[k + 1u], mbTable[k + 2u], mbTable[k + 3u]);",
       "}",
   };
+  for (const auto& line : ltcTableLookup("mb_ltc_table_entry(@)", p)) out.push_back(line);
+  return out;
 }
 
 }  // namespace mb

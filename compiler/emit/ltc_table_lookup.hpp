@@ -22,8 +22,8 @@ inline constexpr int kLtcTableSize = 64;
 // stage.
 std::vector<std::string> ltcTableLookup(const std::string& entry, ShaderPrecision p);
 
-// The validation probe's table: the buffer's declaration and its entry, for ltcTableLookup's
-// `entry` ("mb_ltc_table_entry(@)"); the table's floats are ltc::tableTexels, row after row.
-std::vector<std::string> ltcTableBuffer(ShaderPrecision p);
+// The validation probe's table hooks: the harness's table buffer (its floats are
+// ltc::tableTexels, row after row), its entry mb_ltc_table_entry, and ltcTableLookup over it.
+std::vector<std::string> ltcTableBufferHooks(ShaderPrecision p);
 
 }  // namespace mb
