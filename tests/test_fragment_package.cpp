@@ -82,9 +82,11 @@ void checkFragmentEntry(const fs::path& pkg, const nlohmann::json& p) {
     CHECK(samplers.count(2));
     CHECK(samplers.count(3));
   }
-  // The LTC table at 4 with a rectangle or disk light, the material's textures from 5.
+  // The LTC table at 4 with a rectangle or disk light or a light shaded by the "ltc" method, the
+  // material's textures from 5.
   bool area = false;
   for (const auto& l : p["lights"]) area = area || l == "rect" || l == "disk";
+  for (const auto& m : p["light_methods"]) area = area || m == "ltc";
   CHECK(samplers.count(4) == (area ? 1u : 0u));
   for (const auto& t : f["textures"]) {
     CHECK(t["binding"].get<int>() >= 5);

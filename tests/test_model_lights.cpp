@@ -13,6 +13,7 @@
 #include <random>
 
 #include "emit/emitter.hpp"
+#include "common/area_light_truth.hpp"
 #include "common/lights_reference.hpp"
 #include "common/ltc_reference.hpp"
 #include "validate/probe_ltc_table.hpp"
@@ -31,10 +32,17 @@ MaterialDesc shippedMaterial(const std::string& name) {
   return loadMaterialJson((test::sourceDir() / "materials" / (name + ".json")).string(), test::shippedLibrary());
 }
 
+// Sphere and tube lights by seed 002's representative point: what the tests of that method's
+// limits and conventions shade (the model's default is the "ltc" method, tested on its own).
+const std::map<std::string, std::string> kRepresentativePoint{{"sphere", "representative_point"},
+                                                              {"tube", "representative_point"}};
+
 // The reference's input for `material`: its bricks with the model's defaults for every light
-// type (then `overrides`), the model's default inputs replaced by the material's values.
-ref::ModelEvalInput referenceInput(const MaterialDesc& material,
-                                   const std::map<std::string, std::string>& overrides = {}) {
+// type (then `overrides`), the model's default inputs replaced by the material's values; the
+// sphere and tube lights by `methods`.
+ref::ModelEvalInput referenceInput(MaterialDesc material, const std::map<std::string, std::string>& overrides = {},
+                                   const std::map<std::string, std::string>& methods = kRepresentativePoint) {
+  for (const auto& [light, method] : methods) material.lightMethods[light] = method;
   Permutation perm;
   perm.material = &material;
   perm.lights = parseLightTypes(kAllLights);
@@ -82,6 +90,17 @@ Vec3 shadeWith(ref::ModelEvalInput in, double roughness,
 }
 
 const Vec3 kIntensity{1.5, 0.9, 0.4};
+
+// A roughness of 0.05-1 and a view of n.v 0.05-1 about n = z, as mb_bench_area_lights draws them.
+struct DrawnView {
+  double roughness;
+  Vec3 v;
+};
+DrawnView drawView(Configs& c) {
+  const double roughness = c.uniform(0.05, 1.0), NoV = c.uniform(0.05, 1.0);
+  const double phi = c.uniform(0.0, 2 * ref::kPi), s = std::sqrt(1 - NoV * NoV);
+  return {roughness, Vec3{s * std::cos(phi), s * std::sin(phi), NoV}};
+}
 
 }  // namespace
 
@@ -343,10 +362,9 @@ TEST_CASE("lights: the model's rectangle and disk specular meets the area-light 
   for (bool disk : {false, true}) {
     std::vector<double> errors;
     while (errors.size() < 160) {
-      const double roughness = c.uniform(0.05, 1.0), alpha = roughness * roughness, NoV = c.uniform(0.05, 1.0);
-      const double phi = c.uniform(0.0, 2 * ref::kPi), s = std::sqrt(1 - NoV * NoV);
-      const Vec3 v{s * std::cos(phi), s * std::sin(phi), NoV};
-      const Vec3 mirror = n * (2 * NoV) - v;
+      const DrawnView view = drawView(c);
+      const double roughness = view.roughness, alpha = roughness * roughness;
+      const Vec3 v = view.v, mirror = n * (2 * v.z) - v;
       auto size = [&] { return std::exp(c.uniform(std::log(0.01), std::log(0.5))); };
       const double hx = size(), hy = size();
       Vec3 centre = c.unit();
@@ -354,16 +372,9 @@ TEST_CASE("lights: the model's rectangle and disk specular meets the area-light 
         centre = ref::normalize(mirror + c.unit() * ((alpha + std::max(hx, hy)) * c.uniform(0, 1)));
       const rl::PlanarLight light =
           rl::facingPlanarLight(centre, hx, hy, c.uniform(0, 2 * ref::kPi), c.uniform(-1, 1) * ref::kPi / 3);
-      const rl::ViewFrame fr = rl::viewFrame(n, v);
-      std::vector<Vec3> local;
-      for (const Vec3& p :
-           disk ? rl::diskPolygon(light.c, light.ex, light.ey, 256) : rl::rectPolygon(light.c, light.ex, light.ey))
-        local.push_back(fr.toLocal(p));
-      local = rl::clipToHalfSpace(local, Vec3{0, 0, 1});
-      if (local.size() < 3) continue;  // no part above the horizon
-      const double irradiance = ref::kPi * rl::clampedCosinePolygon(local);
-      const double truth = rl::lobeIntegralAdaptive(local, fr.toLocal(v), alpha, 1e-7 * irradiance);
-      if (!(truth > 1e-6 * irradiance)) continue;
+      const rl::PlanarTruth t = rl::planarLobeTruth(n, v, alpha, light, disk);
+      if (!(t.irradiance > 0.0) || !(t.lobe > 1e-6 * t.irradiance)) continue;  // below the horizon
+      const double truth = t.lobe;
       ref::ModelEvalInput e = in;
       e.frame = {n, v, n, Vec3{1, 0, 0}};
       e.inputs["roughness"] = {roughness};
@@ -378,6 +389,103 @@ TEST_CASE("lights: the model's rectangle and disk specular meets the area-light 
     INFO((disk ? "disk" : "rectangle") << ": median " << median << ", 95th percentile " << p95);
     CHECK(median <= 0.01);
     CHECK(p95 <= 0.05);
+  }
+}
+
+TEST_CASE("lights: the model's sphere and tube specular by the ltc method meets the area-light bound",
+          "[model-lights][ltc]") {
+  // As the rectangle and disk above, for sphere and tube lights shaded by the "ltc" method where
+  // it shades them alone (equivalent angular radius >= 2 MB_LTC_BLEND_START, the tube two radii
+  // clear of the shading point): the luminance I / A (inverse-square falloff), the table read as
+  // the fragment stage reads it, against the lobe's integral over the cap or the capsule
+  // (common/area_light_truth.hpp), on configurations drawn as mb_bench_area_lights draws them.
+  MaterialDesc m = shippedMaterial("filament_plastic");
+  ref::ModelEvalInput in = referenceInput(m, {{"light_falloff", "falloff_inverse_square"}}, {});
+  REQUIRE(in.bound("sphere_light_ltc_cv"));
+  REQUIRE(in.bound("tube_light_ltc_cv"));
+  in.inputs["metallic"] = {1.0};
+  in.inputs["baseColor"] = {1.0, 1.0, 1.0};
+  const auto table = probeLtcTable(test::shippedLibrary());
+  in.fetchLtc = [table](double NoV, double r) { return ltcTableTexel(table->table, NoV, r); };
+  const Vec3 n{0, 0, 1}, intensity{1.0, 1.0, 1.0};
+  const double d = 2.0, falloffRadius = 1e6;
+  Configs c(31);
+  for (bool tube : {false, true}) {
+    std::vector<double> errors;
+    while (errors.size() < 160) {
+      const DrawnView view = drawView(c);
+      const double roughness = view.roughness, alpha = roughness * roughness;
+      const Vec3 v = view.v, mirror = n * (2 * v.z) - v;
+      const double sinA = std::exp(c.uniform(std::log(0.1), std::log(0.5)));
+      Vec3 dir = c.unit();
+      if (errors.size() % 2) dir = ref::normalize(mirror + c.unit() * ((alpha + sinA) * c.uniform(0, 1)));
+      ref::ModelEvalInput e = in;
+      e.frame = {n, v, n, Vec3{1, 0, 0}};
+      e.inputs["roughness"] = {roughness};
+      const ref::standard::Pixel px = ref::standard::prepare(e);
+      double truth = 0, irradiance = 0, area = 0;
+      Vec3 shaded;
+      if (!tube) {
+        const double R = sinA * d;
+        const ref::arealights::LobeIntegrals t =
+            ref::arealights::sphereLobe(ref::makeGeometry(n, v, dir), alpha, sinA, 64);
+        truth = t.specular;
+        irradiance = t.diffuse;
+        area = ref::kPi * R * R;
+        shaded = ref::standard::shadeSphere(e, px, ref::SphereLight{dir * d, R, intensity, falloffRadius});
+      } else {
+        const Vec3 axis = c.unit();
+        const double halfLength = c.uniform(0.05, 1.5) * d, R = sinA * d * 0.4;
+        const Vec3 L0 = dir * d - axis * halfLength, L1 = dir * d + axis * halfLength, edge = L1 - L0;
+        const double t = std::clamp(-dot(L0, edge) / dot(edge, edge), 0.0, 1.0);
+        if (length(L0 + edge * t) < 2.0 * R) continue;  // where the representative point takes over
+        area = ref::kPi * R * R + 2.0 * R * length(edge);
+        // The equivalent point's distance (standard_lights.ref.cpp): LTC alone from an equivalent
+        // angular radius of 0.1.
+        const double d0 = length(L0), d1 = length(L1);
+        const double dEq = std::sqrt(d0 * d1 * 0.5 * length(L0 / d0 + L1 / d1));
+        if (std::sqrt(area / ref::kPi) / dEq < 0.1) continue;
+        const ref::arealights::LobeIntegrals tl =
+            ref::arealights::tubeLobe(ref::makeGeometry(n, v, n), alpha, L0, L1, R);
+        truth = tl.specular;
+        irradiance = tl.diffuse;
+        shaded = ref::standard::shadeTube(e, px, ref::TubeLight{L0, L1, R, intensity, falloffRadius});
+      }
+      if (!(irradiance > 0.0) || !(truth > 1e-6 * irradiance)) continue;  // below the horizon
+      errors.push_back(std::abs(shaded.x / (truth / area * px.energyCompensation.x) - 1.0));
+    }
+    std::sort(errors.begin(), errors.end());
+    const double median = errors[errors.size() / 2], p95 = errors[errors.size() * 95 / 100];
+    INFO((tube ? "tube" : "sphere") << ": median " << median << ", 95th percentile " << p95 << ", worst "
+                                    << errors.back());
+    CHECK(median <= 0.01);
+    CHECK(p95 <= 0.05);
+  }
+}
+
+TEST_CASE("lights: the ltc method mixes in the representative point on small lights, continuously",
+          "[model-lights][ltc]") {
+  // Below an equivalent angular radius of 0.05 the sphere is shaded by the representative point
+  // exactly, above 0.1 by LTC alone; between, the mix moves linearly: no jump at either end.
+  MaterialDesc m = shippedMaterial("filament_plastic");
+  ref::ModelEvalInput ltc = referenceInput(m, {}, {});
+  ref::ModelEvalInput rp = referenceInput(m);
+  const auto table = probeLtcTable(test::shippedLibrary());
+  ltc.fetchLtc = [table](double NoV, double r) { return ltcTableTexel(table->table, NoV, r); };
+  Configs c(37);
+  for (int i = 0; i < 50; ++i) {
+    c.frame(ltc);
+    rp.frame = ltc.frame;
+    const Vec3 dir = ref::normalize(ltc.frame.n + c.unit() * 0.5);
+    const double roughness = c.uniform(0.05, 1.0), d = c.uniform(0.5, 5.0);
+    auto sphere = [&](const ref::ModelEvalInput& in, double sinA) {
+      return shadeWith(in, roughness, [&](const ref::ModelEvalInput& e, const ref::standard::Pixel& px) {
+        return ref::standard::shadeSphere(e, px, ref::SphereLight{dir * d, sinA * d, kIntensity, 10.0});
+      });
+    };
+    CHECK(close(sphere(ltc, 0.049), sphere(rp, 0.049), 1e-12));
+    // Across each end of the mix a change of 1e-7 in sin alpha moves the result by ~1e-7 of it.
+    for (double end : {0.05, 0.1}) CHECK(close(sphere(ltc, end - 1e-7), sphere(ltc, end + 1e-7), 1e-5));
   }
 }
 

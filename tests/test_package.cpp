@@ -161,6 +161,27 @@ TEST_CASE("package manifest: keys, hashes, deduplicated files per target, determ
   fs::remove_all(dir);
 }
 
+TEST_CASE("package manifest: each permutation says how its lights are shaded", "[package]") {
+  // The standard model's sphere light by LTC at high quality and by the representative point at
+  // low (models.md "Light methods"), with the roles and the LTC table hooks that follow; a
+  // directional light has no methods.
+  const fs::path dir = tempDir("light-methods");
+  for (const char* quality : {"high", "low"}) {
+    const nlohmann::json m =
+        compilePackage(material("filament_plastic.json") + " --lights dir,sphere --quality " + quality, dir / quality);
+    REQUIRE(m["permutations"].size() == 1);
+    const nlohmann::json& p = m["permutations"][0];
+    const bool ltc = std::string(quality) == "high";
+    CHECK(p["light_methods"] == nlohmann::json{{"sphere", ltc ? "ltc" : "representative_point"}});
+    CHECK(p["bricks"].contains("sphere_light_ltc_cv") == ltc);
+    CHECK(p["bricks"].contains("sphere_light_point"));
+    const std::string include = test::readFile(dir / quality / p["include"].get<std::string>());
+    CHECK((include.find("#define MB_LTC_TABLE 1") != std::string::npos) == ltc);
+    CHECK((include.find("//   vec4 mb_fetch_ltc_matrix(float NoV") != std::string::npos) == ltc);  // the hooks it needs
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("each include is self-contained: hooks + include + calls compile", "[package]") {
   fs::path dir = tempDir("include");
   const std::string mats =

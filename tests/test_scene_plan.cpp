@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "emit/emitter.hpp"
 #include "load/scene_desc.hpp"
 #include "permute/axes.hpp"
 #include "permute/scene_plan.hpp"
@@ -106,6 +107,93 @@ TEST_CASE("quality: defaulted roles follow the table, chosen roles keep the mate
   CHECK(applyQuality(chose, Quality::Low, lib).bricks.at("sh_irradiance") == "sh9_irradiance");
 }
 
+TEST_CASE("light methods: the material's choice, else the quality level's, else the model's default", "[scene]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  const LightMethodChoice* sphere = model("standard").findLightMethod(LightType::Sphere);
+  REQUIRE(sphere);
+  CHECK(sphere->defaultMethod == "ltc");
+  CHECK(sphere->quality.at("low") == "representative_point");
+  CHECK(!model("standard").findLightMethod(LightType::Point));  // one way only: no choice
+  const MaterialDesc m = material("filament_plastic");
+  CHECK(m.lightMethod(LightType::Sphere) == "ltc");
+  CHECK(m.lightMethod(LightType::Point).empty());
+  auto roles = [&](const MaterialDesc& mat, Quality q) {
+    Permutation p;
+    p.material = &mat;
+    p.lights = {LightType::Dir, LightType::Sphere, LightType::Tube};
+    p.quality = q;
+    std::map<std::string, std::string> out;
+    for (const auto& [role, brick] : boundRoles(lib, p)) out[role] = brick;
+    const std::string glsl = emitPermutation(lib, p).glsl;
+    out["#ltc"] = glsl.find("#define MB_LIGHT_SPHERE_LTC 1") != std::string::npos ? "yes" : "no";
+    out["#rp"] = glsl.find("#define MB_LIGHT_SPHERE_REPRESENTATIVE_POINT 1") != std::string::npos ? "yes" : "no";
+    out["#table"] = p.readsLtcTable() ? "yes" : "no";
+    return out;
+  };
+  // High: LTC, and its roles exist beside the representative point's (which it mixes in).
+  auto high = roles(m, Quality::High);
+  CHECK(high.at("sphere_light_ltc_cv") == "sphere_ltc_cv");
+  CHECK(high.at("tube_light_ltc") == "tube_ltc_polygon");
+  CHECK(high.count("sphere_light_point"));
+  CHECK(high.at("#ltc") == "yes");
+  CHECK(high.at("#table") == "yes");
+  // Low: the level's representative point; no LTC role, no table.
+  const MaterialDesc low = applyQuality(m, Quality::Low, lib);
+  CHECK(low.lightMethod(LightType::Tube) == "representative_point");
+  auto lowRoles = roles(low, Quality::Low);
+  CHECK(!lowRoles.count("sphere_light_ltc_cv"));
+  CHECK(!lowRoles.count("tube_light_ltc"));
+  CHECK(lowRoles.count("tube_light_point"));
+  CHECK(lowRoles.at("#rp") == "yes");
+  CHECK(lowRoles.at("#table") == "no");
+  // A material's own choice, in either form, outlives the quality level.
+  const std::string json = R"({"name": "chose", "model": "standard", "lightMethods": {"sphere": "ltc"},
+    "bricks": {"roughness": "roughness_clamped", "diffuse": "diffuse_lambert", "specular_d": "d_ggx",
+               "specular_v": "v_smith_ggx_correlated", "fresnel": "f_schlick"}})";
+  const MaterialDesc chose = parseMaterialJson(json, "chose.json", lib);
+  CHECK(chose.lightMethodLocations.at("sphere").line == 1);
+  const MaterialDesc choseLow = applyQuality(chose, Quality::Low, lib);
+  CHECK(choseLow.lightMethod(LightType::Sphere) == "ltc");
+  CHECK(choseLow.lightMethod(LightType::Tube) == "representative_point");
+  const MaterialDesc macro = parseMaterialMacro(
+      "#define MATERIAL chose\n#define MODEL standard\n#define LIGHT_METHOD_sphere ltc\n"
+      "#define BRICK_roughness roughness_clamped\n#define BRICK_diffuse diffuse_lambert\n"
+      "#define BRICK_specular_d d_ggx\n#define BRICK_specular_v v_smith_ggx_correlated\n#define BRICK_fresnel f_schlick\n",
+      "chose.mat", lib);
+  CHECK(macro.lightMethods == chose.lightMethods);
+  CHECK(macro.lightMethodLocations.at("sphere").line == 3);
+}
+
+TEST_CASE("light methods: a material naming an unknown light or method is told where", "[scene]") {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  auto errorsOf = [&](const std::string& methods) {
+    const std::string json = R"({"name": "x", "model": "standard", "lightMethods": )" + methods + R"(,
+    "bricks": {"roughness": "roughness_clamped", "diffuse": "diffuse_lambert", "specular_d": "d_ggx",
+               "specular_v": "v_smith_ggx_correlated", "fresnel": "f_schlick"}})";
+    try {
+      parseMaterialJson(json, "x.json", lib);
+    } catch (const DiagnosticError& e) {
+      return e.diagnostics();
+    }
+    return std::vector<Diagnostic>{};
+  };
+  auto unknownLight = errorsOf(R"({"sphre": "ltc"})");
+  REQUIRE(unknownLight.size() == 1);
+  CHECK(unknownLight[0].code == "E-UNKNOWN-NAME");
+  CHECK(unknownLight[0].where.column == 53);  // the key
+  CHECK(unknownLight[0].suggestion == "did you mean 'sphere'?");
+  auto point = errorsOf(R"({"point": "ltc"})");
+  REQUIRE(point.size() == 1);
+  CHECK(point[0].message.find("offers no methods for light 'point'") != std::string::npos);
+  auto method = errorsOf(R"({"tube": "representative"})");
+  REQUIRE(method.size() == 1);
+  CHECK(method[0].where.column == 61);  // the value
+  CHECK(method[0].message.find("expected one of 'ltc', 'representative_point'") != std::string::npos);
+  auto notText = errorsOf(R"({"tube": 1})");
+  REQUIRE(notText.size() == 1);
+  CHECK(notText[0].code == "E-FIELD-TYPE");
+}
+
 namespace {
 
 // The codes of the diagnostics the library loader gives after replacing `from` by `to` in a
@@ -146,6 +234,19 @@ TEST_CASE("the quality table is checked at load: unknown level, role, brick of a
   CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-FIELD") == 1);  // "ultra"
   CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-ROLE") == 1);
   CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-BRICK") == 1);
+}
+
+TEST_CASE("light methods are checked at load: unknown light, method, default; a role's method every light offers",
+          "[scene]") {
+  auto codes = libraryCodesAfterEdit(
+      "standard.json", R"("lightMethods": [)",
+      R"("lightMethods": [{"light": "sphre", "methods": ["a"], "default": "a", "description": "x"},
+                          {"light": "rect", "methods": ["a", "a"], "default": "b", "quality": {"low": "c"}, "description": "x"},)");
+  CHECK(std::count(codes.begin(), codes.end(), "E-UNKNOWN-NAME") == 3);    // sphre, default b, low c
+  CHECK(std::count(codes.begin(), codes.end(), "E-DUPLICATE-NAME") == 1);  // "a" twice
+  auto roleCodes = libraryCodesAfterEdit("standard.json", R"("lights": ["sphere"], "method": "ltc")",
+                                         R"("lights": ["sphere", "point"], "method": "ltc")");
+  CHECK(roleCodes == std::vector<std::string>{"E-UNKNOWN-NAME"});  // point offers no "ltc"
 }
 
 TEST_CASE("brick rules are checked at load: unknown role, brick of another slot, no bricks, no reason", "[scene]") {

@@ -34,6 +34,9 @@ std::vector<std::string> lightTypeNames(const std::vector<LightType>& types);
 // (docs/models/lights.md "Rectangle and disk lights"); a set that has one needs the table.
 bool isLtcLight(LightType t);
 bool usesLtcTable(const std::vector<LightType>& types);
+// The light method (a model's "lightMethods", docs/models.md) whose lights read the LTC table:
+// sphere and tube lights shaded by linearly transformed cosines.
+inline constexpr std::string_view kLtcLightMethod = "ltc";
 
 // Sorts light types into axis order and drops duplicates: a scene's lights (load/), a
 // permutation's and its key (permute/) all use this one order.

@@ -244,7 +244,8 @@ ProbeScene probeSceneOf(const Permutation& perm, bool illuminanceInput, EmitMode
   scene.lights = perm.lights;
   scene.environment = perm.environment;
   scene.illuminanceInput = illuminanceInput;
-  scene.ltcTableBuffer = mode == EmitMode::Probe && usesLtcTable(perm.lights);
+  scene.ltcTable = perm.readsLtcTable();
+  scene.ltcTableBuffer = mode == EmitMode::Probe && scene.ltcTable;
   bool slice = perm.lights == std::vector<LightType>{LightType::Dir} && perm.environment == EnvironmentMode::None;
   scene.fullFrame = !slice || !perm.material->features.empty();
   return scene;
@@ -298,7 +299,13 @@ void checkPermutation(const ShadingModel& model, const Permutation& perm) {
 }
 
 void writeDefines(GlslWriter& w, const Permutation& perm) {
-  for (LightType t : perm.lights) w.line("#define MB_LIGHT_" + upper(lightTypeName(t)) + " 1");
+  for (LightType t : perm.lights) {
+    w.line("#define MB_LIGHT_" + upper(lightTypeName(t)) + " 1");
+    // The light's method, where the model offers a choice (docs/models.md "Light methods").
+    const std::string method = perm.material->lightMethod(t);
+    if (!method.empty()) w.line("#define MB_LIGHT_" + upper(lightTypeName(t)) + "_" + upper(method) + " 1");
+  }
+  if (perm.readsLtcTable()) w.line("#define MB_LTC_TABLE 1");
   w.line("#define MB_ENV_" + upper(environmentModeName(perm.environment)) + " 1");
   if (isIbl(perm.environment)) w.line("#define MB_ENV_IBL 1");
   for (const auto& f : perm.material->features) w.line("#define MB_FEATURE_" + upper(f) + " 1");

@@ -72,7 +72,7 @@ class FragmentWriter {
 
  private:
   bool ibl() const { return isIbl(perm_.environment); }
-  bool ltc() const { return usesLtcTable(perm_.lights); }
+  bool ltc() const { return perm_.readsLtcTable(); }
   // Shading-side text: written in fp32 GLSL, rewritten at fp16.
   void shading(const std::string& glsl) { w_.line(p_ == ShaderPrecision::Fp16 ? rewriteToFp16(glsl) : glsl); }
   const FragmentTexture* textureOf(const std::string& param) const {

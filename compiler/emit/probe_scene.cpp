@@ -56,7 +56,7 @@ void lightInputs(LightType type, std::vector<ProbeSceneInput>& out) {
 
 bool ProbeScene::has(LightType light) const { return std::find(lights.begin(), lights.end(), light) != lights.end(); }
 
-bool ProbeScene::recordLtcTexel() const { return usesLtcTable(lights) && !ltcTableBuffer; }
+bool ProbeScene::recordLtcTexel() const { return ltcTable && !ltcTableBuffer; }
 
 std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene) {
   std::vector<ProbeSceneInput> out;
@@ -113,7 +113,7 @@ double probeSceneRadianceBound(const ProbeScene& scene) {
 
 std::vector<std::string> probeSceneGlobals(const ProbeScene& scene) {
   std::vector<std::string> g;
-  if (scene.fullFrame || scene.has(LightType::Spot) || scene.has(LightType::Tube) || usesLtcTable(scene.lights)) {
+  if (scene.fullFrame || scene.has(LightType::Spot) || scene.has(LightType::Tube) || scene.ltcTable) {
     // The frame's tangent and the spot and tube axes turn by an input angle, and the reference
     // reads that angle exactly (probe_scene_reference.cpp). GLSL sin and cos are bounded by the
     // Vulkan spec only to 2^-11 absolute ("Precision of GLSL.std.450 Instructions"); SwiftShader

@@ -28,6 +28,9 @@ struct ProbeScene {
   // fragment stage looks up its texture (the validation probe: emit/ltc_table_lookup.hpp);
   // otherwise every lookup returns the record's one texel (an engine kernel's records).
   bool ltcTableBuffer = false;
+  // The lights read the LTC table (Permutation::readsLtcTable: rectangles and disks, and
+  // spheres and tubes by the "ltc" method).
+  bool ltcTable = false;
   bool has(LightType light) const;
   bool recordLtcTexel() const;  // the lights read the LTC table, from the record
 };

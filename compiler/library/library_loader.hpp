@@ -112,6 +112,8 @@ class LibraryLoader {
                                          const ShadingModel& m, const std::string& what);
   std::map<std::string, std::map<std::string, std::string>> readQuality(JsonFields& f, const ShadingModel& m);
   std::vector<BrickRule> readIncompatible(JsonFields& f, const ShadingModel& m);
+  std::vector<LightMethodChoice> readLightMethods(JsonFields& f, const ShadingModel& m);
+  void checkRoleMethods(JsonFields& f, const ShadingModel& m);
   std::vector<std::string> namesFrom(JsonFields& f, const std::string& ptr, const std::vector<std::string>& allowed,
                                      const std::string& what);
   std::vector<ModelFeature> readFeatures(JsonFields& f);

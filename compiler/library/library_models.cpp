@@ -17,7 +17,7 @@ void LibraryLoader::readModel(const std::string& name, const SourceLocation& lis
   if (!doc) return;
   JsonFields f(*doc, sink_);
   if (!f.object("", {"name", "description", "skeleton", "requires", "lights", "environments", "roles", "inputs"},
-                {"features", "parts", "quality", "incompatible"}, "shading model '" + name + "'"))
+                {"features", "parts", "quality", "incompatible", "lightMethods"}, "shading model '" + name + "'"))
     return;
   ShadingModel m;
   m.name = name;
@@ -34,7 +34,9 @@ void LibraryLoader::readModel(const std::string& name, const SourceLocation& lis
   m.lights = parseLightTypes(namesFrom(f, "/lights", allLightTypeNames(), "light type"));
   m.environments = parseEnvironmentModes(namesFrom(f, "/environments", allEnvironmentModeNames(), "environment mode"));
   if (f.find("/features")) m.features = readFeatures(f);
+  if (f.find("/lightMethods")) m.lightMethods = readLightMethods(f, m);
   m.roles = readRoles(f, m);
+  checkRoleMethods(f, m);
   m.inputs = readModelInputs(f, m);
   if (f.find("/quality")) m.quality = readQuality(f, m);
   if (f.find("/incompatible")) m.incompatible = readIncompatible(f, m);
@@ -120,6 +122,98 @@ std::vector<BrickRule> LibraryLoader::readIncompatible(JsonFields& f, const Shad
   return out;
 }
 
+// "lightMethods": [{"light": "sphere", "methods": [...], "default": "...", "quality": {"low":
+// "..."}, "description": "..."}] (docs/models.md "Light methods"): the ways the model may shade
+// a light type, one of which each permutation picks.
+std::vector<LightMethodChoice> LibraryLoader::readLightMethods(JsonFields& f, const ShadingModel& m) {
+  static const std::vector<std::string> levels = [] {
+    std::vector<std::string> v = allQualityNames();
+    std::erase(v, qualityName(Quality::High));
+    return v;
+  }();
+  std::vector<LightMethodChoice> out;
+  if (!f.isArray("/lightMethods")) return out;
+  for (size_t i = 0; i < f.find("/lightMethods")->size(); ++i) {
+    std::string ptr = JsonFields::element("/lightMethods", i);
+    if (!f.object(ptr, {"light", "methods", "default", "description"}, {"quality"}, "light method choice")) continue;
+    LightMethodChoice c;
+    c.description = f.string(ptr + "/description").value_or("");
+    auto light = f.string(ptr + "/light");
+    LightType type = LightType::Dir;
+    bool known = false;
+    if (auto parsed = light ? parseLightType(*light) : std::nullopt) {
+      type = *parsed;
+      known = std::find(m.lights.begin(), m.lights.end(), type) != m.lights.end();
+    }
+    if (light && !known)
+      f.error("E-UNKNOWN-NAME", f.valueAt(ptr + "/light"),
+              "light method choice for '" + *light + "', which model '" + m.name + "' does not shade (it shades " +
+                  quotedList(lightTypeNames(m.lights)) + ")",
+              didYouMean(*light, lightTypeNames(m.lights)));
+    if (known && std::any_of(out.begin(), out.end(), [&](const LightMethodChoice& x) { return x.light == type; })) {
+      f.error("E-DUPLICATE-NAME", f.valueAt(ptr + "/light"), "light '" + *light + "' has two method choices");
+      known = false;
+    }
+    if (auto names = f.strings(ptr + "/methods")) {
+      for (size_t k = 0; k < names->size(); ++k) {
+        std::string at = JsonFields::element(ptr + "/methods", k);
+        if (!isIdentifier((*names)[k]))
+          f.error("E-INVALID-NAME", f.valueAt(at),
+                  "method name '" + (*names)[k] + "' must match [A-Za-z_][A-Za-z0-9_]*");
+        else if (std::find(c.methods.begin(), c.methods.end(), (*names)[k]) != c.methods.end())
+          f.error("E-DUPLICATE-NAME", f.valueAt(at), "method '" + (*names)[k] + "' is listed twice");
+        else
+          c.methods.push_back((*names)[k]);
+      }
+    }
+    auto method = [&](const std::string& at) -> std::optional<std::string> {
+      auto name = f.string(at);
+      if (!name) return std::nullopt;
+      if (std::find(c.methods.begin(), c.methods.end(), *name) == c.methods.end()) {
+        f.error("E-UNKNOWN-NAME", f.valueAt(at),
+                "unknown method '" + *name + "': expected one of " + quotedList(c.methods),
+                didYouMean(*name, c.methods));
+        return std::nullopt;
+      }
+      return name;
+    };
+    auto chosen = method(ptr + "/default");
+    if (f.find(ptr + "/quality") && f.object(ptr + "/quality", {}, levels, "light method quality table"))
+      for (const auto& level : levels)
+        if (f.find(JsonFields::member(ptr + "/quality", level)))
+          if (auto q = method(JsonFields::member(ptr + "/quality", level))) c.quality[level] = *q;
+    if (!known || !chosen) continue;
+    c.light = type;
+    c.defaultMethod = *chosen;
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+// A role's "method" must be offered for every light the role names.
+void LibraryLoader::checkRoleMethods(JsonFields& f, const ShadingModel& m) {
+  if (!f.isArray("/roles")) return;
+  for (size_t i = 0; i < f.find("/roles")->size(); ++i) {
+    std::string ptr = JsonFields::element("/roles", i);
+    if (!f.find(ptr + "/method")) continue;
+    auto method = f.string(ptr + "/method");
+    auto role = f.string(ptr + "/role");
+    if (!method || !role) continue;
+    const ModelRole* r = m.findRole(*role);
+    if (!r || r->method != *method) continue;
+    bool offered = !r->lights.empty();
+    for (LightType t : r->lights) {
+      const LightMethodChoice* c = m.findLightMethod(t);
+      offered = offered && c && std::find(c->methods.begin(), c->methods.end(), *method) != c->methods.end();
+    }
+    if (!offered)
+      f.error(
+          "E-UNKNOWN-NAME", f.valueAt(ptr + "/method"),
+          "role '" + *role + "' has method '" + *method +
+              "', which its lights must all offer (the model's lightMethods; a role with a method names its lights)");
+  }
+}
+
 // A string array whose entries must come from `allowed`, each once.
 std::vector<std::string> LibraryLoader::namesFrom(JsonFields& f, const std::string& ptr,
                                                   const std::vector<std::string>& allowed, const std::string& what) {
@@ -189,13 +283,26 @@ std::vector<ModelRole> LibraryLoader::readRoles(JsonFields& f, const ShadingMode
   for (const auto& s : data_.slots) known.push_back(s.name);
   for (size_t i = 0; i < f.find("/roles")->size(); ++i) {
     std::string ptr = JsonFields::element("/roles", i);
-    if (!f.object(ptr, {"role", "slot", "description"}, {"default", "feature", "lights", "environments"}, "model role"))
+    if (!f.object(ptr, {"role", "slot", "description"},
+                  {"default", "feature", "lights", "environments", "method", "toleranceScale"}, "model role"))
       continue;
     ModelRole r;
     auto role = identifier(f, ptr + "/role", "role name");
     auto slot = f.string(ptr + "/slot");
     r.description = f.string(ptr + "/description").value_or("");
     r.feature = featureRef(f, ptr + "/feature", m);
+    if (f.find(ptr + "/method")) r.method = f.string(ptr + "/method").value_or("");
+    if (f.find(ptr + "/toleranceScale") &&
+        f.object(ptr + "/toleranceScale", {"factor", "reason"}, {}, "role tolerance scale")) {
+      auto factor = f.number(ptr + "/toleranceScale/factor");
+      if (factor && !(*factor >= 1.0 && *factor <= 1e6))
+        f.error("E-OUT-OF-RANGE", f.valueAt(ptr + "/toleranceScale/factor"),
+                "a role's tolerance scale must lie in [1, 1e6]: it says how much more than the light's irradiance "
+                "multiplies the role's result");
+      else if (factor)
+        r.toleranceScale = *factor;
+      r.toleranceReason = f.string(ptr + "/toleranceScale/reason").value_or("");
+    }
     if (f.find(ptr + "/lights"))
       r.lights = parseLightTypes(namesFrom(f, ptr + "/lights", lightTypeNames(m.lights), "light type"));
     if (f.find(ptr + "/environments"))

@@ -84,6 +84,12 @@ const ModelFeature* ShadingModel::findFeature(const std::string& feature) const 
   return findBy(features, feature, &ModelFeature::name);
 }
 
+const LightMethodChoice* ShadingModel::findLightMethod(LightType light) const {
+  auto it = std::find_if(lightMethods.begin(), lightMethods.end(),
+                         [&](const LightMethodChoice& c) { return c.light == light; });
+  return it == lightMethods.end() ? nullptr : &*it;
+}
+
 std::vector<std::string> ShadingModel::coreRoles() const {
   std::vector<std::string> out;
   for (const auto& r : roles)

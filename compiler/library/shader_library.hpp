@@ -148,6 +148,26 @@ struct ModelRole {
   std::string feature;                        // non-empty: only with this feature enabled
   std::vector<LightType> lights;              // non-empty: only with one of these light types
   std::vector<EnvironmentMode> environments;  // non-empty: only in one of these modes
+  // Non-empty: only where one of `lights` is shaded by this method (the model's lightMethods);
+  // every light of the role then offers it.
+  std::string method;
+  // How much more than the light's irradiance (or the environment's radiance) multiplies the
+  // role's result in the composition, >= 1: validation scales the bound brick's absolute
+  // tolerance by it (validate/probe_program.hpp compositionTolerance), for `toleranceReason`.
+  double toleranceScale = 1.0;
+  std::string toleranceReason;
+  std::string description;
+};
+
+// How a model may shade one light type, when it offers more than one way (manifest
+// "lightMethods", docs/models.md "Light methods"): a material picks one (its "lightMethods"),
+// else a quality level's choice, else the default. Roles with a "method" exist only where
+// their light is shaded by that method, so the choice is made before code generation.
+struct LightMethodChoice {
+  LightType light = LightType::Dir;
+  std::vector<std::string> methods;            // as listed
+  std::string defaultMethod;                   // at "high" and wherever `quality` is silent
+  std::map<std::string, std::string> quality;  // level name ("low", "medium") -> method
   std::string description;
 };
 
@@ -183,9 +203,11 @@ struct ShadingModel {
   // absent here is not defined by the model (permute/axes.hpp invalidReason).
   std::map<std::string, std::map<std::string, std::string>> quality;
   std::vector<BrickRule> incompatible;
+  std::vector<LightMethodChoice> lightMethods;  // in manifest order
 
   const ModelRole* findRole(const std::string& role) const;
   const ModelFeature* findFeature(const std::string& feature) const;
+  const LightMethodChoice* findLightMethod(LightType light) const;
   // Roles a material always has (no condition): the old "slots" of the model.
   std::vector<std::string> coreRoles() const;
 };

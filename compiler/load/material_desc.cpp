@@ -14,4 +14,9 @@ const MaterialParam* MaterialDesc::param(const std::string& name) const {
   return nullptr;
 }
 
+std::string MaterialDesc::lightMethod(LightType light) const {
+  auto it = lightMethods.find(lightTypeName(light));
+  return it == lightMethods.end() ? std::string() : it->second;
+}
+
 }  // namespace mb

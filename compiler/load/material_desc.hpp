@@ -74,6 +74,7 @@ struct MaterialSource {
   std::vector<std::pair<SourceName, SourceName>> bricks;  // role -> brick id, as written
   SourceLocation bricksWhere;     // where a role without a brick is reported (default: model.where)
   bool bricksIncomplete = false;  // the form could not read every choice: report no role missing
+  std::vector<std::pair<SourceName, SourceName>> lightMethods;  // light type -> method, as written
   std::vector<SourceParam> params;
   SurfaceCode surface;
   std::vector<Diagnostic> warnings;  // e.g. an unsupported glTF extension, reported by the CLI
@@ -103,11 +104,17 @@ struct MaterialDesc {
   std::vector<std::string> includedFiles;                // MaterialSource::includedFiles
   SourceLocation modelWhere;                             // where the model was named (invalid-axis errors point here)
   std::map<std::string, SourceLocation> brickLocations;  // role -> where it was chosen
+  // Light type name -> method, for every light the model offers methods for (its
+  // lightMethods); defaults filled in, then a quality level's choices (permute/specialize.hpp).
+  std::map<std::string, std::string> lightMethods;
+  std::map<std::string, SourceLocation> lightMethodLocations;  // light -> where the material chose it
   std::vector<Diagnostic> warnings;
   std::optional<EngineData> engine;  // MaterialSource::engine
 
   bool has(const std::string& feature) const;
   const MaterialParam* param(const std::string& name) const;
+  // The method `light` is shaded by, or "" where the model offers no choice for it.
+  std::string lightMethod(LightType light) const;
 };
 
 // Checks a MaterialSource against the library: model exists, features are the model's,

@@ -34,13 +34,15 @@ class JsonMaterialReader {
     src_.file = doc_.file();
     src_.form = "json";
     src_.bricksIncomplete = true;
-    if (!f_.object("", {"name", "model", "bricks"}, {"description", "features", "parameters", "surface"}, "material"))
+    if (!f_.object("", {"name", "model", "bricks"},
+                   {"description", "features", "parameters", "surface", "lightMethods"}, "material"))
       return src_;
     src_.name = name("/name");
     src_.model = name("/model");
     src_.description = f_.string("/description").value_or("");
     readFeatures();
     readBricks();
+    readLightMethods();
     if (f_.find("/surface")) readSurface();
     if (f_.isObject("/parameters"))
       for (const auto& key : keysInFileOrder("/parameters")) readParam(key);
@@ -87,6 +89,16 @@ class JsonMaterialReader {
         continue;
       }
       src_.bricks.push_back({SourceName{role, f_.keyAt(ptr)}, id});
+    }
+  }
+
+  // "lightMethods": {"sphere": "representative_point"} (docs/formats.md "Material JSON").
+  void readLightMethods() {
+    if (!f_.isObject("/lightMethods")) return;
+    for (const auto& light : keysInFileOrder("/lightMethods")) {
+      std::string ptr = JsonFields::member("/lightMethods", light);
+      SourceName method = name(ptr);
+      if (!method.where.file.empty()) src_.lightMethods.push_back({SourceName{light, f_.keyAt(ptr)}, method});
     }
   }
 

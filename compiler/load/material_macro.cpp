@@ -25,8 +25,9 @@ using Kind = MacroToken::Kind;
 constexpr size_t kMaxIncludeDepth = 16;
 
 const std::vector<std::string>& directiveNames() {
-  static const std::vector<std::string> names = {"MATERIAL",     "MODEL",        "DESCRIPTION", "FEATURE_<feature>",
-                                                 "BRICK_<role>", "PARAM_<name>", "CONST_<name>"};
+  static const std::vector<std::string> names = {"MATERIAL",          "MODEL",        "DESCRIPTION",
+                                                 "FEATURE_<feature>", "BRICK_<role>", "LIGHT_METHOD_<light>",
+                                                 "PARAM_<name>",      "CONST_<name>"};
   return names;
 }
 
@@ -136,7 +137,7 @@ class MacroReader {
     bool directive = tokens.front().kind == Kind::Identifier &&
                      (word == "define" || word == "include" || word == "MATERIAL" || word == "MODEL" ||
                       word == "DESCRIPTION" || startsWith(word, "FEATURE_") || startsWith(word, "BRICK_") ||
-                      startsWith(word, "PARAM_") || startsWith(word, "CONST_"));
+                      startsWith(word, "LIGHT_METHOD_") || startsWith(word, "PARAM_") || startsWith(word, "CONST_"));
     if (!directive) return false;
     error(SourceLocation(file, number, static_cast<int>(first + 1)), "E-MACRO-SYNTAX",
           "'" + word + "' without '#': expected '#" +
@@ -191,7 +192,7 @@ class MacroReader {
     SourceLocation where = line.where(name.column);
     if (n == "MATERIAL" || n == "MODEL") return single(line, n, where, n == "MATERIAL" ? src_.name : src_.model);
     if (n == "DESCRIPTION") return description(line, where);
-    for (const char* prefix : {"FEATURE_", "BRICK_", "PARAM_", "CONST_"}) {
+    for (const char* prefix : {"FEATURE_", "BRICK_", "LIGHT_METHOD_", "PARAM_", "CONST_"}) {
       std::string p = prefix;
       if (!startsWith(n, p)) continue;
       SourceName rest{n.substr(p.size()), line.where(name.column + static_cast<int>(p.size()))};
@@ -201,6 +202,7 @@ class MacroReader {
       }
       if (p == "FEATURE_") return feature(line, rest, where);
       if (p == "BRICK_") return brick(line, rest, where);
+      if (p == "LIGHT_METHOD_") return lightMethod(line, rest, where);
       return param(line, rest, p == "CONST_", where);
     }
     std::vector<std::string> candidates = {"MATERIAL", "MODEL", "DESCRIPTION"};
@@ -261,6 +263,19 @@ class MacroReader {
       return;
     }
     if (expectEnd(line, "the brick id")) src_.bricks.push_back({role, SourceName{id.text, line.where(id.column)}});
+  }
+
+  // LIGHT_METHOD_<light> <method>: the JSON form's "lightMethods" member.
+  void lightMethod(Line& line, const SourceName& light, const SourceLocation& where) {
+    if (!firstDefinition("LIGHT_METHOD_" + light.value, "the method of light '" + clipped(light.value) + "'", where))
+      return;
+    const MacroToken& method = line.take();
+    if (method.kind != Kind::Identifier) {
+      unexpected(line, method, "a light method name");
+      return;
+    }
+    if (expectEnd(line, "the method name"))
+      src_.lightMethods.push_back({light, SourceName{method.text, line.where(method.column)}});
   }
 
   // PARAM_<name> <value> [RANGE(lo, hi)], CONST_<name> <value> [RANGE(lo, hi)].

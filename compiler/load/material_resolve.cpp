@@ -80,6 +80,7 @@ class Resolver {
     if (model_) resolveFeatures();
     resolveSurface();
     resolveBricks();
+    if (model_) resolveLightMethods();
     if (model_) resolveParams();
     if (model_) checkSurfaceNames();
     return desc_;
@@ -215,6 +216,40 @@ class Resolver {
             "bricks is missing role '" + r->role + "' (slot '" + r->slot + "') of model '" + model_->name +
                 "': choose one of " + quotedList(lib_.bricksOfSlot(r->slot)));
     }
+  }
+
+  // Each light the model offers methods for gets the material's choice, else the default
+  // (a quality level may replace a default, never a choice: permute/specialize.cpp).
+  void resolveLightMethods() {
+    std::vector<std::string> lights;
+    for (const auto& c : model_->lightMethods) lights.push_back(lightTypeName(c.light));
+    std::map<std::string, SourceLocation> seen;
+    for (const auto& [light, method] : src_.lightMethods) {
+      if (!seen.emplace(light.value, light.where).second) {
+        error("E-DUPLICATE-NAME", light.where,
+              "light '" + clipped(light.value) + "' is given a method twice (first at " + at(seen[light.value]) + ")");
+        continue;
+      }
+      auto type = parseLightType(light.value);
+      const LightMethodChoice* choice = type ? model_->findLightMethod(*type) : nullptr;
+      if (!choice) {
+        error("E-UNKNOWN-NAME", light.where,
+              "model '" + model_->name + "' offers no methods for light '" + clipped(light.value) + "': it does for " +
+                  quotedList(lights),
+              suggest(light.value, lights));
+        continue;
+      }
+      if (!contains(choice->methods, method.value)) {
+        error("E-UNKNOWN-NAME", method.where,
+              "unknown method '" + clipped(method.value) + "' for " + light.value + " lights: expected one of " +
+                  quotedList(choice->methods),
+              suggest(method.value, choice->methods));
+        continue;
+      }
+      desc_.lightMethods[light.value] = method.value;
+      desc_.lightMethodLocations[light.value] = method.where;
+    }
+    for (const auto& c : model_->lightMethods) desc_.lightMethods.emplace(lightTypeName(c.light), c.defaultMethod);
   }
 
   // Without a known model only the brick ids can be checked (and their slot, when the key

@@ -63,8 +63,10 @@ std::optional<std::string> invalidReason(const ShadingModel& model, const Permut
 
 bool roleActive(const ModelRole& role, const Permutation& perm) {
   if (!role.feature.empty() && !perm.material->has(role.feature)) return false;
-  if (!role.lights.empty() &&
-      std::none_of(role.lights.begin(), role.lights.end(), [&](LightType t) { return perm.hasLight(t); }))
+  // A role with a method exists where one of its lights is shaded and shaded by that method.
+  if (!role.lights.empty() && std::none_of(role.lights.begin(), role.lights.end(), [&](LightType t) {
+        return perm.hasLight(t) && (role.method.empty() || perm.material->lightMethod(t) == role.method);
+      }))
     return false;
   if (!role.environments.empty() && !contains(role.environments, perm.environment)) return false;
   return true;

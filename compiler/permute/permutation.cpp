@@ -14,6 +14,11 @@ bool Permutation::hasLight(LightType type) const {
   return std::find(lights.begin(), lights.end(), type) != lights.end();
 }
 
+bool Permutation::readsLtcTable() const {
+  return std::any_of(lights.begin(), lights.end(),
+                     [&](LightType t) { return isLtcLight(t) || material->lightMethod(t) == kLtcLightMethod; });
+}
+
 std::string Permutation::key() const {
   std::string k = material->name + "." + material->model + "." + lightsKey() + "." + environmentModeName(environment) +
                   "." + precisionName(precision);

@@ -31,6 +31,9 @@ struct Permutation {
   std::string key() const;
   std::string lightsKey() const;
   bool hasLight(LightType type) const;
+  // A light of the permutation reads the LTC table: a rectangle or disk, or a light the
+  // material's (quality-specialized) light methods shade by kLtcLightMethod.
+  bool readsLtcTable() const;
 };
 
 // The permutations a list of materials needs by default: a directional light, no

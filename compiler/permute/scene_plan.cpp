@@ -81,6 +81,11 @@ void noteQuality(MaterialPlanNote& note, const MaterialDesc& base, const Materia
     if (was != base.bricks.end() && was->second != brick)
       note.qualityBricks.push_back({qualityName(level) + ":" + role, brick});
   }
+  for (const auto& [light, method] : q.lightMethods) {
+    auto was = base.lightMethods.find(light);
+    if (was != base.lightMethods.end() && was->second != method)
+      note.qualityBricks.push_back({qualityName(level) + ":" + light + " lights", method});
+  }
 }
 
 void sortRequired(ScenePlan& plan) {

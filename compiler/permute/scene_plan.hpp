@@ -18,7 +18,8 @@ struct MaterialPlanNote {
   std::vector<std::string> folded;  // features folded away
   std::vector<std::string> absent;  // model features the material never enabled (nothing to fold)
   std::vector<std::pair<std::string, std::string>> keptReasons;  // feature -> why it stays
-  // "<level>:<role>" -> the brick that quality level bound instead of the default
+  // "<level>:<role>" -> the brick that quality level bound instead of the default, and
+  // "<level>:<light> lights" -> the light method it chose instead of the default
   std::vector<std::pair<std::string, std::string>> qualityBricks;
 };
 

@@ -69,6 +69,13 @@ MaterialDesc applyQuality(const MaterialDesc& material, Quality quality, const S
     if (bound == out.bricks.end() || material.brickLocations.count(role)) continue;
     bound->second = brick;
   }
+  // Likewise a light method the material did not choose takes the level's (docs/models.md
+  // "Light methods").
+  for (const auto& c : model.lightMethods) {
+    const std::string light = lightTypeName(c.light);
+    auto pick = c.quality.find(qualityName(quality));
+    if (pick != c.quality.end() && !material.lightMethodLocations.count(light)) out.lightMethods[light] = pick->second;
+  }
   return out;
 }
 

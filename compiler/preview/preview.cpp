@@ -126,8 +126,10 @@ std::vector<std::map<std::string, std::vector<double>>> sphereModelInputs(harnes
 harness::GraphicsJob sphereJob(const PreviewOptions& o, const MaterialDesc& m, const std::vector<SphereParams>& spheres,
                                const std::vector<PreviewLight>& lights, const PreviewEnvironment& env,
                                EnvironmentMode environmentMode) {
-  const bool ltcTable =
-      std::any_of(lights.begin(), lights.end(), [](const PreviewLight& l) { return isLtcLight(l.type); });
+  // As Permutation::readsLtcTable: rectangles, disks and lights shaded by the LTC method.
+  const bool ltcTable = std::any_of(lights.begin(), lights.end(), [&](const PreviewLight& l) {
+    return isLtcLight(l.type) || m.lightMethod(l.type) == kLtcLightMethod;
+  });
   harness::GraphicsJob job;
   job.width = o.size * static_cast<uint32_t>(spheres.size());
   job.height = o.size;
@@ -409,7 +411,7 @@ PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& li
   r.referenceMs = msSince(t0);
 
   r.radianceBound = sceneRadianceBound(lights, perm.environment == EnvironmentMode::None ? nullptr : &env.maps);
-  r.tolerance = compositionTolerance(lib, fragment.bricks, r.radianceBound);
+  r.tolerance = compositionTolerance(lib, perm, fragment.bricks, r.radianceBound);
   t0 = Clock::now();
   compare(scene, a, r);
   r.compareMs = msSince(t0);

@@ -254,19 +254,28 @@ std::function<void(const double*, double*)> materialReferenceEval(const Permutat
   };
 }
 
-Tolerance compositionTolerance(const ShaderLibrary& lib, const std::vector<std::string>& bricks, double radianceBound) {
+Tolerance compositionTolerance(const ShaderLibrary& lib, const Permutation& perm,
+                               const std::vector<std::string>& bricks, double radianceBound) {
   // First-order propagation: relative errors of the bricks multiplied together add up, and
   // a sum of lobes is no worse than its worst lobe; 1e-5 covers the composition's own fp32
   // arithmetic (a few dozen operations at ~6e-8 each).
+  std::map<std::string, double> scales;
+  const ShadingModel* model = lib.findModel(perm.material->model);
+  for (const auto& [role, brick] : boundRoles(lib, perm)) {
+    const ModelRole* r = model ? model->findRole(role) : nullptr;
+    if (r && r->toleranceScale > 1.0) scales[brick] = std::max(scales[brick], r->toleranceScale);
+  }
   Tolerance t;
   t.rel = 1e-5;
   t.abs = 0.0;
   for (const auto& id : bricks) {
     const Brick* b = lib.findBrick(id);
+    auto scale = scales.find(id);
     t.rel += b->tolerance.rel;
-    t.abs += b->tolerance.abs;
+    t.abs += b->tolerance.abs * (scale == scales.end() ? 1.0 : scale->second);
   }
   t.reason = "sum of the bound bricks' tolerances plus 1e-5 for the composition";
+  if (!scales.empty()) t.reason += ", the absolute ones times their roles' toleranceScale";
   // The result is linear in the lights' illuminance and the environment's radiance, and so is
   // its absolute error.
   t.abs *= radianceBound;
@@ -285,7 +294,7 @@ ProbeProgram describePermutationProbe(const ShaderLibrary& lib, const Permutatio
   p.precision = precisionOf(perm);
   p.shader = emitPermutation(lib, perm, illuminanceInput);
 
-  p.tolerance = compositionTolerance(lib, p.shader.bricks, probeSceneRadianceBound(probeSceneOf(perm, false)));
+  p.tolerance = compositionTolerance(lib, perm, p.shader.bricks, probeSceneRadianceBound(probeSceneOf(perm, false)));
   if (illuminanceInput) {
     p.tolerance.abs *= kIlluminanceRange.hi;
     p.tolerance.reason += "; abs scaled by the largest illuminance";

@@ -69,8 +69,10 @@ ProbeProgram describePermutationProbe(const ShaderLibrary& lib, const Permutatio
 // A permutation's fp32 tolerance: the sum of its bricks' tolerances plus 1e-5 relative for the
 // composition, the absolute part scaled by `radianceBound` (the scene's largest illuminance or
 // radiance input: a unit-illuminance composition's absolute error scales with it). validate
-// uses the probe scene's bound, preview its own scene's.
-Tolerance compositionTolerance(const ShaderLibrary& lib, const std::vector<std::string>& bricks, double radianceBound);
+// uses the probe scene's bound, preview its own scene's. A brick bound to a role with a
+// toleranceScale (ModelRole) has its absolute part scaled by that factor as well.
+Tolerance compositionTolerance(const ShaderLibrary& lib, const Permutation& perm,
+                               const std::vector<std::string>& bricks, double radianceBound);
 // Illuminance (lux-like units) from starlight to well above direct sunlight.
 inline constexpr Range kIlluminanceRange{1e-6, 1e6};
 // At fp16: pre-exposed illuminance, from the smallest normal half (2^-14) to 2^10.

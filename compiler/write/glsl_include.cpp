@@ -67,7 +67,7 @@ std::string engineInclude(const PackagedPermutation& p) {
         << (perm.precision == Precision::Fp16 ? ", in half types (f16vec3, float16_t)" : "") << ":\n"
         << "//   vec3 mb_fetch_prefiltered(vec3 r, float lod);   prefiltered radiance along r at mip lod\n"
         << "//   vec3 mb_fetch_dfg(float NoV, float perceptualRoughness);   the DFG LUT texel\n";
-  if (usesLtcTable(perm.lights))
+  if (perm.readsLtcTable())
     out << "// The engine defines the LTC table's hooks (declared in shaderlib/common/lights.glsl; the table and\n"
         << "// how the fragment stage reads it: docs/fragment-stage.md \"LTC table\")"
         << (perm.precision == Precision::Fp16 ? ", in half types (f16vec4, f16vec2)" : "") << ":\n"

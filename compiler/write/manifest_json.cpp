@@ -65,6 +65,7 @@ nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutatio
                        {"environment", environmentModeName(perm.environment)},
                        {"precision", precisionName(perm.precision)},
                        {"quality", qualityName(perm.quality)},
+                       {"light_methods", nlohmann::json::object()},
                        {"bricks", nlohmann::json::object()},
                        {"bricks_included", b.shader.bricks},
                        {"parameters", nlohmann::json::array()},
@@ -79,6 +80,8 @@ nlohmann::json permutationJson(const PackageInputs& in, const PackagedPermutatio
     entry["files"] = p.files;
     entry["reflection"] = b.artifacts.reflection.is_null() ? nlohmann::json::object() : b.artifacts.reflection;
   }
+  for (LightType t : perm.lights)
+    if (!m.lightMethod(t).empty()) entry["light_methods"][lightTypeName(t)] = m.lightMethod(t);
   for (const auto& [role, id] : boundRoles(*in.lib, perm)) entry["bricks"][role] = id;
   for (const auto& prm : m.params) entry["parameters"].push_back(paramJson(prm));
   if (m.engine) entry["engine"] = engineJson(*m.engine);

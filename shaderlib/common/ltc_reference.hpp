@@ -405,6 +405,25 @@ inline double lobeOverPolygon(const Vec3& n, const Vec3& v, double alpha, const 
   return lobeIntegralAdaptive(local, fr.toLocal(v), alpha, 1e-7 * kPi * clampedCosinePolygon(local));
 }
 
+// The lobe's integral (F = 1) over a rectangle, or a disk as its 256-gon, about n with view v,
+// to 1e-7 of the light's irradiance Int (n.l)+ dw, which it returns beside it (both 0 for a
+// light below the horizon): what the model's planar lights are measured against.
+struct PlanarTruth {
+  double lobe = 0, irradiance = 0;
+};
+inline PlanarTruth planarLobeTruth(const Vec3& n, const Vec3& v, double alpha, const PlanarLight& light, bool disk) {
+  const ViewFrame fr = viewFrame(n, v);
+  std::vector<Vec3> local;
+  for (const Vec3& p : disk ? diskPolygon(light.c, light.ex, light.ey, 256) : rectPolygon(light.c, light.ex, light.ey))
+    local.push_back(fr.toLocal(p));
+  local = clipToHalfSpace(local, Vec3{0, 0, 1});
+  if (local.size() < 3) return {};
+  PlanarTruth t;
+  t.irradiance = kPi * clampedCosinePolygon(local);
+  t.lobe = lobeIntegralAdaptive(local, fr.toLocal(v), alpha, 1e-7 * t.irradiance);
+  return t;
+}
+
 // The residual's integrand in the LTC's space at the unit w_o (M = inverse of minv, detM its
 // determinant): the lobe at w = M w_o / |M w_o| times the Jacobian, less norm D_o(w_o).
 inline double warpedResidual(const Mat3& m, double detM, double norm, const Vec3& v, double alpha, const Vec3& o) {

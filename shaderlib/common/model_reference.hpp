@@ -139,8 +139,12 @@ inline constexpr std::string_view kRoles[] = {"anisotropy_alpha",
                                               "specular_v_aniso",
                                               "sphere_energy_normalization",
                                               "sphere_horizon_wrap",
+                                              "sphere_light_ltc",
+                                              "sphere_light_ltc_cv",
                                               "sphere_light_point",
                                               "tube_energy_normalization",
+                                              "tube_light_ltc",
+                                              "tube_light_ltc_cv",
                                               "tube_light_point"};
 inline constexpr std::string_view kInputs[] = {
     "ambientOcclusion", "anisotropy", "baseColor", "clearCoat",  "clearCoatNormal", "clearCoatRoughness", "emissive",

@@ -72,8 +72,8 @@ vec3 mb_clearcoat_direct(ClearCoatPixel cc, ShadingFrame f, vec3 l, out float at
     return vec3(lobe * Fc);
 }
 
-#if defined(MB_LIGHT_RECT) || defined(MB_LIGHT_DISK)
-// The coat under a rectangle or disk light, per unit luminance (standard_lights.glsl): its lobe's
+#ifdef MB_LTC_TABLE
+// The coat under a light shaded by linearly transformed cosines, per unit luminance (standard_lights.glsl): its lobe's
 // integral `coatIntegral` (about its normal, at its roughness; the table's entry there gives
 // `magnitude` = (norm, fresnel)) times Schlick's Fresnel split over the table (F0 = 0.04,
 // F90 = 1) and the strength; attenuation = 1 - strength Fc(nc.v), as for image-based light.

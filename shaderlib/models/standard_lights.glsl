@@ -88,7 +88,7 @@ bool mb_facing(Geometry gD) {
 // An earlier form took D at the n.h of the sphere_max_noh bricks and rebuilt a direction from
 // it; one fp32 n.h carries an angle error ~6e-7 / sin(theta_h), which GGX D amplifies by up to
 // 2 / alpha (13% at roughness 0.04, docs/models/lights.md), so the direction is passed instead.
-vec3 mb_shade_sphere(ShadingPixel px, ShadingFrame f, SphereLight light) {
+vec3 mb_shade_sphere_representative(ShadingPixel px, ShadingFrame f, SphereLight light) {
     MbSphereView s = mb_sphere_view(f, light.toCenter, light.radius, light.intensity, light.falloffRadius);
     vec3 lD = MB_SLOT_sphere_light_point(s.g, light.toCenter, light.toCenter, light.radius);
     // The shading point on the sphere's centre has no direction (the brick's normalize(0)):
@@ -124,7 +124,7 @@ vec3 mb_tube_equivalent_point(ShadingFrame f, vec3 L0, vec3 L1) {
 
 // Seed 002 "Tube Lights": D at the tube_light_point brick's representative direction times
 // the tube's energy normalization; diffuse, V, F and the cosine from the equivalent sphere.
-vec3 mb_shade_tube(ShadingPixel px, ShadingFrame f, TubeLight light) {
+vec3 mb_shade_tube_representative(ShadingPixel px, ShadingFrame f, TubeLight light) {
     vec3 P = mb_tube_equivalent_point(f, light.toStart, light.toEnd);
     MbSphereView s = mb_sphere_view(f, P, light.radius, light.intensity, light.falloffRadius);
     vec3 lD = MB_SLOT_tube_light_point(s.g, light.toStart, light.toEnd, light.radius);
@@ -139,8 +139,9 @@ vec3 mb_shade_tube(ShadingPixel px, ShadingFrame f, TubeLight light) {
 }
 #endif
 
-#if defined(MB_LIGHT_RECT) || defined(MB_LIGHT_DISK)
-// Rectangle and disk lights by linearly transformed cosines (Heitz, Dupuy, Hill & Neubelt 2016;
+#ifdef MB_LTC_TABLE
+// Rectangle and disk lights, and sphere and tube lights by the "ltc" method, by linearly
+// transformed cosines (Heitz, Dupuy, Hill & Neubelt 2016;
 // docs/models/lights.md "Rectangle and disk lights"). A one-sided Lambertian emitter of
 // luminance L sends the radiance L Int f (n.l)+ dw over its solid angle. The specular lobe's
 // integral Int D V (n.l) dw (F = 1) is the bound rect_light_ltc_cv / disk_light_ltc_cv brick's:
@@ -191,11 +192,19 @@ vec3 mb_ltc_view(vec3 n, vec3 v) {
     return along * sqrt(1.0 - MB_LTC_MIN_N_DOT_V * MB_LTC_MIN_N_DOT_V) + n * MB_LTC_MIN_N_DOT_V;
 }
 
-// The integrals mb_standard_ltc_light takes, for a rectangle (isDisk false) or a disk: the form
-// factor by the polygon brick with M = I, then the base's and the coat's lobes by the
-// control-variate brick, one call site in a loop (each inlined copy of the integration costs
-// lavapipe's JIT time, common/ltc.glsl).
-vec3 mb_ltc_area_light(ShadingPixel px, ShadingFrame f, bool isDisk, vec3 toCenter, vec3 halfX, vec3 halfY,
+// The shapes mb_ltc_area_light integrates.
+const int MB_LTC_RECT = 0;
+const int MB_LTC_DISK = 1;
+const int MB_LTC_SPHERE = 2;
+const int MB_LTC_TUBE = 3;
+
+// The integrals mb_standard_ltc_light takes, for one light: the form factor by the shape's
+// polygon brick with M = I, then the base's and the coat's lobes by its control-variate brick,
+// one call site in a loop (each inlined copy of the integration costs lavapipe's JIT time,
+// common/ltc.glsl). `toCenter` gives the direction of the diffuse brick's light (a tube's
+// equivalent point); a rectangle or disk is (toCenter, a = halfX, b = halfY), a sphere
+// (toCenter, radius), a tube (a = L0, b = L1, radius).
+vec3 mb_ltc_area_light(ShadingPixel px, ShadingFrame f, int shape, vec3 toCenter, vec3 a, vec3 b, float radius,
                        vec3 luminance) {
     float d = length(toCenter);
     // The centre's direction; the normal where the shading point is the centre, which has none.
@@ -220,10 +229,16 @@ vec3 mb_ltc_area_light(ShadingPixel px, ShadingFrame f, bool isDisk, vec3 toCent
 #endif
     float formFactor = 0.0;
 #ifdef MB_LIGHT_RECT
-    if (!isDisk) formFactor = MB_SLOT_rect_light_ltc(g, 1.0, 0.0, 0.0, 1.0, toCenter, halfX, halfY);
+    if (shape == MB_LTC_RECT) formFactor = MB_SLOT_rect_light_ltc(g, 1.0, 0.0, 0.0, 1.0, toCenter, a, b);
 #endif
 #ifdef MB_LIGHT_DISK
-    if (isDisk) formFactor = MB_SLOT_disk_light_ltc(g, 1.0, 0.0, 0.0, 1.0, toCenter, halfX, halfY);
+    if (shape == MB_LTC_DISK) formFactor = MB_SLOT_disk_light_ltc(g, 1.0, 0.0, 0.0, 1.0, toCenter, a, b);
+#endif
+#ifdef MB_LIGHT_SPHERE_LTC
+    if (shape == MB_LTC_SPHERE) formFactor = MB_SLOT_sphere_light_ltc(g, 1.0, 0.0, 0.0, 1.0, toCenter, radius);
+#endif
+#ifdef MB_LIGHT_TUBE_LTC
+    if (shape == MB_LTC_TUBE) formFactor = MB_SLOT_tube_light_ltc(g, 1.0, 0.0, 0.0, 1.0, a, b, radius);
 #endif
     float lobe[2] = float[2](0.0, 0.0);
     for (int k = 0; k < count; ++k) {
@@ -234,10 +249,19 @@ vec3 mb_ltc_area_light(ShadingPixel px, ShadingFrame f, bool isDisk, vec3 toCent
         float normK = k == 1 ? magnitudeC.x : magnitude.x;
         float value = 0.0;
 #ifdef MB_LIGHT_RECT
-        if (!isDisk) value = MB_SLOT_rect_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, halfX, halfY);
+        if (shape == MB_LTC_RECT)
+            value = MB_SLOT_rect_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, a, b);
 #endif
 #ifdef MB_LIGHT_DISK
-        if (isDisk) value = MB_SLOT_disk_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, halfX, halfY);
+        if (shape == MB_LTC_DISK)
+            value = MB_SLOT_disk_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, a, b);
+#endif
+#ifdef MB_LIGHT_SPHERE_LTC
+        if (shape == MB_LTC_SPHERE)
+            value = MB_SLOT_sphere_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, radius);
+#endif
+#ifdef MB_LIGHT_TUBE_LTC
+        if (shape == MB_LTC_TUBE) value = MB_SLOT_tube_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, a, b, radius);
 #endif
         lobe[k] = value;
     }
@@ -245,14 +269,87 @@ vec3 mb_ltc_area_light(ShadingPixel px, ShadingFrame f, bool isDisk, vec3 toCent
 }
 #endif
 
+#if defined(MB_LIGHT_SPHERE_LTC) || defined(MB_LIGHT_TUBE_LTC)
+// Sphere and tube lights by the "ltc" method (docs/models/lights.md "Sphere and tube lights by
+// LTC"). They are given by intensity: a Lambertian sphere of radius R and luminance L has
+// I = pi R^2 L, and a capsule of radius R and length len is given the intensity it has seen
+// broadside, I = (pi R^2 + 2 R len) L. The light_falloff brick's window and bias apply as they do
+// to the representative point: the luminance is I falloff(d) d^2 / A, so that a small light
+// above the horizon has the irradiance I falloff(d), whichever the method. A light whose
+// equivalent angular radius sqrt(A / pi) / d is below MB_LTC_BLEND_START is shaded by the
+// representative point, above twice that by LTC, linearly mixed between: on a small light the
+// LTC integrals' fp32 error, a few ulps of the polygon's edge sum whatever its size, is divided
+// by the light's solid angle (validation's tolerance scales the bricks' by 1 / (pi 0.05^2),
+// the role's "toleranceScale"). The handover's cost in accuracy: docs/models/lights.md.
+const float MB_LTC_BLEND_START = 0.05;
+float mb_ltc_blend(float equivalentSinAlpha) {
+    return clamp(equivalentSinAlpha / MB_LTC_BLEND_START - 1.0, 0.0, 1.0);
+}
+#endif
+
 #ifdef MB_LIGHT_RECT
 vec3 mb_shade_rect(ShadingPixel px, ShadingFrame f, RectLight light) {
-    return mb_ltc_area_light(px, f, false, light.toCenter, light.halfX, light.halfY, light.luminance);
+    return mb_ltc_area_light(px, f, MB_LTC_RECT, light.toCenter, light.halfX, light.halfY, 0.0, light.luminance);
 }
 #endif
 
 #ifdef MB_LIGHT_DISK
 vec3 mb_shade_disk(ShadingPixel px, ShadingFrame f, DiskLight light) {
-    return mb_ltc_area_light(px, f, true, light.toCenter, light.halfX, light.halfY, light.luminance);
+    return mb_ltc_area_light(px, f, MB_LTC_DISK, light.toCenter, light.halfX, light.halfY, 0.0, light.luminance);
+}
+#endif
+
+#ifdef MB_LIGHT_SPHERE
+vec3 mb_shade_sphere(ShadingPixel px, ShadingFrame f, SphereLight light) {
+#ifdef MB_LIGHT_SPHERE_LTC
+    // As the representative point, nearer than radius / 0.95 the light is shaded as at that
+    // bound (the sphere bricks clamp sin alpha there too).
+    float d = length(light.toCenter);
+    float dLight = max(d, light.radius / MB_AREA_LIGHT_MAX_SIN_ALPHA);
+    float w = dLight > 0.0 ? mb_ltc_blend(light.radius / dLight) : 0.0;
+    vec3 color = vec3(0.0);
+    if (w < 1.0) color = mb_shade_sphere_representative(px, f, light) * (1.0 - w);
+    if (w > 0.0) {
+        vec3 l = d > 0.0 ? light.toCenter / d : f.n;
+        float area = MB_PI * light.radius * light.radius;
+        vec3 luminance = light.intensity * (MB_SLOT_light_falloff(l * dLight, light.falloffRadius) * (dLight * dLight / area));
+        color += mb_ltc_area_light(px, f, MB_LTC_SPHERE, light.toCenter, vec3(0.0), vec3(0.0), light.radius, luminance) * w;
+    }
+    return color;
+#else
+    return mb_shade_sphere_representative(px, f, light);
+#endif
+}
+#endif
+
+#ifdef MB_LIGHT_TUBE
+vec3 mb_shade_tube(ShadingPixel px, ShadingFrame f, TubeLight light) {
+#ifdef MB_LIGHT_TUBE_LTC
+    // The capsule's area seen broadside and its distance: the equivalent point's, at least
+    // sqrt(A / pi) / 0.95 (as the sphere's). The capsule must also stay clear of the shading
+    // point: within two radii of the segment (inside the light, or a segment through the point)
+    // the representative point takes over, fully at one radius.
+    vec3 P = mb_tube_equivalent_point(f, light.toStart, light.toEnd);
+    float dEq = length(P);
+    vec3 axis = light.toEnd - light.toStart;
+    float len = length(axis);
+    float area = MB_PI * light.radius * light.radius + 2.0 * light.radius * len;
+    float size = sqrt(area / MB_PI);
+    float dLight = max(dEq, size / MB_AREA_LIGHT_MAX_SIN_ALPHA);
+    float t = len > 0.0 ? clamp(-dot(light.toStart, axis) / (len * len), 0.0, 1.0) : 0.0;
+    float h = length(light.toStart + axis * t);
+    float clear = light.radius > 0.0 ? clamp(h / light.radius - 1.0, 0.0, 1.0) : 0.0;
+    float w = dLight > 0.0 ? mb_ltc_blend(size / dLight) * clear : 0.0;
+    vec3 color = vec3(0.0);
+    if (w < 1.0) color = mb_shade_tube_representative(px, f, light) * (1.0 - w);
+    if (w > 0.0) {
+        vec3 l = dEq > 0.0 ? P / dEq : f.n;
+        vec3 luminance = light.intensity * (MB_SLOT_light_falloff(l * dLight, light.falloffRadius) * (dLight * dLight / area));
+        color += mb_ltc_area_light(px, f, MB_LTC_TUBE, P, light.toStart, light.toEnd, light.radius, luminance) * w;
+    }
+    return color;
+#else
+    return mb_shade_tube_representative(px, f, light);
+#endif
 }
 #endif

@@ -3,6 +3,7 @@
 // from the equations, independently of standard_lights.glsl. Conventions: docs/models/lights.md.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "common/lights_reference.hpp"
 #include "models/standard_reference.hpp"
@@ -83,9 +84,11 @@ Vec3 shadeSpot(const ModelEvalInput& in, const Pixel& px, const SpotLight& light
   return punctual(in, px, l, light.intensity * (falloff * spotCone(light, l)));
 }
 
+namespace {
+
 // `light` (the BRDF of one direction) is hidden by a parameter of that name: the area lights
 // call theirs `sphere` and `tube`.
-Vec3 shadeSphere(const ModelEvalInput& in, const Pixel& px, const SphereLight& sphere) {
+Vec3 shadeSphereRepresentative(const ModelEvalInput& in, const Pixel& px, const SphereLight& sphere) {
   const Vec3 n = in.frame.n, v = in.frame.v;
   SphereView s = sphereView(in, sphere.toCenter, sphere.radius, sphere.intensity, sphere.falloffRadius);
   // Karis's representative point, from the sphere_light_point role (a tube_light_point brick
@@ -99,7 +102,7 @@ Vec3 shadeSphere(const ModelEvalInput& in, const Pixel& px, const SphereLight& s
   return light(in, px, s.l, lD, energy, s.cosine, s.cosine) * s.illuminance;
 }
 
-Vec3 shadeTube(const ModelEvalInput& in, const Pixel& px, const TubeLight& tube) {
+Vec3 shadeTubeRepresentative(const ModelEvalInput& in, const Pixel& px, const TubeLight& tube) {
   const Vec3 n = in.frame.n, v = in.frame.v;
   const Vec3 L0 = tube.toStart, L1 = tube.toEnd;
   Vec3 P = tubeEquivalentPoint(n, L0, L1);
@@ -114,8 +117,6 @@ Vec3 shadeTube(const ModelEvalInput& in, const Pixel& px, const TubeLight& tube)
           : 0.0;
   return light(in, px, s.l, lD, energy, s.cosine, s.cosine) * s.illuminance;
 }
-
-namespace {
 
 // mb_ltc_view: v lifted about n to n.v = kLtcMinNoV where it is nearer the horizon or below it.
 Vec3 ltcView(const Vec3& n, const Vec3& v) {
@@ -183,6 +184,79 @@ Vec3 shadePlanar(const ModelEvalInput& in, const Pixel& px, const Light& light, 
         return in.scalar(lobeRole, Args().geometry(n, view, n) << alpha << t.norm << t.m00 << t.m02 << t.m20 << t.m22
                                                                << light.toCenter << light.halfX << light.halfY);
       });
+}
+
+namespace {
+
+// Sphere and tube lights by the "ltc" method (standard_lights.glsl, mb_shade_sphere and
+// mb_shade_tube): the luminance I falloff(d) d^2 / A of a light of area A (pi R^2, and
+// pi R^2 + 2 R len for a capsule seen broadside), the representative point below an equivalent
+// angular radius sqrt(A / pi) / d of kLtcBlendStart, LTC above twice that, linear between; a
+// tube also hands over to the representative point within two radii of its segment.
+constexpr double kLtcBlendStart = 0.05;
+double ltcBlend(double equivalentSinAlpha) { return std::clamp(equivalentSinAlpha / kLtcBlendStart - 1.0, 0.0, 1.0); }
+
+Vec3 blend(const Vec3& representative, double w, const std::function<Vec3()>& ltc) {
+  Vec3 color = w < 1.0 ? representative * (1.0 - w) : Vec3{0.0, 0.0, 0.0};
+  return w > 0.0 ? color + ltc() * w : color;
+}
+
+}  // namespace
+
+Vec3 shadeSphere(const ModelEvalInput& in, const Pixel& px, const SphereLight& sphere) {
+  if (!in.bound("sphere_light_ltc_cv")) return shadeSphereRepresentative(in, px, sphere);
+  const Vec3 n = in.frame.n, v = in.frame.v;
+  const double R = sphere.radius, d = length(sphere.toCenter);
+  const double dLight = std::max(d, R / kMaxSinAlpha);
+  const double w = dLight > 0.0 ? ltcBlend(R / dLight) : 0.0;
+  const Vec3 rp = w < 1.0 ? shadeSphereRepresentative(in, px, sphere) : Vec3{0.0, 0.0, 0.0};
+  return blend(rp, w, [&] {
+    const Vec3 l = d > 0.0 ? sphere.toCenter / d : n;
+    const double falloff = in.scalar("light_falloff", Args() << l * dLight << sphere.falloffRadius);
+    const Vec3 luminance = sphere.intensity * (falloff * dLight * dLight / (kPi * R * R));
+    return ltcLight(
+        in, px, sphere.toCenter, luminance,
+        [&](const Vec3& nn) {
+          return in.scalar("sphere_light_ltc", Args().geometry(nn, v, nn)
+                                                   << 1.0 << 0.0 << 0.0 << 1.0 << sphere.toCenter << R);
+        },
+        [&](const Vec3& nn, const Vec3& view, const LtcTexel& t, double alpha) {
+          return in.scalar("sphere_light_ltc_cv", Args().geometry(nn, view, nn)
+                                                      << alpha << t.norm << t.m00 << t.m02 << t.m20 << t.m22
+                                                      << sphere.toCenter << R);
+        });
+  });
+}
+
+Vec3 shadeTube(const ModelEvalInput& in, const Pixel& px, const TubeLight& tube) {
+  if (!in.bound("tube_light_ltc_cv")) return shadeTubeRepresentative(in, px, tube);
+  const Vec3 n = in.frame.n, v = in.frame.v;
+  const Vec3 L0 = tube.toStart, L1 = tube.toEnd, axis = L1 - L0;
+  const double R = tube.radius, len = length(axis);
+  const Vec3 P = tubeEquivalentPoint(n, L0, L1);
+  const double dEq = length(P);
+  const double area = kPi * R * R + 2.0 * R * len;
+  const double size = std::sqrt(area / kPi);
+  const double dLight = std::max(dEq, size / kMaxSinAlpha);
+  const double t = len > 0.0 ? std::clamp(-dot(L0, axis) / (len * len), 0.0, 1.0) : 0.0;
+  const double h = length(L0 + axis * t);
+  const double clear = R > 0.0 ? std::clamp(h / R - 1.0, 0.0, 1.0) : 0.0;
+  const double w = dLight > 0.0 ? ltcBlend(size / dLight) * clear : 0.0;
+  const Vec3 rp = w < 1.0 ? shadeTubeRepresentative(in, px, tube) : Vec3{0.0, 0.0, 0.0};
+  return blend(rp, w, [&] {
+    const Vec3 l = dEq > 0.0 ? P / dEq : n;
+    const double falloff = in.scalar("light_falloff", Args() << l * dLight << tube.falloffRadius);
+    const Vec3 luminance = tube.intensity * (falloff * dLight * dLight / area);
+    return ltcLight(
+        in, px, P, luminance,
+        [&](const Vec3& nn) {
+          return in.scalar("tube_light_ltc", Args().geometry(nn, v, nn) << 1.0 << 0.0 << 0.0 << 1.0 << L0 << L1 << R);
+        },
+        [&](const Vec3& nn, const Vec3& view, const LtcTexel& tx, double alpha) {
+          return in.scalar("tube_light_ltc_cv", Args().geometry(nn, view, nn) << alpha << tx.norm << tx.m00 << tx.m02
+                                                                              << tx.m20 << tx.m22 << L0 << L1 << R);
+        });
+  });
 }
 
 Vec3 shadeRect(const ModelEvalInput& in, const Pixel& px, const RectLight& rect) {
