@@ -10,6 +10,7 @@
 #include "bench_engine/cost_format.hpp"
 #include "bench_engine/cost_interval.hpp"
 #include "bench_engine/ibl_bench.hpp"
+#include "bench_engine/light_methods.hpp"
 #include "bench_engine/pareto.hpp"
 #include "bench_engine/report.hpp"
 #include "bench_engine/static_cost.hpp"
@@ -443,4 +444,28 @@ TEST_CASE("matbricks bench writes its outputs and rejects unknown names", "[benc
   CHECK(bad.output.find("specular_d") != std::string::npos);  // the suggestion
   CHECK_FALSE(std::filesystem::exists(dir / "bad"));
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("light methods: LTC is nearer the integral than the representative point and costs more", "[bench][vulkan]") {
+  // bench_engine/light_methods.hpp on spheres: the errors are deterministic (double, seeded),
+  // the costs measured; what is asserted of the costs is their order, far apart on any device
+  // (the LTC integration against a few dozen operations).
+  harness::VulkanHarness gpu(harness::testDeviceOptions());
+  const ShaderLibrary& lib = test::shippedLibrary();
+  const MaterialDesc m = loadMaterialJson(test::materialPath("filament_plastic.json"), lib);
+  REQUIRE(bench::hasLightMethods(lib, m));
+  bench::LightMethodOptions o;
+  o.lights = 60;
+  o.cost.repeats = 6;
+  o.cost.targetDispatchMs = 0.5;
+  const auto rows = bench::measureLightMethods(gpu, lib, m, o, {LightType::Sphere});
+  REQUIRE(rows.size() == 2);
+  CHECK(bench::lightMethodLabel(rows[0]) == "sphere: ltc");
+  CHECK(rows[0].readsLtcTable);
+  CHECK(!rows[1].readsLtcTable);
+  INFO("ltc " << rows[0].errorMedian << " / " << rows[0].cost.nsPerEval << " ns, representative point "
+              << rows[1].errorMedian << " / " << rows[1].cost.nsPerEval << " ns");
+  CHECK(rows[0].errorMedian < rows[1].errorMedian);
+  CHECK(rows[0].cost.nsPerEvalLow > rows[1].cost.nsPerEvalHigh);
+  requireNoLayerMessages(gpu);
 }

@@ -101,6 +101,33 @@ TEST_CASE("report writes index.html and every image it references, from this run
   fs::remove_all(out.parent_path());
 }
 
+TEST_CASE("report places each area light's methods on a run-time-against-error chart", "[report][vulkan]") {
+  // A sphere light: the chart's rows are its two methods (docs/models/lights.md "Light methods");
+  // without an area light among the reported lights, or with --no-light-methods, no section.
+  const fs::path out = test::freshTempDir("report", "light-methods") / "report";
+  const std::string common =
+      " --environment none --no-slots --no-energy --no-lut --no-previews --samples 64"
+      " --repeats 6 --target-ms 0.5 -o " +
+      out.string();
+  auto r = test::runCli("report " + test::materialPath("filament_plastic.json") + " --lights sphere" + common);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  const std::string html = test::readFile(out / "index.html");
+  CHECK_THAT(html, Catch::Contains("id=\"light-methods\""));
+  CHECK(count(html, "<td class=\"l\">sphere: ltc</td>") == 1);
+  CHECK(count(html, "<td class=\"l\">sphere: representative_point</td>") == 1);
+  CHECK(count(html, "<td class=\"l\">tube") == 0);  // not reported
+  CHECK_THAT(test::readFile(out / "light_methods.svg"), Catch::Contains("<svg") && Catch::Contains("sphere: ltc"));
+  for (const char* options : {" --lights dir", " --lights sphere --no-light-methods"}) {
+    auto without = test::runCli("report " + test::materialPath("filament_plastic.json") + options + common);
+    INFO(without.output);
+    REQUIRE(without.exitCode == 0);
+    CHECK_THAT(test::readFile(out / "index.html"), !Catch::Contains("id=\"light-methods\""));
+    CHECK(!fs::exists(out / "light_methods.svg"));
+  }
+  fs::remove_all(out.parent_path());
+}
+
 TEST_CASE("report refuses bad input and unsafe outputs before any work, writing nothing", "[report]") {
   const fs::path dir = test::freshTempDir("report", "refusals");
   const std::string material = test::materialPath("filament_plastic.json");

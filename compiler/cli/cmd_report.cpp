@@ -30,7 +30,8 @@ struct ReportArgs {
   std::string scene;
   std::string out;
   std::vector<std::string> lights, environments;  // empty: all the model shades / supports
-  bool noSlots = false, noEnergy = false, noLut = false, noCache = false, noPreviews = false, quiet = false;
+  bool noSlots = false, noEnergy = false, noLut = false, noCache = false, noPreviews = false, quiet = false,
+       noLightMethods = false;
   uint32_t previewSize = 128;
   std::vector<std::string> previewEnvironments = preview::environmentNames();
   report::ReportOptions options;
@@ -85,6 +86,7 @@ std::string commandLine(const ReportArgs& a) {
   if (a.noEnergy) c += " --no-energy";
   if (a.noPreviews) c += " --no-previews";
   if (a.previewSize != ReportArgs{}.previewSize) c += " --preview-size " + std::to_string(a.previewSize);
+  if (a.noLightMethods) c += " --no-light-methods";
   if (a.noLut) c += " --no-lut";
   if (o.lutSize != d.lutSize) c += " --lut-size " + std::to_string(o.lutSize);
   if (a.noCache) c += " --no-cache";
@@ -133,6 +135,7 @@ int runReport(ReportArgs& a, const GlobalOptions& g) {
   a.options.slots = !a.noSlots;
   a.options.energy = !a.noEnergy;
   a.options.lut = !a.noLut;
+  a.options.lightMethods = !a.noLightMethods;
   if (!a.noPreviews) a.options.previews = report::makePreviewRenderer(lib, a.previewEnvironments, a.previewSize);
   auto gpu = openDevice(g);
   size_t units = groups.size();
@@ -190,6 +193,8 @@ Command addReportCommand(CLI::App& app, GlobalOptions& g) {
   cmd->add_flag("--no-slots", a->noSlots, "No per-slot Pareto charts (the slowest part)")->excludes(slot);
   cmd->add_flag("--no-energy", a->noEnergy, "No albedo charts");
   cmd->add_flag("--no-lut", a->noLut, "No DFG LUT section");
+  cmd->add_flag("--no-light-methods", a->noLightMethods,
+                "No chart of the area lights' methods (run time against error per light shape and method)");
   cmd->add_flag("--no-previews", a->noPreviews, "No preview pictures (GPU, reference, difference)");
   cmd->add_option("--preview-size", a->previewSize, "Preview edge in pixels (default 128)")
       ->check(CLI::Range(16u, 1024u));

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bench_engine/bench_runner.hpp"
+#include "bench_engine/light_methods.hpp"
 #include "energy/energy_grid.hpp"
 #include "energy/white_furnace.hpp"
 #include "lut/lut_check.hpp"
@@ -34,6 +35,10 @@ struct ReportOptions {
   std::vector<std::string> slotFilter;  // empty: every slot the permutations' shaders call
   bool energy = true;
   energy::EnergyGrid grid = reportGrid();
+  // The area lights' methods on one chart (bench_engine/light_methods.hpp), for the first
+  // reported material whose model shades area lights, over this many lights per method.
+  bool lightMethods = true;
+  int lightMethodLights = 100;
   bool lut = true;
   uint32_t lutSize = 64;
   uint32_t lutCheckGrid = 16;  // texels per axis judged against the exact integrals
@@ -71,6 +76,12 @@ struct EnergySection {
   EnergySection& operator=(const EnergySection&) = delete;
 };
 
+struct LightMethodsSection {
+  std::string material;  // whose permutations were timed
+  std::vector<bench::LightMethodRow> rows;
+  int repeats = 0;
+};
+
 struct LutSection {
   lut::GpuLut generated;
   lut::LutCheck check;
@@ -94,6 +105,7 @@ struct ReportData {
   std::vector<MaterialSection> materials;
   std::optional<bench::BenchReport> slots;
   std::unique_ptr<EnergySection> energy;
+  std::optional<LightMethodsSection> lightMethods;
   std::optional<LutSection> lut;
   std::vector<SectionTime> times;
   std::string resultCacheDir;      // empty: the result cache was off

@@ -80,6 +80,7 @@ void header(Html& h, const ReportData& r) {
   }
   h.s << "<p>Contents: <a href=\"#materials\">materials</a>";
   if (r.slots) h.s << " · <a href=\"#slots\">run time against error per slot</a>";
+  if (r.lightMethods) h.s << " · <a href=\"#light-methods\">area light methods</a>";
   if (r.energy) h.s << " · <a href=\"#energy\">albedo per lobe</a>";
   if (r.lut) h.s << " · <a href=\"#lut\">DFG LUT</a>";
   h.s << " · <a href=\"#times\">timings</a></p>\n";
@@ -143,6 +144,27 @@ void slots(Html& h, const bench::BenchReport& b) {
   }
 }
 
+void lightMethodsSection(Html& h, const LightMethodsSection& m) {
+  h.s << "<h2 id=\"light-methods\">Area lights: run time against error, per shape and method</h2>\n<p "
+         "class=\"note\">Each area light by each method its model offers (docs/models/lights.md, \"Light methods: "
+         "run time against error\"). Cost: the permutation of <code>"
+      << xmlEscape(m.material)
+      << "</code> that shades that one light, as <code>matbricks bench</code> times it (LTC table fetches included). "
+         "Error, in double: |ours / integral − 1| of the model's reference (the material made a metal of base "
+         "colour 1) over the brute-force integral of the specular lobe over the light, median (mark) to 95th "
+         "percentile (dashed).</p>\n";
+  const std::string subtitle = m.material + ", " + std::to_string(m.rows.empty() ? 0 : m.rows.front().lights) +
+                               " lights per method, " + std::to_string(m.repeats) + " paired repeats";
+  h.figure("light_methods.svg", bench::lightMethodsSvg(m.rows, subtitle), "area lights: run time against error");
+  h.s << "<table><tr><th class=\"l\">light: method</th><th>ns / eval (95 % interval)</th><th>median</th><th>95th "
+         "percentile</th><th>worst</th></tr>\n";
+  for (const auto& r : m.rows)
+    h.s << "<tr><td class=\"l\">" << xmlEscape(bench::lightMethodLabel(r)) << "</td><td>"
+        << xmlEscape(bench::formatCostWithInterval(r.cost)) << "</td><td>" << g3(r.errorMedian) << "</td><td>"
+        << g3(r.errorP95) << "</td><td>" << g3(r.errorMax) << "</td></tr>\n";
+  h.s << "</table>\n";
+}
+
 void energySection(Html& h, const EnergySection& e) {
   h.s << "<h2 id=\"energy\">Directional albedo per lobe</h2>\n<p class=\"note\">White furnace (F = 1) of every lobe "
          "whose bricks the materials use, integrated from GPU evaluations and from the double references at the "
@@ -193,6 +215,7 @@ std::map<std::string, std::string> renderReport(const ReportData& r) {
   header(h, r);
   materials(h, r);
   if (r.slots) slots(h, *r.slots);
+  if (r.lightMethods) lightMethodsSection(h, *r.lightMethods);
   if (r.energy) energySection(h, *r.energy);
   if (r.lut) lutSection(h, *r.lut);
   h.s << "<h2 id=\"times\">Timings</h2>\n<table><tr><th class=\"l\">part</th><th>seconds</th></tr>\n";

@@ -121,6 +121,27 @@ ReportData runReport(const ShaderLibrary& lib, harness::VulkanHarness& gpu,
     r.times.push_back({"energy (white furnace)", secondsSince(t0)});
   }
 
+  if (o.lightMethods) {
+    t0 = Clock::now();
+    // The first material that is reported with area lights, for the area lights it has.
+    for (const auto& mp : materials) {
+      std::vector<LightType> shapes;
+      for (const auto& p : mp.permutations)
+        for (LightType t : bench::areaLightsOf(p.lights))
+          if (std::find(shapes.begin(), shapes.end(), t) == shapes.end()) shapes.push_back(t);
+      if (shapes.empty() || !bench::hasLightMethods(lib, *mp.material)) continue;
+      bench::LightMethodOptions lo;
+      lo.lights = o.lightMethodLights;
+      lo.seed = o.seed;
+      lo.cost = o.cost;
+      r.lightMethods =
+          LightMethodsSection{mp.material->name, bench::measureLightMethods(gpu, lib, *mp.material, lo, shapes),
+                              static_cast<int>(o.cost.repeats)};
+      r.times.push_back({"area light methods (bench kernels + brute force)", secondsSince(t0)});
+      break;
+    }
+  }
+
   if (o.lut) {
     t0 = Clock::now();
     LutSection l;
