@@ -53,6 +53,12 @@ class Draws {
     std::normal_distribution<double> g;
     return ref::normalize(Vec3{g(rng_), g(rng_), g(rng_)});
   }
+  // A direction within about `spread` of `axis`. One draw per statement: the order of draws
+  // within an expression is the compiler's, and the results must not depend on it.
+  Vec3 nearDirection(const Vec3& axis, double spread) {
+    const Vec3 offset = unit();
+    return ref::normalize(axis + offset * (spread * uniform(0, 1)));
+  }
 
  private:
   std::mt19937_64 rng_;
@@ -80,7 +86,7 @@ std::vector<double> methodErrors(const ref::ModelReferenceFn model, ref::ModelEv
     double truth = 0, area = 1;  // the model's result over truth / area is the ratio
     if (shape == LightType::Sphere) {
       const double sinA = c.logUniform(0.01, 0.5);
-      const Vec3 dir = nearMirror ? ref::normalize(mirror + c.unit() * ((alpha + sinA) * c.uniform(0, 1))) : c.unit();
+      const Vec3 dir = nearMirror ? c.nearDirection(mirror, alpha + sinA) : c.unit();
       if (dot(n, dir) <= -sinA + 1e-3) continue;  // no part above the horizon
       const ref::arealights::LobeIntegrals t =
           ref::arealights::sphereLobe(ref::makeGeometry(n, v, dir), alpha, sinA, 32);
@@ -89,7 +95,7 @@ std::vector<double> methodErrors(const ref::ModelReferenceFn model, ref::ModelEv
       area = ref::kPi * sinA * sinA;
       e.sphere = ref::SphereLight{dir, sinA, one, 1e6};
     } else if (shape == LightType::Tube) {
-      const Vec3 centre = nearMirror ? ref::normalize(mirror + c.unit() * (0.5 * c.uniform(0, 1))) : c.unit();
+      const Vec3 centre = nearMirror ? c.nearDirection(mirror, 0.5) : c.unit();
       const Vec3 axis = c.unit();
       const double halfLength = c.uniform(0.05, 1.55), R = c.logUniform(0.005, 0.2);
       const Vec3 L0 = centre - axis * halfLength, L1 = centre + axis * halfLength, edge = L1 - L0;
@@ -104,10 +110,9 @@ std::vector<double> methodErrors(const ref::ModelReferenceFn model, ref::ModelEv
     } else {
       const bool disk = shape == LightType::Disk;
       const double hx = c.logUniform(0.01, 0.5), hy = c.logUniform(0.01, 0.5);
-      const Vec3 centre =
-          nearMirror ? ref::normalize(mirror + c.unit() * ((alpha + std::max(hx, hy)) * c.uniform(0, 1))) : c.unit();
-      const rl::PlanarLight light =
-          rl::facingPlanarLight(centre, hx, hy, c.uniform(0, 2 * ref::kPi), c.uniform(-1, 1) * ref::kPi / 3);
+      const Vec3 centre = nearMirror ? c.nearDirection(mirror, alpha + std::max(hx, hy)) : c.unit();
+      const double turn = c.uniform(0, 2 * ref::kPi), tilt = c.uniform(-1, 1) * ref::kPi / 3;
+      const rl::PlanarLight light = rl::facingPlanarLight(centre, hx, hy, turn, tilt);
       const rl::PlanarTruth t = rl::planarLobeTruth(n, v, alpha, light, disk);
       if (!(t.irradiance > 0.0) || !(t.lobe > 1e-6 * t.irradiance)) continue;
       truth = t.lobe;
