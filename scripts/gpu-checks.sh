@@ -48,4 +48,10 @@ step 14-validate-rect-disk-fp16-driver 60 "$MB" --device "$DEVICE" validate "${S
   --precision fp16 --fp16 driver
 step 15-stress-ltc-fp16-driver 60 "$MB" --device "$DEVICE" stress "${LTC[@]}" "${PLANAR[@]}" --precision fp16 --fp16 driver
 step 16-preview-rect-disk 60 "$MB" --device "$DEVICE" preview "${STANDARD[@]}" --lights rect,disk -o "$O/preview-rect-disk"
+step 17-validate-sphere-tube-ltc 150 "$MB" --device "$DEVICE" validate "${STANDARD[@]}" --lights sphere,tube \
+  --samples 50000
+step 18-validate-sphere-tube-fp16-driver 60 "$MB" --device "$DEVICE" validate "${STANDARD[@]}" --lights sphere,tube \
+  --environment none --precision fp16 --fp16 driver
+step 19-preview-sphere-tube 60 "$MB" --device "$DEVICE" preview "${STANDARD[@]}" --lights sphere,tube \
+  -o "$O/preview-sphere-tube"
 tar czf "$O.tgz" -C "$O" . && mv "$O.tgz" "$O/all.tgz"
