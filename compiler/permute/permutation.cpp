@@ -14,9 +14,12 @@ bool Permutation::hasLight(LightType type) const {
   return std::find(lights.begin(), lights.end(), type) != lights.end();
 }
 
+bool lightReadsLtcTable(const MaterialDesc& material, LightType light) {
+  return isLtcLight(light) || material.lightMethod(light) == kLtcLightMethod;
+}
+
 bool Permutation::readsLtcTable() const {
-  return std::any_of(lights.begin(), lights.end(),
-                     [&](LightType t) { return isLtcLight(t) || material->lightMethod(t) == kLtcLightMethod; });
+  return std::any_of(lights.begin(), lights.end(), [&](LightType t) { return lightReadsLtcTable(*material, t); });
 }
 
 std::string Permutation::key() const {

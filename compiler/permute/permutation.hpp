@@ -31,10 +31,13 @@ struct Permutation {
   std::string key() const;
   std::string lightsKey() const;
   bool hasLight(LightType type) const;
-  // A light of the permutation reads the LTC table: a rectangle or disk, or a light the
-  // material's (quality-specialized) light methods shade by kLtcLightMethod.
+  // A light of the permutation reads the LTC table (lightReadsLtcTable).
   bool readsLtcTable() const;
 };
+
+// `light` reads the LTC table when `material` shades it: a rectangle or disk, or a light the
+// material's (quality-specialized) light methods shade by kLtcLightMethod.
+bool lightReadsLtcTable(const MaterialDesc& material, LightType light);
 
 // The permutations a list of materials needs by default: a directional light, no
 // environment, fp32 (what eval, stress and bench run), in input order.

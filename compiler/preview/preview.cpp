@@ -126,10 +126,8 @@ std::vector<std::map<std::string, std::vector<double>>> sphereModelInputs(harnes
 harness::GraphicsJob sphereJob(const PreviewOptions& o, const MaterialDesc& m, const std::vector<SphereParams>& spheres,
                                const std::vector<PreviewLight>& lights, const PreviewEnvironment& env,
                                EnvironmentMode environmentMode) {
-  // As Permutation::readsLtcTable: rectangles, disks and lights shaded by the LTC method.
-  const bool ltcTable = std::any_of(lights.begin(), lights.end(), [&](const PreviewLight& l) {
-    return isLtcLight(l.type) || m.lightMethod(l.type) == kLtcLightMethod;
-  });
+  const bool ltcTable =
+      std::any_of(lights.begin(), lights.end(), [&](const PreviewLight& l) { return lightReadsLtcTable(m, l.type); });
   harness::GraphicsJob job;
   job.width = o.size * static_cast<uint32_t>(spheres.size());
   job.height = o.size;
