@@ -247,6 +247,9 @@ TEST_CASE("light methods are checked at load: unknown light, method, default; a 
   auto roleCodes = libraryCodesAfterEdit("standard.json", R"("lights": ["sphere"], "method": "ltc")",
                                          R"("lights": ["sphere", "point"], "method": "ltc")");
   CHECK(roleCodes == std::vector<std::string>{"E-UNKNOWN-NAME"});  // point offers no "ltc"
+  // A role's toleranceScale must not shrink the tolerance, nor be absurd.
+  auto scaleCodes = libraryCodesAfterEdit("standard.json", R"("factor": 127.32395447351627)", R"("factor": 0.5)");
+  CHECK(scaleCodes == std::vector<std::string>{"E-OUT-OF-RANGE"});
 }
 
 TEST_CASE("brick rules are checked at load: unknown role, brick of another slot, no bricks, no reason", "[scene]") {
