@@ -91,12 +91,12 @@ TEST_CASE("HLSL and MSL includes of every shipped material compile in their wrap
       CHECK(body.find("main(") == std::string::npos);
       CHECK(body.find("gl_WorkGroupSize") == std::string::npos);
       // The hooks the environment and the lights call, and only those, are left to the engine:
-      // the LTC table's two for rectangle and disk lights.
-      const size_t ltcHooks = c.key.find("+rect") != std::string::npos || c.key.find("+disk") != std::string::npos ||
-                                      c.key.find(".rect") != std::string::npos ||
-                                      c.key.find(".disk") != std::string::npos
-                                  ? 2
-                                  : 0;
+      // the LTC table's two for rectangle and disk lights, and the sheen table's two more with a
+      // sheen.
+      const bool ltcLights = c.key.find("+rect") != std::string::npos || c.key.find("+disk") != std::string::npos ||
+                             c.key.find(".rect") != std::string::npos || c.key.find(".disk") != std::string::npos;
+      const bool sheen = glsl.find("#define MB_FEATURE_SHEEN") != std::string::npos;
+      const size_t ltcHooks = ltcLights ? (sheen ? 4 : 2) : 0;
       const size_t hooks = ltcHooks + (c.key.find(".ibl_lut.") != std::string::npos        ? 2
                                        : c.key.find(".ibl_analytic.") != std::string::npos ? 1
                                                                                            : 0);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "common/cloth_dfg_reference.hpp"
 #include "common/ibl_reference.hpp"
 #include "core/diagnostics.hpp"
 #include "ltc/ltc_table.hpp"
@@ -25,6 +26,27 @@ const ltc::Table& storedTable() {
   return t;
 }
 
+const ltc::Table& storedSheenTable() {
+  static const ltc::Table t = ltc::loadTable((test::sourceDir() / "shaderlib/ltc/charlie.json").string());
+  return t;
+}
+
+// Entries across the table, re-fitted by the tests below.
+const std::vector<std::pair<uint32_t, uint32_t>> kRefitProbes{{62, 0}, {50, 10}, {40, 32}, {30, 50}, {20, 60}, {8, 20}};
+
+// Entry (i, j) fitted again from its stored rougher neighbour, as the fitter walks a column,
+// reaches the stored entry's error (the comparison is explained where it is first used).
+void checkRefitted(const ltc::Table& t, uint32_t i, uint32_t j) {
+  const double r = ltc::tableRoughness(i, t.size), NoV = ltc::tableNoV(j, t.size);
+  const ltc::LtcShape start = ltc::shapeOf(ltc::tableRoughness(i + 1, t.size), NoV, t.at(i + 1, j).minv(), t.settings);
+  const ltc::LtcEntry refit = ltc::fitEntry(r, NoV, start, t.settings);
+  const double storedError = ltc::fitError(r, NoV, ltc::shapeOf(r, NoV, t.at(i, j).minv(), t.settings), t.settings);
+  INFO("entry (" << i << ", " << j << "): r " << r << ", n.v " << NoV << ": stored error " << storedError
+                 << ", re-fitted " << refit.error);
+  CHECK(storedError <= refit.error * (1 + 1e-4));
+  CHECK(refit.error <= storedError * (1 + 1e-4));
+}
+
 }  // namespace
 
 TEST_CASE("the library's LTC table is the fitter's, entry for entry", "[ltc]") {
@@ -37,17 +59,9 @@ TEST_CASE("the library's LTC table is the fitter's, entry for entry", "[ltc]") {
   // flat (quadratic) there: fp32 rounding of the matrix (6e-8 relative) and the simplex's stop
   // (a spread of 1e-12 relative) move it by ~1e-6 relative (measured: 6 digits agree). A
   // table fitted to another lobe, axes or sample count is off by far more than the 1e-4 here.
-  const std::vector<std::pair<uint32_t, uint32_t>> probes{{62, 0}, {50, 10}, {40, 32}, {30, 50}, {20, 60}, {8, 20}};
-  for (auto [i, j] : probes) {
+  for (auto [i, j] : kRefitProbes) {
+    checkRefitted(t, i, j);
     const double r = ltc::tableRoughness(i, t.size), NoV = ltc::tableNoV(j, t.size);
-    const ltc::LtcShape start =
-        ltc::shapeOf(ltc::tableRoughness(i + 1, t.size), NoV, t.at(i + 1, j).minv(), t.settings);
-    const ltc::LtcEntry refit = ltc::fitEntry(r, NoV, start, t.settings);
-    const double storedError = ltc::fitError(r, NoV, ltc::shapeOf(r, NoV, t.at(i, j).minv(), t.settings), t.settings);
-    INFO("entry (" << i << ", " << j << "): r " << r << ", n.v " << NoV << ": stored error " << storedError
-                   << ", re-fitted " << refit.error);
-    CHECK(storedError <= refit.error * (1 + 1e-4));
-    CHECK(refit.error <= storedError * (1 + 1e-4));
     // The magnitudes are the split-sum integrals, rounded to fp32.
     const ref::DfgIntegrals dfg = ref::dfgIntegrals(NoV, std::max(r * r, ltc::kMinAlpha));
     CHECK(t.at(i, j).norm == static_cast<float>(dfg.gv));
@@ -80,6 +94,29 @@ TEST_CASE("the LTC lobe's integral over the hemisphere is the directional albedo
     }
 }
 
+// The sheen's table (charlie.json), checked as the specular one: entries fitted again from their
+// stored rougher neighbours reach the stored error, and the magnitude is the DFG LUT's cloth
+// channel (Charlie D, Ashikhmin V) rounded to fp32, with no Fresnel part.
+TEST_CASE("the library's sheen LTC table is the fitter's, entry for entry", "[ltc]") {
+  const ltc::Table& t = storedSheenTable();
+  REQUIRE(t.settings.lobe == ltc::LobeKind::Charlie);
+  REQUIRE(t.size == storedTable().size);
+  REQUIRE(t.entries.size() == size_t{t.size} * t.size);
+  for (auto [i, j] : kRefitProbes) {
+    checkRefitted(t, i, j);
+    const double r = ltc::tableRoughness(i, t.size), NoV = ltc::tableNoV(j, t.size);
+    const double alpha = std::max(r * r, ltc::kMinCharlieAlpha);
+    CHECK(t.at(i, j).norm == static_cast<float>(ref::clothDfgIntegral(NoV, alpha)));
+    CHECK(t.at(i, j).fresnel == 0.0f);
+  }
+  // The specular table's fitter would not reproduce it (the lobe is recorded and read back).
+  ltc::FitSettings ggx = t.settings;
+  ggx.lobe = ltc::LobeKind::Ggx;
+  const double r = ltc::tableRoughness(40, t.size), NoV = ltc::tableNoV(32, t.size);
+  CHECK(ltc::fitError(r, NoV, ltc::shapeOf(r, NoV, t.at(40, 32).minv(), ggx), ggx) >
+        2.0 * ltc::fitError(r, NoV, ltc::shapeOf(r, NoV, t.at(40, 32).minv(), t.settings), t.settings));
+}
+
 TEST_CASE("a malformed LTC table is refused with its file, line and column", "[ltc][bad-input]") {
   const auto dir = std::filesystem::temp_directory_path() / ("mb-ltc-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
@@ -101,6 +138,10 @@ TEST_CASE("a malformed LTC table is refused with its file, line and column", "[l
       "E-LTC-TABLE 2:13");
   CHECK(refused("{\"format\": \"matbricks-ltc-table\", \"version\": 1, \"size\": 1, \"entries\": []}") ==
         "E-LTC-TABLE 1:57");
+  CHECK(
+      refused(
+          "{\"format\": \"matbricks-ltc-table\", \"version\": 1, \"size\": 2,\n \"fit\": {\"lobe\": \"beckmann\"}}") ==
+      "E-LTC-TABLE 2:18");
   std::filesystem::remove_all(dir);
 }
 
@@ -116,6 +157,12 @@ TEST_CASE("matbricks ltc fits the same table on one thread and on two", "[ltc][c
   const ltc::Table t = ltc::loadTable((dir / "t.json").string());
   CHECK(t.size == 6);
   CHECK(t.settings.samples == 8);
+  CHECK(t.settings.lobe == ltc::LobeKind::Ggx);
+  // --lobe charlie fits the sheen's lobe, and says so in the file.
+  const auto sheen = test::runCli("ltc -q --lobe charlie --size 6 --samples 8 -o " + (dir / "s.json").string());
+  REQUIRE(sheen.exitCode == 0);
+  CHECK(ltc::loadTable((dir / "s.json").string()).settings.lobe == ltc::LobeKind::Charlie);
+  CHECK(test::readFile(dir / "s.json") != first);
   // A directory where the table should go is refused, and left as it was.
   std::filesystem::create_directories(dir / "d");
   const auto refused = test::runCli("ltc -q --size 2 -o " + (dir / "d").string());

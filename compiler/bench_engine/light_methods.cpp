@@ -40,7 +40,7 @@ ref::ModelEvalInput referenceInput(const ShaderLibrary& lib, const Permutation& 
   in.inputs["metallic"] = {1.0};
   in.inputs["baseColor"] = {1.0, 1.0, 1.0};
   in.features.insert(perm.material->features.begin(), perm.material->features.end());
-  in.fetchLtc = [table](double NoV, double r) { return ltcTableTexel(table->table, NoV, r); };
+  in.fetchLtc = [table](ref::LtcLobe lobe, double NoV, double r) { return table->texel(lobe, NoV, r); };
   return in;
 }
 

@@ -143,8 +143,9 @@ const std::vector<std::string>& contractFunctionNames() {
 }
 
 const std::vector<std::string>& fetchHookNames() {
-  static const std::vector<std::string> names{"mb_fetch_prefiltered", "mb_fetch_dfg", "mb_fetch_ltc_matrix",
-                                              "mb_fetch_ltc_magnitude"};
+  static const std::vector<std::string> names{"mb_fetch_prefiltered",      "mb_fetch_dfg",
+                                              "mb_fetch_ltc_matrix",       "mb_fetch_ltc_magnitude",
+                                              "mb_fetch_ltc_sheen_matrix", "mb_fetch_ltc_sheen_magnitude"};
   return names;
 }
 

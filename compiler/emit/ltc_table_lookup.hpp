@@ -1,9 +1,10 @@
-// The LTC table's lookup (docs/models/lights.md "LTC tables"), one text for the two shaders
-// that read the table: the fragment stage (a texture at kFragmentLtcBinding) and a
-// permutation's validation probe (the harness's table buffer at kKernelTableBinding). Both
-// define the hooks lights.glsl declares, mb_fetch_ltc_matrix and mb_fetch_ltc_magnitude, by the
-// same four-entry blend in fp32 arithmetic, so what validate certifies is what the fragment
-// stage computes from the same numbers.
+// The LTC tables' lookup (docs/models/lights.md "LTC tables"), one text for the two shaders
+// that read them: the fragment stage (a texture at kFragmentLtcBinding) and a permutation's
+// validation probe (the harness's table buffer at kKernelTableBinding). Both define the hooks
+// lights.glsl declares, mb_fetch_ltc_matrix and mb_fetch_ltc_magnitude (the specular table) and
+// mb_fetch_ltc_sheen_matrix and mb_fetch_ltc_sheen_magnitude (the sheen's), by the same
+// four-entry blend in fp32 arithmetic, so what validate certifies is what the fragment stage
+// computes from the same numbers.
 #pragma once
 #include <string>
 #include <vector>
@@ -12,9 +13,11 @@
 
 namespace mb {
 
-// The table's side: 64 roughness rows by 64 view columns; a row of the table as a texture is
-// the 64 matrix entries, then the 64 magnitude entries (RGBA; ltc::tableTexels).
+// Each table's side: 64 roughness rows by 64 view columns. A row of the texture is the specular
+// table's 64 matrix entries, then its 64 magnitude entries, then the sheen table's 64 and 64
+// (RGBA; ltc::tableTexels): kLtcTextureWidth texels.
 inline constexpr int kLtcTableSize = 64;
+inline constexpr int kLtcTextureWidth = 4 * kLtcTableSize;
 
 // The lookup's GLSL, final text at precision `p` (its blend stays fp32; the hooks take and
 // return the shading precision). `entry` is the GLSL of the table's RGBA entry at ivec2 `c`

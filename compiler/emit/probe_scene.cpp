@@ -82,6 +82,15 @@ std::vector<ProbeSceneInput> probeSceneInputs(const ProbeScene& scene) {
     out.push_back({"ltcM22", ValueType::Float, {0.05, 1.7}});
     out.push_back({"ltcNorm", ValueType::Float, {0.45, 1.0}});
     out.push_back({"ltcFresnel", ValueType::Float, {0.0, 0.45}});
+    if (scene.ltcSheen) {
+      // The sheen table's texel, within its ranges where the sheen is not negligible (roughness
+      // >= 0.05 and norm >= 1e-3: the *_ltc_sheen_cv bricks' domains).
+      out.push_back({"ltcSheenM00", ValueType::Float, {0.8, 1.33}});
+      out.push_back({"ltcSheenM02", ValueType::Float, {-5.0, 0.0}});
+      out.push_back({"ltcSheenM20", ValueType::Float, {0.0, 1.2}});
+      out.push_back({"ltcSheenM22", ValueType::Float, {0.1, 2.2}});
+      out.push_back({"ltcSheenNorm", ValueType::Float, {0.001, 1.0}});
+    }
   }
   if (usesDfgLut(scene.environment)) {
     // DFG LUT texels: Int Gv Fc <= Int Gv <= 1 in Filament's LUT.
@@ -140,6 +149,16 @@ std::vector<std::string> probeSceneGlobals(const ProbeScene& scene) {
     g.push_back("vec2 mb_fetch_ltc_magnitude(float NoV, float perceptualRoughness) {");
     g.push_back("    return mbProbeLtcMagnitude;");
     g.push_back("}");
+    if (scene.ltcSheen) {
+      g.push_back("vec4 mbProbeLtcSheenMatrix;");
+      g.push_back("vec2 mbProbeLtcSheenMagnitude;");
+      g.push_back("vec4 mb_fetch_ltc_sheen_matrix(float NoV, float perceptualRoughness) {");
+      g.push_back("    return mbProbeLtcSheenMatrix;");
+      g.push_back("}");
+      g.push_back("vec2 mb_fetch_ltc_sheen_magnitude(float NoV, float perceptualRoughness) {");
+      g.push_back("    return mbProbeLtcSheenMagnitude;");
+      g.push_back("}");
+    }
   }
   if (scene.environment == EnvironmentMode::None) return g;
   g.push_back("// The probe's environment fetches: record values shaped by a smooth known function of");
@@ -177,6 +196,10 @@ std::vector<std::string> probeSceneFrame(const ProbeScene& scene) {
   if (scene.recordLtcTexel()) {
     s.push_back("mbProbeLtcMatrix = vec4(p_ltcM00, p_ltcM02, p_ltcM20, p_ltcM22);");
     s.push_back("mbProbeLtcMagnitude = vec2(p_ltcNorm, p_ltcFresnel);");
+    if (scene.ltcSheen) {
+      s.push_back("mbProbeLtcSheenMatrix = vec4(p_ltcSheenM00, p_ltcSheenM02, p_ltcSheenM20, p_ltcSheenM22);");
+      s.push_back("mbProbeLtcSheenMagnitude = vec2(p_ltcSheenNorm, 0.0);");
+    }
   }
   if (scene.environment != EnvironmentMode::None) {
     // Before preparePixel: an IBL mode fetches the DFG texel while preparing the pixel.

@@ -31,6 +31,8 @@ struct ProbeScene {
   // The lights read the LTC table (Permutation::readsLtcTable: rectangles and disks, and
   // spheres and tubes by the "ltc" method).
   bool ltcTable = false;
+  // ...and the material has a sheen, whose lobe reads the sheen's table.
+  bool ltcSheen = false;
   bool has(LightType light) const;
   bool recordLtcTexel() const;  // the lights read the LTC table, from the record
 };

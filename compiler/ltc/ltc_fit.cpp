@@ -5,8 +5,10 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <thread>
 
+#include "common/cloth_dfg_reference.hpp"
 #include "common/ibl_reference.hpp"
 #include "common/lights_reference.hpp"
 #include "common/microfacet_reference.hpp"
@@ -19,38 +21,57 @@ using ref::ltc::Mat3;
 
 constexpr double kPi = ref::kPi;
 
-// The target: the GGX cosine lobe at view v (n = z) and its visible-normal sampling
-// (Heitz 2018, "Sampling the GGX Distribution of Visible Normals"), whose density is
-// G1(v) D(h) / (4 n.v) in l.
-struct Lobe {
-  double alpha, NoV;
-  Vec3 v;
-  double g1v;
+// The lobe a table stands for at view v (n = z): its value D V (n.l) and a sampling of it
+// with its density, for the fit's error estimate (combined with D_M's own samples).
+class TargetLobe {
+ public:
+  TargetLobe(double alpha, double NoV)
+      : alpha(alpha), NoV(NoV), v{std::sqrt(std::max(0.0, 1.0 - NoV * NoV)), 0.0, NoV} {}
+  virtual ~TargetLobe() = default;
+  virtual double value(const Vec3& l) const = 0;  // D V (n.l), 0 below the horizon
+  virtual double pdf(const Vec3& l) const = 0;
+  virtual Vec3 sample(double u1, double u2) const = 0;
 
-  Lobe(double alpha, double NoV)
-      : alpha(alpha),
-        NoV(NoV),
-        v{std::sqrt(std::max(0.0, 1.0 - NoV * NoV)), 0.0, NoV},
-        g1v(1.0 / (1.0 + ref::smithGgxLambda(NoV, alpha))) {}
+  // The lobe's mean direction (unnormalized), estimated on the points `pts` of [0, 1)^2: by
+  // default from the lobe's own samples (the estimator value / pdf).
+  virtual Vec3 meanDirection(const std::vector<std::array<double, 2>>& pts) const {
+    Vec3 mean;
+    for (const auto& u : pts) {
+      const Vec3 l = sample(u[0], u[1]);
+      const double q = pdf(l);
+      if (q > 0.0) mean = mean + l * (value(l) / q);
+    }
+    return mean;
+  }
 
-  // D V (n.l), 0 below the horizon.
-  double value(const Vec3& l) const {
+  const double alpha, NoV;
+  const Vec3 v;
+};
+
+// GGX with the height-correlated Smith V, sampled by its visible normals (Heitz 2018,
+// "Sampling the GGX Distribution of Visible Normals"), whose density is G1(v) D(h) / (4 n.v)
+// in l.
+class GgxLobe final : public TargetLobe {
+ public:
+  GgxLobe(double alpha, double NoV) : TargetLobe(alpha, NoV), g1v_(1.0 / (1.0 + ref::smithGgxLambda(NoV, alpha))) {}
+
+  double value(const Vec3& l) const override {
     if (!(l.z > 0.0)) return 0.0;
     const Vec3 s = v + l;
     const double NoH = s.z / ref::length(s);
     return ref::lights::ggxD(NoH, alpha) * ref::smithGgxCorrelatedV(NoV, l.z, alpha) * l.z;
   }
 
-  double pdf(const Vec3& l) const {
+  double pdf(const Vec3& l) const override {
     const Vec3 s = v + l;
     const double len = ref::length(s);
     if (!(len > 1e-12)) return 0.0;
     const Vec3 h = s / len;
     if (!(h.z > 0.0) || !(ref::dot(v, h) > 0.0)) return 0.0;
-    return g1v * ref::lights::ggxD(h.z, alpha) / (4.0 * NoV);
+    return g1v_ * ref::lights::ggxD(h.z, alpha) / (4.0 * NoV);
   }
 
-  Vec3 sample(double u1, double u2) const {
+  Vec3 sample(double u1, double u2) const override {
     const Vec3 vh = ref::normalize(Vec3{alpha * v.x, alpha * v.y, v.z});
     const double lensq = vh.x * vh.x + vh.y * vh.y;
     const Vec3 t1 = lensq > 0.0 ? Vec3{-vh.y, vh.x, 0.0} / std::sqrt(lensq) : Vec3{1.0, 0.0, 0.0};
@@ -63,7 +84,67 @@ struct Lobe {
     const Vec3 h = ref::normalize(Vec3{alpha * nh.x, alpha * nh.y, std::max(0.0, nh.z)});
     return h * (2.0 * ref::dot(v, h)) - v;
   }
+
+ private:
+  double g1v_;
 };
+
+// The sheen lobe: Charlie D(h) = (2 + 1/alpha) sin^(1/alpha)(theta_h) / (2 pi) (Estevez &
+// Kulla 2017, eq. 2) and V = 1 / (4 (n.l + n.v - n.l n.v)) (Neubelt & Pettineo 2013). Sampled
+// by its normals: D(h) (n.h) is normalized, with the CDF sin^(2 + 1/alpha)(theta_h) in theta_h,
+// so sin(theta_h) = u1^(1 / (2 + 1/alpha)); the density in l is D(h) (n.h) / (4 v.h). Half
+// vectors facing away from v reflect to no light (density 0 there).
+class CharlieLobe final : public TargetLobe {
+ public:
+  using TargetLobe::TargetLobe;
+
+  double d(double cosH) const {
+    const double sin2 = std::max(0.0, 1.0 - cosH * cosH);
+    return (2.0 + 1.0 / alpha) * std::exp(std::log(sin2) / (2.0 * alpha)) / (2.0 * kPi);
+  }
+
+  double value(const Vec3& l) const override { return ref::ltc::charlieLobeLocal(v, alpha, l); }
+
+  double pdf(const Vec3& l) const override {
+    const Vec3 s = v + l;
+    const double len = ref::length(s);
+    if (!(len > 1e-12)) return 0.0;
+    const Vec3 h = s / len;
+    const double VoH = ref::dot(v, h);
+    if (!(h.z > 0.0) || !(VoH > 0.0)) return 0.0;
+    return d(h.z) * h.z / (4.0 * VoH);
+  }
+
+  Vec3 sample(double u1, double u2) const override {
+    const double sinH = std::pow(u1, 1.0 / (2.0 + 1.0 / alpha));
+    const double cosH = std::sqrt(std::max(0.0, 1.0 - sinH * sinH)), phi = 2.0 * kPi * u2;
+    const Vec3 h{sinH * std::cos(phi), sinH * std::sin(phi), cosH};
+    return h * (2.0 * ref::dot(v, h)) - v;
+  }
+
+  // Most normals of a smooth sheen reflect v below the horizon: at n.v = 1 and alpha = 0.02
+  // every one of 32 x 32 normal samples did, and the mean of none is no direction. The normal
+  // samples are combined here with cosine samples by the balance heuristic (Veach 1997), as the
+  // fit's error is.
+  Vec3 meanDirection(const std::vector<std::array<double, 2>>& pts) const override {
+    Vec3 mean;
+    auto add = [&](const Vec3& l) {
+      const double q = pdf(l) + std::max(l.z, 0.0) / kPi;
+      if (q > 0.0) mean = mean + l * (value(l) / q);
+    };
+    for (const auto& u : pts) {
+      add(sample(u[0], u[1]));
+      const double r = std::sqrt(u[0]), phi = 2.0 * kPi * u[1];
+      add(Vec3{r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - u[0]))});
+    }
+    return mean;
+  }
+};
+
+std::unique_ptr<TargetLobe> makeLobe(LobeKind kind, double alpha, double NoV) {
+  if (kind == LobeKind::Charlie) return std::make_unique<CharlieLobe>(alpha, NoV);
+  return std::make_unique<GgxLobe>(alpha, NoV);
+}
 
 // Stratified points of [0, 1)^2, one per cell of a k x k grid, at the cell centres: the
 // error is a deterministic function of the matrix, so the minimizer sees a smooth surface.
@@ -87,7 +168,7 @@ Mat3 matrixOf(const LtcShape& s, const Vec3& mean) {
 // lobe's visible-normal samples and D_M's own (cosine samples mapped by M).
 class Objective {
  public:
-  Objective(const Lobe& lobe, double norm, const Vec3& mean, const std::vector<std::array<double, 2>>& pts)
+  Objective(const TargetLobe& lobe, double norm, const Vec3& mean, const std::vector<std::array<double, 2>>& pts)
       : lobe_(lobe), norm_(norm), mean_(mean), pts_(pts) {
     for (const auto& u : pts) {
       const Vec3 l = lobe.sample(u[0], u[1]);
@@ -122,7 +203,7 @@ class Objective {
     Vec3 l;
     double p, pdf;
   };
-  const Lobe& lobe_;
+  const TargetLobe& lobe_;
   double norm_;
   Vec3 mean_;
   const std::vector<std::array<double, 2>>& pts_;
@@ -203,27 +284,34 @@ Minimum nelderMead(const Objective& f, const LtcShape& start, uint32_t maxIterat
 
 // What one entry's fit works on: the lobe, its magnitudes, its mean direction and the samples.
 struct EntrySetup {
-  Lobe lobe;
-  ref::DfgIntegrals dfg;
+  std::unique_ptr<TargetLobe> lobe;
+  double norm = 0, fresnel = 0;
   std::vector<std::array<double, 2>> pts;
   Vec3 mean;
 
   EntrySetup(double roughness, double NoV, const FitSettings& settings)
-      : lobe(std::max(roughness * roughness, kMinAlpha), NoV),
-        dfg(ref::dfgIntegrals(NoV, lobe.alpha)),
+      : lobe(makeLobe(settings.lobe, std::max(roughness * roughness, minAlpha(settings.lobe)), NoV)),
         pts(grid(settings.samples)) {
-    // The lobe's mean direction, from its visible-normal samples (the estimator value / pdf).
-    for (const auto& u : pts) {
-      const Vec3 l = lobe.sample(u[0], u[1]);
-      const double q = lobe.pdf(l);
-      if (q > 0.0) mean = mean + l * (lobe.value(l) / q);
+    if (settings.lobe == LobeKind::Charlie) {
+      norm = ref::clothDfgIntegral(NoV, lobe->alpha);
+    } else {
+      const ref::DfgIntegrals dfg = ref::dfgIntegrals(NoV, lobe->alpha);
+      norm = dfg.gv;
+      fresnel = dfg.gvFc;
     }
+    mean = lobe->meanDirection(pts);
     mean.y = 0.0;  // the lobe is symmetric about the plane of n and v
-    mean = ref::normalize(mean);
+    // A lobe too small for a double to hold (a smooth sheen seen head-on: norm 0) has no
+    // direction; the normal stands in.
+    mean = ref::length(mean) > 0.0 ? ref::normalize(mean) : Vec3{0.0, 0.0, 1.0};
   }
 };
 
 }  // namespace
+
+const char* lobeName(LobeKind k) { return k == LobeKind::Charlie ? "charlie" : "ggx"; }
+
+double minAlpha(LobeKind k) { return k == LobeKind::Charlie ? kMinCharlieAlpha : kMinAlpha; }
 
 double tableRoughness(uint32_t i, uint32_t size) { return static_cast<double>(i) / (size - 1); }
 
@@ -237,10 +325,12 @@ LtcEntry fitEntry(double roughness, double NoV, const LtcShape& start, const Fit
   LtcEntry e;
   e.roughness = roughness;
   e.NoV = NoV;
-  e.norm = setup.dfg.gv;
-  e.fresnel = setup.dfg.gvFc;
-  const Objective objective(setup.lobe, e.norm, setup.mean, setup.pts);
-  const Minimum best = nelderMead(objective, start, settings.maxIterations);
+  e.norm = setup.norm;
+  e.fresnel = setup.fresnel;
+  const Objective objective(*setup.lobe, e.norm, setup.mean, setup.pts);
+  // Nothing to fit to a lobe of magnitude 0 (it underflows): the start, the rougher neighbour,
+  // keeps the column continuous.
+  const Minimum best = e.norm > 0.0 ? nelderMead(objective, start, settings.maxIterations) : Minimum{start, 0.0, 0};
   e.shape = best.shape;
   e.error = best.value;
   e.iterations = best.iterations;
@@ -254,7 +344,7 @@ LtcEntry fitEntry(double roughness, double NoV, const LtcShape& start, const Fit
 
 double fitError(double roughness, double NoV, const LtcShape& shape, const FitSettings& settings) {
   const EntrySetup setup(roughness, NoV, settings);
-  return Objective(setup.lobe, setup.dfg.gv, setup.mean, setup.pts)(shape);
+  return Objective(*setup.lobe, setup.norm, setup.mean, setup.pts)(shape);
 }
 
 LtcShape shapeOf(double roughness, double NoV, const ref::ltc::Mat3& minv, const FitSettings& settings) {

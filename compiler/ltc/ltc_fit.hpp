@@ -13,15 +13,23 @@
 
 namespace mb::ltc {
 
+enum class LobeKind { Ggx, Charlie };
+const char* lobeName(LobeKind k);  // "ggx", "charlie"
+
 // How the table's axes map to the lobe (Heitz 2016's parametrization): row i is perceptual
-// roughness r = i / (size - 1), alpha = max(r^2, kMinAlpha); column j is u = j / (size - 1),
-// n.v = max(1 - u^2, kMinNoV).
+// roughness r = i / (size - 1), alpha = max(r^2, minAlpha(lobe)); column j is u = j / (size - 1),
+// n.v = max(1 - u^2, kMinNoV). Charlie's floor is the cloth model's roughness clamp
+// (alpha >= 0.002025, Filament's): below it the sheen lobe is a sliver at the horizon whose
+// fp32 evaluation the sheen bricks do not claim.
 inline constexpr double kMinAlpha = 1e-4;
+inline constexpr double kMinCharlieAlpha = 0.002025;
 inline constexpr double kMinNoV = 1e-4;
+double minAlpha(LobeKind k);
 double tableRoughness(uint32_t i, uint32_t size);
 double tableNoV(uint32_t j, uint32_t size);
 
 struct FitSettings {
+  LobeKind lobe = LobeKind::Ggx;
   uint32_t samples = 32;  // per side of the stratified grids the error is estimated on
   uint32_t maxIterations = 400;
 };
@@ -37,8 +45,8 @@ struct LtcEntry {
   LtcShape shape;
   ref::ltc::Mat3 m{};     // M
   ref::ltc::Mat3 minv{};  // M^-1 scaled so that minv[1][1] = 1 (D_M does not depend on the scale)
-  double norm = 0;        // Int D V (n.l) dl  (the DFG Int Gv)
-  double fresnel = 0;     // Int D V (n.l) (1 - v.h)^5 dl  (the DFG Int Gv Fc)
+  double norm = 0;        // Int D V (n.l) dl  (ggx: the DFG Int Gv; charlie: the cloth channel)
+  double fresnel = 0;     // ggx: Int D V (n.l) (1 - v.h)^5 dl  (the DFG Int Gv Fc); charlie: 0
   double error = 0;       // the minimized cubic error (see ltc_fit.cpp)
   uint32_t iterations = 0;
 };

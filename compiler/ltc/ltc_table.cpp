@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "core/diagnostics.hpp"
 #include "core/json_document.hpp"
@@ -55,17 +56,20 @@ TableSample sampleBilinear(const Table& t, double perceptualRoughness, double No
   return s;
 }
 
-std::vector<float> tableTexels(const Table& t) {
+std::vector<float> tableTexels(const Table& specular, const Table& sheen) {
+  if (sheen.size != specular.size) throw std::invalid_argument("tableTexels: the LTC tables differ in size");
   std::vector<float> rgba;
-  rgba.reserve(size_t{2} * t.size * t.size * 4);
-  for (uint32_t i = 0; i < t.size; ++i) {
-    for (uint32_t j = 0; j < t.size; ++j) {
-      const TableEntry& e = t.at(i, j);
-      rgba.insert(rgba.end(), {e.m00, e.m02, e.m20, e.m22});
-    }
-    for (uint32_t j = 0; j < t.size; ++j) {
-      const TableEntry& e = t.at(i, j);
-      rgba.insert(rgba.end(), {e.norm, e.fresnel, 0.0f, 0.0f});
+  rgba.reserve(size_t{4} * specular.size * specular.size * 4);
+  for (uint32_t i = 0; i < specular.size; ++i) {
+    for (const Table* t : {&specular, &sheen}) {
+      for (uint32_t j = 0; j < t->size; ++j) {
+        const TableEntry& e = t->at(i, j);
+        rgba.insert(rgba.end(), {e.m00, e.m02, e.m20, e.m22});
+      }
+      for (uint32_t j = 0; j < t->size; ++j) {
+        const TableEntry& e = t->at(i, j);
+        rgba.insert(rgba.end(), {e.norm, e.fresnel, 0.0f, 0.0f});
+      }
     }
   }
   return rgba;
@@ -89,12 +93,17 @@ std::string encodeTable(const Table& t, const std::string& command) {
   s += "  \"format\": \"" + std::string(kFormat) + "\",\n";
   s += "  \"version\": " + std::to_string(kVersion) + ",\n";
   s += "  \"command\": \"" + command + "\",\n";
-  s += "  \"lobe\": \"GGX D (alpha = max(r^2, 1e-4)) x height-correlated Smith V x n.l\",\n";
+  s += std::string("  \"lobe\": \"") +
+       (t.settings.lobe == LobeKind::Charlie
+            ? "Charlie D (alpha = max(r^2, 0.002025)) x Ashikhmin V x n.l; fresnel 0 (the sheen has none)"
+            : "GGX D (alpha = max(r^2, 1e-4)) x height-correlated Smith V x n.l") +
+       "\",\n";
   s += "  \"rows\": \"perceptual roughness r = i / (size - 1)\",\n";
   s += "  \"columns\": \"u = j / (size - 1), n.v = max(1 - u^2, 1e-4)\",\n";
   s += "  \"entry\": [\"minv00\", \"minv02\", \"minv20\", \"minv22\", \"norm\", \"fresnel\"],\n";
   s += "  \"size\": " + std::to_string(t.size) + ",\n";
-  s += "  \"fit\": {\"samples\": " + std::to_string(t.settings.samples) +
+  s += "  \"fit\": {\"lobe\": \"" + std::string(lobeName(t.settings.lobe)) +
+       "\", \"samples\": " + std::to_string(t.settings.samples) +
        ", \"max_iterations\": " + std::to_string(t.settings.maxIterations) + "},\n";
   s += "  \"entries\": [\n";
   for (size_t k = 0; k < t.entries.size(); ++k) {
@@ -120,6 +129,14 @@ Table loadTable(const std::string& path) {
   Table t;
   t.size = j["size"].get<uint32_t>();
   if (j.contains("fit") && j["fit"].is_object()) {
+    // Tables written before there was more than one lobe are GGX's.
+    const nlohmann::json& fit = j["fit"];
+    if (fit.contains("lobe") && !fit["lobe"].is_string()) fail(doc, "/fit/lobe", "'lobe' must be a string");
+    const std::string lobe = fit.value("lobe", std::string("ggx"));
+    if (lobe == "charlie")
+      t.settings.lobe = LobeKind::Charlie;
+    else if (lobe != "ggx")
+      fail(doc, "/fit/lobe", "unknown LTC lobe '" + lobe + "' (this matbricks fits 'ggx' and 'charlie')");
     t.settings.samples = j["fit"].value("samples", t.settings.samples);
     t.settings.maxIterations = j["fit"].value("max_iterations", t.settings.maxIterations);
   }

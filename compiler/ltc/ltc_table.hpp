@@ -11,8 +11,10 @@
 
 namespace mb::ltc {
 
-// The table the library ships, relative to its root (the fragment stage's LTC texture).
+// The tables the library ships, relative to its root (the fragment stage's LTC texture): the
+// specular lobe's and the sheen's.
 inline constexpr const char* kLibraryTableFile = "ltc/ggx.json";
+inline constexpr const char* kLibrarySheenTableFile = "ltc/charlie.json";
 
 struct TableEntry {
   float m00 = 1, m02 = 0, m20 = 0, m22 = 1;  // M^-1 = [[m00, 0, m02], [0, 1, 0], [m20, 0, m22]]
@@ -38,10 +40,11 @@ struct TableSample {
 };
 TableSample sampleBilinear(const Table& t, double perceptualRoughness, double NoV);
 
-// The table as the GPU reads it (the fragment stage's texture, a probe's table buffer): 2 size
-// by size RGBA entries, row i (roughness) holding its size matrix entries (m00, m02, m20, m22),
-// then its size magnitude entries (norm, fresnel, 0, 0); row after row.
-std::vector<float> tableTexels(const Table& t);
+// The tables as the GPU reads them (the fragment stage's texture, a probe's table buffer): 4 size
+// by size RGBA entries, row i (roughness) holding the specular table's size matrix entries
+// (m00, m02, m20, m22), then its size magnitude entries (norm, fresnel, 0, 0), then the sheen
+// table's likewise; row after row. The two tables must have the same size.
+std::vector<float> tableTexels(const Table& specular, const Table& sheen);
 
 TableEntry toTableEntry(const LtcEntry& e);
 Table makeTable(uint32_t size, const FitSettings& settings, const std::vector<LtcEntry>& fitted);

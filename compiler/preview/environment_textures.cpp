@@ -17,8 +17,8 @@ std::shared_ptr<harness::GpuTexture> uploadDfgLut(harness::VulkanHarness& gpu, c
   return harness::uploadTexture(gpu, false, {level});
 }
 
-std::shared_ptr<harness::GpuTexture> uploadLtcTable(harness::VulkanHarness& gpu, const ltc::Table& table) {
-  return harness::uploadTexture(gpu, false, {{2 * table.size, table.size, ltc::tableTexels(table)}});
+std::shared_ptr<harness::GpuTexture> uploadLtcTable(harness::VulkanHarness& gpu, const ProbeLtcTable& tables) {
+  return harness::uploadTexture(gpu, false, {{4 * tables.table.size, tables.table.size, tables.texels}});
 }
 
 }  // namespace mb::preview

@@ -7,6 +7,7 @@
 #include "harness/gpu_texture.hpp"
 #include "lut/dfg_lut.hpp"
 #include "ltc/ltc_table.hpp"
+#include "validate/probe_ltc_table.hpp"
 #include "preview/environment.hpp"
 
 namespace mb::preview {
@@ -21,9 +22,9 @@ std::shared_ptr<harness::GpuTexture> uploadEnvironmentCube(harness::VulkanHarnes
 // order, row 0 = smoothest at t = 0) and a = 1.
 std::shared_ptr<harness::GpuTexture> uploadDfgLut(harness::VulkanHarness& gpu, const lut::LutTable& table);
 
-// The LTC table as the fragment stage reads it (docs/fragment-stage.md "LTC table"): 2 size x
-// size texels, entry (i, j) at texel (j, i) as (m00, m02, m20, m22) and at (size + j, i) as
-// (norm, fresnel, 0, 0).
-std::shared_ptr<harness::GpuTexture> uploadLtcTable(harness::VulkanHarness& gpu, const ltc::Table& table);
+// The LTC tables as the fragment stage reads them (docs/fragment-stage.md "LTC table"): 4 size x
+// size texels, the specular table's entry (i, j) at texel (j, i) as (m00, m02, m20, m22) and at
+// (size + j, i) as (norm, fresnel, 0, 0), the sheen's at (2 size + j, i) and (3 size + j, i).
+std::shared_ptr<harness::GpuTexture> uploadLtcTable(harness::VulkanHarness& gpu, const ProbeLtcTable& tables);
 
 }  // namespace mb::preview

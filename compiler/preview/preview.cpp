@@ -315,8 +315,8 @@ PreviewEnvironment prepareEnvironment(harness::VulkanHarness& gpu, const ShaderL
   env.dfg = lut::generateDfgLutOnGpu(gpu, lib, lutSize, 0).table;
   env.cube = uploadEnvironmentCube(gpu, env.maps);
   env.dfgTexture = uploadDfgLut(gpu, env.dfg);
-  env.ltc = ltc::loadTable((lib.root() / ltc::kLibraryTableFile).string());
-  env.ltcTexture = uploadLtcTable(gpu, env.ltc);
+  env.ltc = probeLtcTable(lib);
+  env.ltcTexture = uploadLtcTable(gpu, *env.ltc);
   env.buildMs = msSince(t0);
   return env;
 }
@@ -385,7 +385,7 @@ PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& li
   scene.lights = lights;
   scene.environment = &env.maps;
   scene.dfg = &env.dfg;
-  scene.ltc = &env.ltc;
+  scene.ltc = env.ltc.get();
   scene.samplerLimits = r.samplerPrecision = o.samplerLimits.value_or(harness::samplerPrecision(gpu));
   scene.tile = o.size;
   scene.sphereInputs = sphereModelInputs(gpu, lib, perm, spheres);

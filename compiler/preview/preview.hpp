@@ -25,6 +25,7 @@
 #include "preview/preview_image.hpp"
 #include "preview/texel_filter.hpp"
 #include "validate/error_metrics.hpp"
+#include "validate/probe_ltc_table.hpp"
 
 namespace mb::harness {
 class GpuTexture;
@@ -63,7 +64,7 @@ struct PreviewOptions {
 struct PreviewEnvironment {
   EnvironmentMaps maps;
   lut::LutTable dfg;
-  ltc::Table ltc;  // the library's LTC table (rectangle and disk lights)
+  std::shared_ptr<const ProbeLtcTable> ltc;  // the library's LTC tables (the lights shaded by LTC)
   std::shared_ptr<harness::GpuTexture> cube, dfgTexture, ltcTexture;
   double buildMs = 0;  // environment, LUT and uploads
 };

@@ -61,11 +61,11 @@ ref::ModelEvalInput referenceWorkspace(const ReferenceScene& scene, size_t spher
   e.bricks = scene.bricks;
   e.features.insert(scene.features.begin(), scene.features.end());
   e.inputs = scene.sphereInputs.at(sphere);
-  if (const ltc::Table* table = scene.ltc) {
+  if (const ProbeLtcTable* table = scene.ltc) {
     // The fragment shader's mb_ltc_texel: the four entries around the point, blended in fp32
     // arithmetic (docs/fragment-stage.md "LTC table"); here in double, the same weights.
-    e.fetchLtc = [table](double NoV, double perceptualRoughness) {
-      return ltcTableTexel(*table, NoV, perceptualRoughness);
+    e.fetchLtc = [table](ref::LtcLobe lobe, double NoV, double perceptualRoughness) {
+      return table->texel(lobe, NoV, perceptualRoughness);
     };
   }
   if (scene.environmentMode == EnvironmentMode::None) return e;

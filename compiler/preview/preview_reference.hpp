@@ -18,6 +18,7 @@
 #include "preview/environment.hpp"
 #include "preview/preview_scene.hpp"
 #include "preview/texel_filter.hpp"
+#include "validate/probe_ltc_table.hpp"
 
 namespace mb::preview {
 
@@ -37,7 +38,7 @@ struct ReferenceScene {
   std::vector<PreviewLight> lights;
   const EnvironmentMaps* environment = nullptr;  // IBL and SH modes
   const lut::LutTable* dfg = nullptr;            // ibl_lut
-  const ltc::Table* ltc = nullptr;               // rectangle and disk lights
+  const ProbeLtcTable* ltc = nullptr;            // the lights shaded by LTC
   // The device's sampler precision, which every fetch's sampling bound assumes, and (test
   // double only) a quantizer that makes the fetches filter as such a device may.
   harness::SamplerPrecision samplerLimits;

@@ -14,10 +14,15 @@ std::shared_ptr<const ProbeLtcTable> probeLtcTable(const ShaderLibrary& lib) {
   if (!slot) {
     auto t = std::make_shared<ProbeLtcTable>();
     t->table = ltc::loadTable(path);
-    t->texels = ltc::tableTexels(t->table);
+    t->sheen = ltc::loadTable((lib.root() / ltc::kLibrarySheenTableFile).string());
+    t->texels = ltc::tableTexels(t->table, t->sheen);
     slot = std::move(t);
   }
   return slot;
+}
+
+ref::LtcTexel ProbeLtcTable::texel(ref::LtcLobe lobe, double NoV, double perceptualRoughness) const {
+  return ltcTableTexel(lobe == ref::LtcLobe::Sheen ? sheen : table, NoV, perceptualRoughness);
 }
 
 ref::LtcTexel ltcTableTexel(const ltc::Table& table, double NoV, double perceptualRoughness) {

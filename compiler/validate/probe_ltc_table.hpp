@@ -1,6 +1,7 @@
-// The LTC table a permutation's validation probe reads (rectangle and disk lights): the
-// library's shipped table (ltc::kLibraryTableFile), for the kernel as the harness's table
-// buffer (ltc::tableTexels) and for the reference as the fragment stage's blend in double.
+// The LTC tables a permutation's validation probe reads (the area lights shaded by LTC): the
+// library's shipped tables (ltc::kLibraryTableFile and kLibrarySheenTableFile), for the kernel as
+// the harness's table buffer (ltc::tableTexels) and for the reference as the fragment stage's
+// blend in double.
 #pragma once
 #include <memory>
 #include <vector>
@@ -12,17 +13,21 @@
 namespace mb {
 
 struct ProbeLtcTable {
-  ltc::Table table;
-  std::vector<float> texels;  // ltc::tableTexels(table): the kernel's mbTable
+  ltc::Table table;           // the specular lobe's (GGX)
+  ltc::Table sheen;           // the sheen's (Charlie)
+  std::vector<float> texels;  // ltc::tableTexels(table, sheen): the kernel's mbTable, the fragment stage's texture
+
+  // What the shader's hooks return for `lobe` (ltcTableTexel of its table): ModelEvalInput::fetchLtc.
+  ref::LtcTexel texel(ref::LtcLobe lobe, double NoV, double perceptualRoughness) const;
 };
 
-// The library's table, read once per library root in a process (thread-safe). A malformed or
+// The library's tables, read once per library root in a process (thread-safe). A malformed or
 // missing file throws DiagnosticError with its location (ltc::loadTable).
 std::shared_ptr<const ProbeLtcTable> probeLtcTable(const ShaderLibrary& lib);
 
 // What the shader's mb_fetch_ltc_matrix and mb_fetch_ltc_magnitude return at (n.v, roughness):
 // the four entries around the point weighted as mb_ltc_texel weighs them
-// (emit/ltc_table_lookup.hpp), in double. ModelEvalInput::fetchLtc is this.
+// (emit/ltc_table_lookup.hpp), in double.
 ref::LtcTexel ltcTableTexel(const ltc::Table& table, double NoV, double perceptualRoughness);
 
 }  // namespace mb

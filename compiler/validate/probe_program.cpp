@@ -217,8 +217,8 @@ std::function<void(const double*, double*)> materialReferenceEval(const Permutat
   if (scene.ltcTableBuffer) {
     if (!ltcTable)
       throw std::logic_error("materialReferenceEval: '" + perm.key() + "' reads the LTC table, none given");
-    proto->fetchLtc = [ltcTable](double NoV, double perceptualRoughness) {
-      return ltcTableTexel(ltcTable->table, NoV, perceptualRoughness);
+    proto->fetchLtc = [ltcTable](ref::LtcLobe lobe, double NoV, double perceptualRoughness) {
+      return ltcTable->texel(lobe, NoV, perceptualRoughness);
     };
   }
   static std::atomic<uint64_t> nextId{1};

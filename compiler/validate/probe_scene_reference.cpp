@@ -78,6 +78,13 @@ SceneColumns sceneColumns(const ProbeScene& scene, const ProbeLayout& layout) {
     c.ltcM22 = at("ltcM22");
     c.ltcNorm = at("ltcNorm");
     c.ltcFresnel = at("ltcFresnel");
+    if (scene.ltcSheen) {
+      c.ltcSheenM00 = at("ltcSheenM00");
+      c.ltcSheenM02 = at("ltcSheenM02");
+      c.ltcSheenM20 = at("ltcSheenM20");
+      c.ltcSheenM22 = at("ltcSheenM22");
+      c.ltcSheenNorm = at("ltcSheenNorm");
+    }
   }
   if (scene.environment == EnvironmentMode::None) return c;
   for (int i = 0; i < 9; ++i) c.sh[i] = at("sh" + std::to_string(i));
@@ -152,6 +159,9 @@ void sceneFromRecord(const ProbeScene& scene, const SceneColumns& c, const doubl
   if (scene.recordLtcTexel())
     in.ltc = ref::LtcTexel{scalar(c.ltcM00), scalar(c.ltcM02),  scalar(c.ltcM20),
                            scalar(c.ltcM22), scalar(c.ltcNorm), scalar(c.ltcFresnel)};
+  if (scene.recordLtcTexel() && scene.ltcSheen)
+    in.sheenLtc = ref::LtcTexel{scalar(c.ltcSheenM00), scalar(c.ltcSheenM02),  scalar(c.ltcSheenM20),
+                                scalar(c.ltcSheenM22), scalar(c.ltcSheenNorm), 0.0};
   if (scene.environment == EnvironmentMode::None) return;
   // Filled in place: assigning a fresh Environment would copy its mode string and hooks per
   // record. The hooks stay unset (validation's probe has no textures).

@@ -20,6 +20,7 @@ struct SceneColumns {
   uint32_t areaLuminance[2] = {}, areaDistance[2] = {}, areaAxisAngle[2] = {}, areaTilt[2] = {}, areaHalfWidth[2] = {},
            areaHalfHeight[2] = {};
   uint32_t ltcM00 = 0, ltcM02 = 0, ltcM20 = 0, ltcM22 = 0, ltcNorm = 0, ltcFresnel = 0;
+  uint32_t ltcSheenM00 = 0, ltcSheenM02 = 0, ltcSheenM20 = 0, ltcSheenM22 = 0, ltcSheenNorm = 0;
   uint32_t sh[9] = {}, ao = 0, prefiltered = 0, dfgX = 0, dfgY = 0, dfgZ = 0;
 };
 // Throws std::logic_error when the layout lacks one of the scene's inputs.

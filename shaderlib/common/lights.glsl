@@ -74,9 +74,12 @@ struct Environment {
 vec3 mb_fetch_prefiltered(vec3 r, float lod);
 vec3 mb_fetch_dfg(float NoV, float perceptualRoughness);
 // The LTC table (shaderlib/ltc/ggx.json) at (n.v, perceptual roughness): M^-1's elements
-// (m00, m02, m20, m22) and the lobe's magnitudes (norm, fresnel).
+// (m00, m02, m20, m22) and the lobe's magnitudes (norm, fresnel); the sheen's
+// (shaderlib/ltc/charlie.json) at (n.v, sheen roughness): its M^-1 and (norm, 0).
 vec4 mb_fetch_ltc_matrix(float NoV, float perceptualRoughness);
 vec2 mb_fetch_ltc_magnitude(float NoV, float perceptualRoughness);
+vec4 mb_fetch_ltc_sheen_matrix(float NoV, float perceptualRoughness);
+vec2 mb_fetch_ltc_sheen_magnitude(float NoV, float perceptualRoughness);
 
 // Filament's smooth spot cone: saturate(cos * scale + offset), squared.
 float mb_spot_attenuation(vec3 l, vec3 axis, float cosOuter, float cosInner) {

@@ -141,23 +141,50 @@ float mb_ltc_lobe(vec3 v, float alpha, vec3 l) {
     return MB_SATURATE_MEDIUMP(D * VNoL);
 }
 
+// The sheen lobe the sheen table was fitted to (shaderlib/ltc/charlie.json; sheenColor = 1) at
+// the unit l of the table's frame: Charlie D (Estevez & Kulla 2017, eq. 2) times Ashikhmin's V
+// (Neubelt & Pettineo 2013) times n.l, 0 below the horizon (common/ltc_reference.hpp,
+// charlieLobeLocal). sin^2(theta_h) = (H.x^2 + H.y^2) / |H|^2 of the unnormalized half vector:
+// D's peak is at sin^2 = 1, where this has ~2 ulps of relative error, which the exponent
+// 1 / (2 alpha) multiplies (5e-5 relative at alpha = 0.0025, the lights' roughness floor).
+// log(0) is undefined in GLSL: a half vector along n gives D = 0 directly.
+float mb_ltc_charlie_lobe(vec3 v, float alpha, vec3 l) {
+    if (!(l.z > 0.0)) return 0.0;
+    vec3 H = v + l;
+    float HH = dot(H, H);
+    float sin2 = HH > 0.0 ? dot(H.xy, H.xy) / HH : 0.0;
+    if (!(sin2 > 0.0)) return 0.0;
+    float D = (2.0 + 1.0 / alpha) * exp(log(sin2) * (0.5 / alpha)) * (0.5 / MB_PI);
+    float NoV = max(v.z, MB_MIN_N_DOT_V);
+    float NoL = l.z;
+    return MB_SATURATE_MEDIUMP(D * NoL / (4.0 * (NoL + NoV * (1.0 - NoL))));
+}
+
+// Which lobe a control-variate integral stands for (the brick passes a constant, which the
+// compiler folds after inlining).
+const int MB_LTC_LOBE_GGX = 0;
+const int MB_LTC_LOBE_CHARLIE = 1;
+
 // The residual's integrand in the LTC's space (common/ltc_reference.hpp, warpedResidual) at the
 // unit o: the lobe at w = M o / |M o| times the Jacobian |det M| / |M o|^3, less norm D_o(o). With
-// d = m00 m22 - m02 m20, the determinant of M^-1 (positive over the table), M o is W / d for
+// d = m00 m22 - m02 m20, the determinant of M^-1 (positive over the tables), M o is W / d for
 // W = (m22 o.x - m02 o.z, d o.y, m00 o.z - m20 o.x), so the Jacobian is d^2 / |W|^3.
-float mb_ltc_warped_residual(vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22, vec3 o) {
+float mb_ltc_warped_residual(int lobe, vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22,
+                             vec3 o) {
     float d = m00 * m22 - m02 * m20;
     vec3 w = vec3(m22 * o.x - m02 * o.z, d * o.y, m00 * o.z - m20 * o.x);
     float len = length(w);
     float dl = d / len;  // one factor at a time: d^2 underflows half precision at small alpha
-    return mb_ltc_lobe(v, alpha, w / len) * (dl * dl / len) - norm * max(o.z, 0.0) * (1.0 / MB_PI);
+    float f = lobe == MB_LTC_LOBE_CHARLIE ? mb_ltc_charlie_lobe(v, alpha, w / len) : mb_ltc_lobe(v, alpha, w / len);
+    return f * (dl * dl / len) - norm * max(o.z, 0.0) * (1.0 / MB_PI);
 }
 
 // The residual's quadrature over mbLtcClipped[0, count), a polygon of the LTC's space: triangles
 // fanned from its vertices' mean direction, each split into its four midpoint children, each
 // child its solid angle (Van Oosterom & Strackee 1983) times the mean at three interior points
 // (barycentric 2/3, 1/6, 1/6); common/ltc_reference.hpp, polygonSpecularWithResidual.
-float mb_ltc_fan_residual(vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22, int count) {
+float mb_ltc_fan_residual(int lobe, vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22,
+                          int count) {
     if (count < 3) return 0.0;
     vec3 centre = vec3(0.0);
     MB_DONT_UNROLL for (int i = 0; i < count; ++i) centre += normalize(mbLtcClipped[i]);
@@ -179,7 +206,7 @@ float mb_ltc_fan_residual(vec3 v, float alpha, float norm, float m00, float m02,
             MB_DONT_UNROLL for (int j = 0; j < 3; ++j) {
                 vec3 corner = j == 0 ? x : (j == 1 ? y : z);
                 vec3 o = normalize(corner * 0.5 + (x + y + z) * (1.0 / 6.0));  // 2/3 corner + 1/6 others
-                mean += mb_ltc_warped_residual(v, alpha, norm, m00, m02, m20, m22, o);
+                mean += mb_ltc_warped_residual(lobe, v, alpha, norm, m00, m02, m20, m22, o);
             }
             sum += omega * mean * (1.0 / 3.0);
         }
@@ -187,10 +214,12 @@ float mb_ltc_fan_residual(vec3 v, float alpha, float norm, float m00, float m02,
     return sum;
 }
 
-// Int of the lobe (F = 1) over the light polygon mbLtcPoly[0, count) above the horizon: norm times
-// D_M's integral plus the residual's quadrature in the LTC's space, on each side of D_M's support
-// plane (common/ltc_reference.hpp says why). Overwrites mbLtcPoly.
-float mb_ltc_specular_cv(vec3 n, vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22, int count) {
+// Int of the lobe (GGX with F = 1, or the sheen with sheenColor = 1) over the light polygon
+// mbLtcPoly[0, count) above the horizon: norm times D_M's integral plus the residual's quadrature
+// in the LTC's space, on each side of D_M's support plane (common/ltc_reference.hpp says why).
+// Overwrites mbLtcPoly.
+float mb_ltc_lobe_cv(int lobe, vec3 n, vec3 v, float alpha, float norm, float m00, float m02, float m20, float m22,
+                     int count) {
     vec3 vLocal;
     count = mb_ltc_to_local(n, v, count, vLocal);
     if (count < 3) return 0.0;
@@ -202,7 +231,7 @@ float mb_ltc_specular_cv(vec3 n, vec3 v, float alpha, float norm, float m00, flo
     int inside = 0;
     MB_DONT_UNROLL for (int part = 0; part < 2; ++part) {
         int k = mb_ltc_clip_into(count, part == 0 ? -1.0 : 1.0);
-        residual += mb_ltc_fan_residual(vLocal, alpha, norm, m00, m02, m20, m22, k);
+        residual += mb_ltc_fan_residual(lobe, vLocal, alpha, norm, m00, m02, m20, m22, k);
         inside = k;  // the last part is D_M's support
     }
     MB_DONT_UNROLL for (int i = 0; i < inside; ++i) mbLtcPoly[i] = mbLtcClipped[i];

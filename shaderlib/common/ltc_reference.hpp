@@ -343,6 +343,28 @@ inline double ggxLobeLocal(const Vec3& v, double alpha, const Vec3& l) {
   return D * V * NoL;
 }
 
+// The standard model's sheen lobe (sheenColor = 1) the sheen table was fitted to
+// (shaderlib/ltc/charlie.json): Charlie D(h) = (2 + 1/alpha) sin^(1/alpha)(theta_h) / (2 pi)
+// (Estevez & Kulla 2017, eq. 2) times V = 1 / (4 (n.l + n.v - n.l n.v)) (Neubelt & Pettineo
+// 2013) times n.l; 0 below the horizon. sin^(1/alpha) from sin^2 = (H.x^2 + H.y^2) / |H|^2 of
+// the unnormalized half vector, exact where theta_h nears 90 degrees (D's peak).
+inline double charlieLobeLocal(const Vec3& v, double alpha, const Vec3& l) {
+  if (!(l.z > 0.0)) return 0.0;
+  const Vec3 H = v + l;
+  const double HH = dot(H, H);
+  if (!(HH > 0.0)) return 0.0;
+  const double sin2 = (H.x * H.x + H.y * H.y) / HH;
+  const double D = (2.0 + 1.0 / alpha) * std::pow(sin2, 0.5 / alpha) / (2.0 * kPi);
+  const double NoV = std::max(v.z, kMinNoV), NoL = l.z;
+  return D * NoL / (4.0 * (NoL + NoV - NoL * NoV));
+}
+
+// Which lobe a table, a brick's residual and a ground truth stand for.
+enum class LobeKind { Ggx, Charlie };
+inline double lobeLocal(LobeKind kind, const Vec3& v, double alpha, const Vec3& l) {
+  return kind == LobeKind::Charlie ? charlieLobeLocal(v, alpha, l) : ggxLobeLocal(v, alpha, l);
+}
+
 // ---- The brute-force lobe integral over a polygonal light (ground truth of the rectangle and
 // disk bricks, mb_bench_area_lights): the fan of the horizon-clipped polygon's spherical
 // triangles, each subdivided adaptively: split in four at its edge midpoints while the
@@ -352,7 +374,8 @@ inline double ggxLobeLocal(const Vec3& v, double alpha, const Vec3& l) {
 // Made 10 times stricter it moves by at most 2.4e-7 (docs/models/lights.md).
 class AdaptiveLobeFan {
  public:
-  AdaptiveLobeFan(const Vec3& v, double alpha) : v_(v), alpha_(alpha), mirror_(Vec3{-v.x, -v.y, v.z}) {}
+  AdaptiveLobeFan(const Vec3& v, double alpha, LobeKind kind = LobeKind::Ggx)
+      : v_(v), alpha_(alpha), kind_(kind), mirror_(Vec3{-v.x, -v.y, v.z}) {}
   double integrate(const std::vector<Vec3>& local, double tol) {
     if (local.size() < 3) return 0.0;
     Vec3 centre{0, 0, 0};
@@ -368,10 +391,13 @@ class AdaptiveLobeFan {
 
  private:
   double triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
-    auto f = [this](const Vec3& l) { return ggxLobeLocal(v_, alpha_, l); };
+    auto f = [this](const Vec3& l) { return lobeLocal(kind_, v_, alpha_, l); };
     return triangleQuadrature(a, b, c, f, 0);
   }
+  // GGX's peak about the mirror direction; the sheen's lies along the horizon of h, which the
+  // tolerance's refinement follows.
   bool holdsPeak(const Vec3& a, const Vec3& b, const Vec3& c) const {
+    if (kind_ != LobeKind::Ggx) return false;
     double s0 = dot(cross(a, b), mirror_), s1 = dot(cross(b, c), mirror_), s2 = dot(cross(c, a), mirror_);
     bool inside = (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
     return inside && std::max({length(a - b), length(b - c), length(c - a)}) > 0.25 * alpha_;
@@ -386,23 +412,26 @@ class AdaptiveLobeFan {
   }
   Vec3 v_;
   double alpha_;
+  LobeKind kind_;
   Vec3 mirror_;  // reflect(-v, z)
 };
 
 // Int of the lobe (F = 1) over the local, horizon-clipped polygon, to `tol` absolute.
-inline double lobeIntegralAdaptive(const std::vector<Vec3>& local, const Vec3& v, double alpha, double tol) {
-  return AdaptiveLobeFan(v, alpha).integrate(local, tol);
+inline double lobeIntegralAdaptive(const std::vector<Vec3>& local, const Vec3& v, double alpha, double tol,
+                                   LobeKind kind = LobeKind::Ggx) {
+  return AdaptiveLobeFan(v, alpha, kind).integrate(local, tol);
 }
 
 // The same over a light polygon `world` (points relative to the shading point) above the
 // horizon of n, to 1e-7 of the light's irradiance (the lobe's integral is at most a few times
 // it): the ground truth of the rectangle and disk bricks.
-inline double lobeOverPolygon(const Vec3& n, const Vec3& v, double alpha, const std::vector<Vec3>& world) {
+inline double lobeOverPolygon(const Vec3& n, const Vec3& v, double alpha, const std::vector<Vec3>& world,
+                              LobeKind kind = LobeKind::Ggx) {
   const ViewFrame fr = viewFrame(n, v);
   std::vector<Vec3> local;
   for (const Vec3& w : world) local.push_back(fr.toLocal(w));
   local = clipToHalfSpace(local, Vec3{0, 0, 1});
-  return lobeIntegralAdaptive(local, fr.toLocal(v), alpha, 1e-7 * kPi * clampedCosinePolygon(local));
+  return lobeIntegralAdaptive(local, fr.toLocal(v), alpha, 1e-7 * kPi * clampedCosinePolygon(local), kind);
 }
 
 // The lobe's integral (F = 1) over a rectangle, or a disk as its 256-gon, about n with view v,
@@ -411,7 +440,8 @@ inline double lobeOverPolygon(const Vec3& n, const Vec3& v, double alpha, const 
 struct PlanarTruth {
   double lobe = 0, irradiance = 0;
 };
-inline PlanarTruth planarLobeTruth(const Vec3& n, const Vec3& v, double alpha, const PlanarLight& light, bool disk) {
+inline PlanarTruth planarLobeTruth(const Vec3& n, const Vec3& v, double alpha, const PlanarLight& light, bool disk,
+                                   LobeKind kind = LobeKind::Ggx) {
   const ViewFrame fr = viewFrame(n, v);
   std::vector<Vec3> local;
   for (const Vec3& p : disk ? diskPolygon(light.c, light.ex, light.ey, 256) : rectPolygon(light.c, light.ex, light.ey))
@@ -420,16 +450,17 @@ inline PlanarTruth planarLobeTruth(const Vec3& n, const Vec3& v, double alpha, c
   if (local.size() < 3) return {};
   PlanarTruth t;
   t.irradiance = kPi * clampedCosinePolygon(local);
-  t.lobe = lobeIntegralAdaptive(local, fr.toLocal(v), alpha, 1e-7 * t.irradiance);
+  t.lobe = lobeIntegralAdaptive(local, fr.toLocal(v), alpha, 1e-7 * t.irradiance, kind);
   return t;
 }
 
 // The residual's integrand in the LTC's space at the unit w_o (M = inverse of minv, detM its
 // determinant): the lobe at w = M w_o / |M w_o| times the Jacobian, less norm D_o(w_o).
-inline double warpedResidual(const Mat3& m, double detM, double norm, const Vec3& v, double alpha, const Vec3& o) {
+inline double warpedResidual(const Mat3& m, double detM, double norm, const Vec3& v, double alpha, const Vec3& o,
+                             LobeKind kind = LobeKind::Ggx) {
   const Vec3 w = mul(m, o);
   const double len = length(w);
-  return ggxLobeLocal(v, alpha, w / len) * std::abs(detM) / (len * len * len) - norm * std::max(o.z, 0.0) / kPi;
+  return lobeLocal(kind, v, alpha, w / len) * std::abs(detM) / (len * len * len) - norm * std::max(o.z, 0.0) / kPi;
 }
 
 // Int over the light polygon `world` of the lobe (F = 1) above the horizon: norm times the LTC
@@ -437,7 +468,8 @@ inline double warpedResidual(const Mat3& m, double detM, double norm, const Vec3
 // `levels` times (the bricks: once).
 inline constexpr int kResidualLevels = 1;
 inline double polygonSpecularWithResidual(const Mat3& minv, double norm, double alpha, const ViewFrame& fr,
-                                          const Vec3& v, const std::vector<Vec3>& world, int levels = kResidualLevels) {
+                                          const Vec3& v, const std::vector<Vec3>& world, int levels = kResidualLevels,
+                                          LobeKind kind = LobeKind::Ggx) {
   std::vector<Vec3> local;
   local.reserve(world.size());
   for (const Vec3& w : world) local.push_back(fr.toLocal(w));
@@ -450,7 +482,7 @@ inline double polygonSpecularWithResidual(const Mat3& minv, double norm, double 
   for (const Vec3& q : local) mapped.push_back(mul(minv, q));
   const std::vector<Vec3> inside = clipToHalfSpace(mapped, Vec3{0, 0, 1});
   const std::vector<Vec3> outside = clipToHalfSpace(mapped, Vec3{0, 0, -1});
-  auto residual = [&](const Vec3& o) { return warpedResidual(m, detM, norm, vl, alpha, o); };
+  auto residual = [&](const Vec3& o) { return warpedResidual(m, detM, norm, vl, alpha, o, kind); };
   const double ltc = inside.size() < 3 ? 0.0 : clampedCosinePolygon(inside);
   const double sum = fanQuadrature(inside, residual, levels) + fanQuadrature(outside, residual, levels);
   // Between 0 and the lobe's integral over the whole hemisphere, norm (common/ltc.glsl).

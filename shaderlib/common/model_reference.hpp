@@ -52,12 +52,15 @@ struct RectLight {
 struct DiskLight {
   Vec3 toCenter, halfX, halfY, luminance;
 };
-// One entry of the LTC table (shaderlib/ltc/ggx.json): M^-1's stored elements and the lobe's
-// magnitudes, as mb_fetch_ltc_matrix / mb_fetch_ltc_magnitude return them.
+// One entry of an LTC table (shaderlib/ltc/ggx.json, or the sheen's charlie.json): M^-1's stored
+// elements and the lobe's magnitudes, as mb_fetch_ltc_matrix / mb_fetch_ltc_magnitude (or their
+// _sheen_ twins) return them.
 struct LtcTexel {
   double m00 = 1, m02 = 0, m20 = 0, m22 = 1;
   double norm = 1, fresnel = 0;
 };
+// Which of the library's LTC tables a lookup reads.
+enum class LtcLobe { Specular, Sheen };
 struct Environment {
   std::string mode;  // "sh", "ibl_lut", "ibl_analytic"
   Vec3 sh[9];
@@ -119,6 +122,7 @@ inline constexpr std::string_view kRoles[] = {"anisotropy_alpha",
                                               "diffuse",
                                               "disk_light_ltc",
                                               "disk_light_ltc_cv",
+                                              "disk_light_ltc_sheen",
                                               "diffuse_wrap",
                                               "energy_compensation",
                                               "env_brdf",
@@ -128,6 +132,7 @@ inline constexpr std::string_view kRoles[] = {"anisotropy_alpha",
                                               "mip_mapping",
                                               "rect_light_ltc",
                                               "rect_light_ltc_cv",
+                                              "rect_light_ltc_sheen",
                                               "roughness",
                                               "sh_irradiance",
                                               "sheen_d",
@@ -141,10 +146,12 @@ inline constexpr std::string_view kRoles[] = {"anisotropy_alpha",
                                               "sphere_horizon_wrap",
                                               "sphere_light_ltc",
                                               "sphere_light_ltc_cv",
+                                              "sphere_light_ltc_sheen",
                                               "sphere_light_point",
                                               "tube_energy_normalization",
                                               "tube_light_ltc",
                                               "tube_light_ltc_cv",
+                                              "tube_light_ltc_sheen",
                                               "tube_light_point"};
 inline constexpr std::string_view kInputs[] = {
     "ambientOcclusion", "anisotropy", "baseColor", "clearCoat",  "clearCoatNormal", "clearCoatRoughness", "emissive",
@@ -193,13 +200,16 @@ struct ModelEvalInput {
   std::optional<RectLight> rect;
   std::optional<DiskLight> disk;
   std::optional<Environment> env;
-  // The LTC table's fetch (rectangle and disk lights): fetchLtc when set (the preview's
-  // reference render reads the table as the fragment shader does), else the probe's record
-  // texel `ltc`, the same for every lookup.
-  LtcTexel ltc;
-  std::function<LtcTexel(double NoV, double perceptualRoughness)> fetchLtc;
+  // The LTC tables' fetches (the area lights shaded by LTC): fetchLtc when set (the preview's
+  // reference render reads the tables as the fragment shader does), else the probe's record
+  // texels `ltc` and `sheenLtc`, the same for every lookup.
+  LtcTexel ltc, sheenLtc;
+  std::function<LtcTexel(LtcLobe lobe, double NoV, double perceptualRoughness)> fetchLtc;
   LtcTexel ltcAt(double NoV, double perceptualRoughness) const {
-    return fetchLtc ? fetchLtc(NoV, perceptualRoughness) : ltc;
+    return fetchLtc ? fetchLtc(LtcLobe::Specular, NoV, perceptualRoughness) : ltc;
+  }
+  LtcTexel sheenLtcAt(double NoV, double perceptualRoughness) const {
+    return fetchLtc ? fetchLtc(LtcLobe::Sheen, NoV, perceptualRoughness) : sheenLtc;
   }
 
   std::map<std::string, std::vector<double>> inputs;  // model input name -> value

@@ -1,7 +1,7 @@
 // A disk (ellipse) light's specular lobe integral by linearly transformed cosines with a control
 // variate over the ellipse's area-matched 8-gon (common/ltc.glsl, mb_ltc_disk_polygon and
-// mb_ltc_specular_cv; docs/models/lights.md, "Rectangle and disk lights").
+// mb_ltc_lobe_cv; docs/models/lights.md, "Rectangle and disk lights").
 float mb_disk_ltc_cv(Geometry g, float alpha, float norm, float m00, float m02, float m20, float m22, vec3 toCenter,
                      vec3 halfX, vec3 halfY) {
-    return mb_ltc_specular_cv(g.n, g.v, alpha, norm, m00, m02, m20, m22, mb_ltc_disk_polygon(toCenter, halfX, halfY));
+    return mb_ltc_lobe_cv(MB_LTC_LOBE_GGX, g.n, g.v, alpha, norm, m00, m02, m20, m22, mb_ltc_disk_polygon(toCenter, halfX, halfY));
 }

@@ -151,19 +151,22 @@ vec3 mb_shade_tube_representative(ShadingPixel px, ShadingFrame f, TubeLight lig
 // with the height-correlated Smith V, so the D, V and Fresnel roles are not called for these
 // lights). The diffuse brick is taken at the light centre's direction times the exact irradiance
 // per unit luminance, pi times the light's form factor (the polygon brick with M = I): exact for
-// Lambert. Sheen is the sheen lobe at the centre direction times that irradiance; the clear coat
-// is a second lobe about the coat's normal at the coat's roughness, attenuating the layers below
-// by 1 - strength Fc(nc.v), as the coat's image-based light does.
+// Lambert. The sheen is its own lobe's integral, by the sheen table (shaderlib/ltc/charlie.json,
+// Charlie D and Ashikhmin V: the sheen roles are not called for these lights either) and the
+// *_light_ltc_sheen bricks, times sheenColor, over the base scaled as for every light; the clear
+// coat is a second lobe about the coat's normal at the coat's roughness, attenuating the layers
+// below by 1 - strength Fc(nc.v), as the coat's image-based light does.
 // `specular` is the base's lobe integral, `magnitude` its table entry's (norm, fresnel),
-// `formFactor` Int (n.l)+ dw / pi, `coat` the coat's lobe integral (0 without a clear coat).
+// `formFactor` Int (n.l)+ dw / pi, `coat` the coat's lobe integral (0 without a clear coat),
+// `sheen` the sheen lobe's (0 without a sheen).
 vec3 mb_standard_ltc_light(ShadingPixel px, ShadingFrame f, Geometry g, vec2 magnitude, float specular,
-                           float formFactor, float coat, vec2 coatMagnitude, vec3 luminance) {
+                           float formFactor, float coat, vec2 coatMagnitude, float sheen, vec3 luminance) {
     vec3 Fr = ((px.f0 * (magnitude.x - magnitude.y) + magnitude.y) * (specular / magnitude.x)) * px.energyCompensation;
     float irradiance = MB_PI * formFactor;
     vec3 Fd = px.diffuseColor * (MB_SLOT_diffuse(g, px.perceptualRoughness, px.alpha) * irradiance);
     vec3 color = Fd + Fr;
 #ifdef MB_FEATURE_SHEEN
-    color = color * px.sheen.scaling + mb_sheen_direct(px.sheen, g, g, 1.0) * irradiance;
+    color = color * px.sheen.scaling + px.sheen.color * sheen;
 #endif
 #ifdef MB_FEATURE_CLEARCOAT
     float coatAttenuation;
@@ -199,8 +202,8 @@ const int MB_LTC_SPHERE = 2;
 const int MB_LTC_TUBE = 3;
 
 // The integrals mb_standard_ltc_light takes, for one light: the form factor by the shape's
-// polygon brick with M = I, then the base's and the coat's lobes by its control-variate brick,
-// one call site in a loop (each inlined copy of the integration costs lavapipe's JIT time,
+// polygon brick with M = I, then the base's and the coat's lobes by its control-variate brick and
+// the sheen's by its sheen brick, one call site each in a loop (each inlined copy of the integration costs lavapipe's JIT time,
 // common/ltc.glsl). `toCenter` gives the direction of the diffuse brick's light (a tube's
 // equivalent point); a rectangle or disk is (toCenter, a = halfX, b = halfY), a sphere
 // (toCenter, radius), a tube (a = L0, b = L1, radius).
@@ -213,19 +216,34 @@ vec3 mb_ltc_area_light(ShadingPixel px, ShadingFrame f, int shape, vec3 toCenter
     float r = clamp(px.perceptualRoughness, MB_LTC_MIN_ROUGHNESS, 1.0);
     vec4 m = mb_fetch_ltc_matrix(gb.NoV, r);
     vec2 magnitude = mb_fetch_ltc_magnitude(gb.NoV, r);
+    // The lobes integrated: 0 the base's specular, 1 the coat's, 2 the sheen's; the ones the
+    // material lacks are skipped (constants the compiler folds).
 #ifdef MB_FEATURE_CLEARCOAT
     vec3 nc = normalize(px.clearCoat.normal);
     Geometry gc = makeGeometry(nc, mb_ltc_view(nc, g.v), g.l);
     float rC = clamp(px.clearCoat.perceptualRoughness, MB_LTC_MIN_ROUGHNESS, 1.0);
     vec4 mc = mb_fetch_ltc_matrix(gc.NoV, rC);
     vec2 magnitudeC = mb_fetch_ltc_magnitude(gc.NoV, rC);
-    const int count = 2;
+    const bool hasCoat = true;
 #else
     Geometry gc = gb;
     vec4 mc = m;
     vec2 magnitudeC = magnitude;
     float rC = r;
-    const int count = 1;
+    const bool hasCoat = false;
+#endif
+#ifdef MB_FEATURE_SHEEN
+    // The sheen's table is fitted from the same roughness floor; its lobe is about n with the
+    // base's (lifted) view.
+    float rS = clamp(px.sheen.perceptualRoughness, MB_LTC_MIN_ROUGHNESS, 1.0);
+    vec4 ms = mb_fetch_ltc_sheen_matrix(gb.NoV, rS);
+    float normS = mb_fetch_ltc_sheen_magnitude(gb.NoV, rS).x;
+    const bool hasSheen = true;
+#else
+    vec4 ms = m;
+    float normS = magnitude.x;
+    float rS = r;
+    const bool hasSheen = false;
 #endif
     float formFactor = 0.0;
 #ifdef MB_LIGHT_RECT
@@ -240,32 +258,53 @@ vec3 mb_ltc_area_light(ShadingPixel px, ShadingFrame f, int shape, vec3 toCenter
 #ifdef MB_LIGHT_TUBE_LTC
     if (shape == MB_LTC_TUBE) formFactor = MB_SLOT_tube_light_ltc(g, 1.0, 0.0, 0.0, 1.0, a, b, radius);
 #endif
-    float lobe[2] = float[2](0.0, 0.0);
-    for (int k = 0; k < count; ++k) {
+    float lobe[3] = float[3](0.0, 0.0, 0.0);
+    for (int k = 0; k < 3; ++k) {
+        if ((k == 1 && !hasCoat) || (k == 2 && !hasSheen)) continue;
         Geometry gk = k == 1 ? gc : gb;
-        vec4 mk = k == 1 ? mc : m;
-        float rK = k == 1 ? rC : r;
+        vec4 mk = k == 1 ? mc : (k == 2 ? ms : m);
+        float rK = k == 1 ? rC : (k == 2 ? rS : r);
         float alphaK = rK * rK;
-        float normK = k == 1 ? magnitudeC.x : magnitude.x;
+        float normK = k == 1 ? magnitudeC.x : (k == 2 ? normS : magnitude.x);
         float value = 0.0;
+        if (k == 2) {
+#if defined(MB_FEATURE_SHEEN) && defined(MB_LIGHT_RECT)
+            if (shape == MB_LTC_RECT)
+                value = MB_SLOT_rect_light_ltc_sheen(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, a, b);
+#endif
+#if defined(MB_FEATURE_SHEEN) && defined(MB_LIGHT_DISK)
+            if (shape == MB_LTC_DISK)
+                value = MB_SLOT_disk_light_ltc_sheen(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, a, b);
+#endif
+#if defined(MB_FEATURE_SHEEN) && defined(MB_LIGHT_SPHERE_LTC)
+            if (shape == MB_LTC_SPHERE)
+                value = MB_SLOT_sphere_light_ltc_sheen(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, radius);
+#endif
+#if defined(MB_FEATURE_SHEEN) && defined(MB_LIGHT_TUBE_LTC)
+            if (shape == MB_LTC_TUBE)
+                value = MB_SLOT_tube_light_ltc_sheen(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, a, b, radius);
+#endif
+        } else {
 #ifdef MB_LIGHT_RECT
-        if (shape == MB_LTC_RECT)
-            value = MB_SLOT_rect_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, a, b);
+            if (shape == MB_LTC_RECT)
+                value = MB_SLOT_rect_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, a, b);
 #endif
 #ifdef MB_LIGHT_DISK
-        if (shape == MB_LTC_DISK)
-            value = MB_SLOT_disk_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, a, b);
+            if (shape == MB_LTC_DISK)
+                value = MB_SLOT_disk_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, a, b);
 #endif
 #ifdef MB_LIGHT_SPHERE_LTC
-        if (shape == MB_LTC_SPHERE)
-            value = MB_SLOT_sphere_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, radius);
+            if (shape == MB_LTC_SPHERE)
+                value = MB_SLOT_sphere_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, toCenter, radius);
 #endif
 #ifdef MB_LIGHT_TUBE_LTC
-        if (shape == MB_LTC_TUBE) value = MB_SLOT_tube_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, a, b, radius);
+            if (shape == MB_LTC_TUBE)
+                value = MB_SLOT_tube_light_ltc_cv(gk, alphaK, normK, mk.x, mk.y, mk.z, mk.w, a, b, radius);
 #endif
+        }
         lobe[k] = value;
     }
-    return mb_standard_ltc_light(px, f, g, magnitude, lobe[0], formFactor, lobe[1], magnitudeC, luminance);
+    return mb_standard_ltc_light(px, f, g, magnitude, lobe[0], formFactor, lobe[1], magnitudeC, lobe[2], luminance);
 }
 #endif
 

@@ -135,13 +135,14 @@ Vec3 ltcView(const Vec3& n, const Vec3& v) {
 // specular lobe's integral Int D V (n.l) dw about the frame (n, v), by the control-variate brick
 // with the table's entry. Schlick's Fresnel splits over the table's magnitudes, f0 + (1 - f0)
 // fresnel / norm (f90 = 1), times the multiscatter compensation; the diffuse brick at the
-// centre's direction times the irradiance pi x form factor; sheen at the centre's direction
-// times that irradiance; the coat its own lobe about its normal. The table's lobe is GGX at
-// alpha = r^2, r from kLtcMinRoughness, and the lobes' view is lifted to n.v >= kLtcMinNoV
-// (standard_lights.glsl, MB_LTC_MIN_ROUGHNESS and mb_ltc_view).
-template <typename FormFactor, typename Lobe>
+// centre's direction times the irradiance pi x form factor; the sheen its own lobe's integral
+// `sheenLobe(n, v, texel, alpha)` by the sheen table, times sheenColor; the coat its own lobe
+// about its normal. The tables' lobes are at alpha = r^2, r from kLtcMinRoughness, and the
+// lobes' view is lifted to n.v >= kLtcMinNoV (standard_lights.glsl, MB_LTC_MIN_ROUGHNESS and
+// mb_ltc_view).
+template <typename FormFactor, typename Lobe, typename SheenLobe>
 Vec3 ltcLight(const ModelEvalInput& in, const Pixel& px, const Vec3& toCenter, const Vec3& luminance,
-              FormFactor formFactor, Lobe lobe) {
+              FormFactor formFactor, Lobe lobe, SheenLobe sheenLobe) {
   const Vec3 n = in.frame.n, v = in.frame.v;
   double d = length(toCenter);
   const Vec3 l = d > 0.0 ? toCenter / d : n;
@@ -153,7 +154,11 @@ Vec3 ltcLight(const ModelEvalInput& in, const Pixel& px, const Vec3& toCenter, c
   Vec3 Fr = (px.f0 * (t.norm - t.fresnel) + splat(t.fresnel)) * (specular / t.norm) * px.energyCompensation;
   double fd = in.scalar("diffuse", Args().geometry(n, v, l) << px.perceptualRoughness << px.alpha);
   Vec3 color = px.diffuseColor * (fd * irradiance) + Fr;
-  if (in.has("sheen")) color = color * px.sheen.scaling + sheenDirect(in, px.sheen, l, l, 1.0) * irradiance;
+  if (in.has("sheen")) {
+    const double rs = ltcRoughness(px.sheen.perceptualRoughness);
+    const LtcTexel ts = in.sheenLtcAt(makeGeometry(n, vb, l).NoV, rs);
+    color = color * px.sheen.scaling + px.sheen.color * sheenLobe(n, vb, ts, rs * rs);
+  }
   if (in.has("clearcoat")) {
     const Vec3 nc = normalize(px.clearCoat.normal);
     const Vec3 vc = ltcView(nc, v);
@@ -169,21 +174,25 @@ Vec3 ltcLight(const ModelEvalInput& in, const Pixel& px, const Vec3& toCenter, c
 }  // namespace
 
 // The form factor by the polygon bricks' roles (rect_light_ltc, disk_light_ltc) with M = I, the
-// lobes by the control-variate roles (rect_light_ltc_cv, disk_light_ltc_cv).
+// lobes by the control-variate roles (rect_light_ltc_cv, disk_light_ltc_cv) and the sheen's
+// (rect_light_ltc_sheen, disk_light_ltc_sheen).
 template <typename Light>
-Vec3 shadePlanar(const ModelEvalInput& in, const Pixel& px, const Light& light, RoleName polygonRole,
-                 RoleName lobeRole) {
+Vec3 shadePlanar(const ModelEvalInput& in, const Pixel& px, const Light& light, RoleName polygonRole, RoleName lobeRole,
+                 RoleName sheenRole) {
   const Vec3 v = in.frame.v;
+  auto lobeBy = [&](RoleName role) {
+    return [&, role](const Vec3& n, const Vec3& view, const LtcTexel& t, double alpha) {
+      return in.scalar(role, Args().geometry(n, view, n) << alpha << t.norm << t.m00 << t.m02 << t.m20 << t.m22
+                                                         << light.toCenter << light.halfX << light.halfY);
+    };
+  };
   return ltcLight(
       in, px, light.toCenter, light.luminance,
       [&](const Vec3& n) {
         return in.scalar(polygonRole, Args().geometry(n, v, n)
                                           << 1.0 << 0.0 << 0.0 << 1.0 << light.toCenter << light.halfX << light.halfY);
       },
-      [&](const Vec3& n, const Vec3& view, const LtcTexel& t, double alpha) {
-        return in.scalar(lobeRole, Args().geometry(n, view, n) << alpha << t.norm << t.m00 << t.m02 << t.m20 << t.m22
-                                                               << light.toCenter << light.halfX << light.halfY);
-      });
+      lobeBy(lobeRole), lobeBy(sheenRole));
 }
 
 namespace {
@@ -224,6 +233,11 @@ Vec3 shadeSphere(const ModelEvalInput& in, const Pixel& px, const SphereLight& s
           return in.scalar("sphere_light_ltc_cv", Args().geometry(nn, view, nn)
                                                       << alpha << t.norm << t.m00 << t.m02 << t.m20 << t.m22
                                                       << sphere.toCenter << R);
+        },
+        [&](const Vec3& nn, const Vec3& view, const LtcTexel& t, double alpha) {
+          return in.scalar("sphere_light_ltc_sheen", Args().geometry(nn, view, nn)
+                                                         << alpha << t.norm << t.m00 << t.m02 << t.m20 << t.m22
+                                                         << sphere.toCenter << R);
         });
   });
 }
@@ -255,16 +269,20 @@ Vec3 shadeTube(const ModelEvalInput& in, const Pixel& px, const TubeLight& tube)
         [&](const Vec3& nn, const Vec3& view, const LtcTexel& tx, double alpha) {
           return in.scalar("tube_light_ltc_cv", Args().geometry(nn, view, nn) << alpha << tx.norm << tx.m00 << tx.m02
                                                                               << tx.m20 << tx.m22 << L0 << L1 << R);
+        },
+        [&](const Vec3& nn, const Vec3& view, const LtcTexel& tx, double alpha) {
+          return in.scalar("tube_light_ltc_sheen", Args().geometry(nn, view, nn) << alpha << tx.norm << tx.m00 << tx.m02
+                                                                                 << tx.m20 << tx.m22 << L0 << L1 << R);
         });
   });
 }
 
 Vec3 shadeRect(const ModelEvalInput& in, const Pixel& px, const RectLight& rect) {
-  return shadePlanar(in, px, rect, "rect_light_ltc", "rect_light_ltc_cv");
+  return shadePlanar(in, px, rect, "rect_light_ltc", "rect_light_ltc_cv", "rect_light_ltc_sheen");
 }
 
 Vec3 shadeDisk(const ModelEvalInput& in, const Pixel& px, const DiskLight& disk) {
-  return shadePlanar(in, px, disk, "disk_light_ltc", "disk_light_ltc_cv");
+  return shadePlanar(in, px, disk, "disk_light_ltc", "disk_light_ltc_cv", "disk_light_ltc_sheen");
 }
 
 }  // namespace mb::ref::standard
