@@ -20,6 +20,7 @@ M=.gpu/share/matbricks/materials
 LTC=(--brick tube_ltc_polygon --brick tube_ltc_cv --brick sphere_ltc_polygon --brick sphere_ltc_cv)
 mapfile -t STANDARD < <(grep -l '"model": "standard"' "$M"/*.json)  # the model with rect and disk lights
 PLANAR=(--brick rect_ltc_polygon --brick rect_ltc_cv --brick disk_ltc_polygon --brick disk_ltc_cv)
+SHEEN=(--brick rect_ltc_sheen_cv --brick disk_ltc_sheen_cv --brick sphere_ltc_sheen_cv --brick tube_ltc_sheen_cv)
 step() {  # name, limit in seconds, command...
   local name=$1 limit=$2
   shift 2
@@ -54,4 +55,8 @@ step 18-validate-sphere-tube-fp16-driver 60 "$MB" --device "$DEVICE" validate "$
   --environment none --precision fp16 --fp16 driver
 step 19-preview-sphere-tube 60 "$MB" --device "$DEVICE" preview "${STANDARD[@]}" --lights sphere,tube \
   -o "$O/preview-sphere-tube"
+step 20-validate-sheen-ltc 90 "$MB" --device "$DEVICE" validate "${SHEEN[@]}" --samples 50000
+step 21-validate-sheen-lights 90 "$MB" --device "$DEVICE" validate "$M"/satin_sheen.json \
+  --lights rect,disk,sphere,tube --samples 50000
+step 22-stress-sheen-fp16-driver 60 "$MB" --device "$DEVICE" stress "${SHEEN[@]}" --precision fp16 --fp16 driver
 tar czf "$O.tgz" -C "$O" . && mv "$O.tgz" "$O/all.tgz"
