@@ -124,6 +124,68 @@ std::optional<LtcTube> drawLtcTube(Configs& c, const Vec3& dir, double sinA, dou
   return LtcTube{L0, L1, R, area};
 }
 
+// The model's specular (a metal of base colour 1, `falloff_inverse_square`) under `count` sphere
+// or tube lights shaded by the "ltc" method where it shades them alone (equivalent angular radius
+// >= 2 MB_LTC_BLEND_START, the tube two radii clear of the shading point): the luminance I / A,
+// the table read as the fragment stage reads it, against the lobe's integral over the cap or the
+// capsule (common/area_light_truth.hpp), on configurations drawn as mb_bench_area_lights draws
+// them (half of the lights near the mirror ray): |ours / truth - 1| per light, sorted.
+std::vector<double> specularLtcErrors(bool tube, size_t count, uint32_t seed) {
+  MaterialDesc m = shippedMaterial("filament_plastic");
+  ref::ModelEvalInput in = referenceInput(m, {{"light_falloff", "falloff_inverse_square"}}, {});
+  REQUIRE(in.bound("sphere_light_ltc_cv"));
+  REQUIRE(in.bound("tube_light_ltc_cv"));
+  in.inputs["metallic"] = {1.0};
+  in.inputs["baseColor"] = {1.0, 1.0, 1.0};
+  const auto table = probeLtcTable(test::shippedLibrary());
+  in.fetchLtc = [table](ref::LtcLobe lobe, double NoV, double r) { return table->texel(lobe, NoV, r); };
+  const Vec3 n{0, 0, 1}, intensity{1.0, 1.0, 1.0};
+  const double d = 2.0, falloffRadius = 1e6;
+  Configs c(seed);
+  std::vector<double> errors;
+  while (errors.size() < count) {
+    const DrawnView view = drawView(c);
+    const double roughness = view.roughness, alpha = roughness * roughness;
+    const Vec3 v = view.v, mirror = n * (2 * v.z) - v;
+    const double sinA = std::exp(c.uniform(std::log(0.1), std::log(0.5)));
+    // One draw per statement: the order of draws within an expression is the compiler's.
+    Vec3 dir = c.unit();
+    if (errors.size() % 2) {
+      const Vec3 offset = c.unit();
+      dir = ref::normalize(mirror + offset * ((alpha + sinA) * c.uniform(0, 1)));
+    }
+    ref::ModelEvalInput e = in;
+    e.frame = {n, v, n, Vec3{1, 0, 0}};
+    e.inputs["roughness"] = {roughness};
+    const ref::standard::Pixel px = ref::standard::prepare(e);
+    double truth = 0, irradiance = 0, area = 0;
+    Vec3 shaded;
+    if (!tube) {
+      const double R = sinA * d;
+      const ref::arealights::LobeIntegrals t =
+          ref::arealights::sphereLobe(ref::makeGeometry(n, v, dir), alpha, sinA, 64);
+      truth = t.specular;
+      irradiance = t.diffuse;
+      area = ref::kPi * R * R;
+      shaded = ref::standard::shadeSphere(e, px, ref::SphereLight{dir * d, R, intensity, falloffRadius});
+    } else {
+      const std::optional<LtcTube> drawn = drawLtcTube(c, dir, sinA, d);
+      if (!drawn) continue;  // where the representative point takes over or is mixed in
+      const Vec3 L0 = drawn->L0, L1 = drawn->L1;
+      const double R = drawn->R;
+      area = drawn->area;
+      const ref::arealights::LobeIntegrals tl = ref::arealights::tubeLobe(ref::makeGeometry(n, v, n), alpha, L0, L1, R);
+      truth = tl.specular;
+      irradiance = tl.diffuse;
+      shaded = ref::standard::shadeTube(e, px, ref::TubeLight{L0, L1, R, intensity, falloffRadius});
+    }
+    if (!(irradiance > 0.0) || !(truth > 1e-6 * irradiance)) continue;  // below the horizon
+    errors.push_back(std::abs(shaded.x / (truth / area * px.energyCompensation.x) - 1.0));
+  }
+  std::sort(errors.begin(), errors.end());
+  return errors;
+}
+
 // The sheen layer of satin_sheen under `count` `shape` lights (rect, disk, and sphere and tube by
 // the ltc method where it shades them alone), the sheen table read as the fragment stage reads
 // it, against the sheen lobe (Charlie D, Ashikhmin V, n.l) integrated adaptively over the light
@@ -501,73 +563,29 @@ TEST_CASE("lights: the model's rectangle and disk specular meets the area-light 
 
 TEST_CASE("lights: the model's sphere and tube specular by the ltc method meets the area-light bound",
           "[model-lights][ltc]") {
-  // As the rectangle and disk above, for sphere and tube lights shaded by the "ltc" method where
-  // it shades them alone (equivalent angular radius >= 2 MB_LTC_BLEND_START, the tube two radii
-  // clear of the shading point): the luminance I / A (inverse-square falloff), the table read as
-  // the fragment stage reads it, against the lobe's integral over the cap or the capsule
-  // (common/area_light_truth.hpp), on configurations drawn as mb_bench_area_lights draws them.
-  MaterialDesc m = shippedMaterial("filament_plastic");
-  ref::ModelEvalInput in = referenceInput(m, {{"light_falloff", "falloff_inverse_square"}}, {});
-  REQUIRE(in.bound("sphere_light_ltc_cv"));
-  REQUIRE(in.bound("tube_light_ltc_cv"));
-  in.inputs["metallic"] = {1.0};
-  in.inputs["baseColor"] = {1.0, 1.0, 1.0};
-  const auto table = probeLtcTable(test::shippedLibrary());
-  in.fetchLtc = [table](ref::LtcLobe lobe, double NoV, double r) { return table->texel(lobe, NoV, r); };
-  const Vec3 n{0, 0, 1}, intensity{1.0, 1.0, 1.0};
-  const double d = 2.0, falloffRadius = 1e6;
-  Configs c(31);
+  // Median |ratio - 1| <= 1 % and 95th percentile <= 5 %, as the rectangle and disk above, on
+  // 1000 spheres (with 160 the 95th percentile was 2.7 % in the Release build and 5.05 % in the
+  // sanitizer build, which drew other lights). Tubes: the median here, the 95th percentile on
+  // 3000 tubes in the next test (a few hundred give a noisy estimate of this steep tail).
   for (bool tube : {false, true}) {
-    std::vector<double> errors;
-    // 95th percentiles of a heavy-tailed error: with 160 lights each the spheres' was 2.7 % in
-    // the Release build and 5.05 % in the sanitizer build, which drew other lights.
-    while (errors.size() < (tube ? 600u : 1000u)) {
-      const DrawnView view = drawView(c);
-      const double roughness = view.roughness, alpha = roughness * roughness;
-      const Vec3 v = view.v, mirror = n * (2 * v.z) - v;
-      const double sinA = std::exp(c.uniform(std::log(0.1), std::log(0.5)));
-      // One draw per statement: the order of draws within an expression is the compiler's.
-      Vec3 dir = c.unit();
-      if (errors.size() % 2) {
-        const Vec3 offset = c.unit();
-        dir = ref::normalize(mirror + offset * ((alpha + sinA) * c.uniform(0, 1)));
-      }
-      ref::ModelEvalInput e = in;
-      e.frame = {n, v, n, Vec3{1, 0, 0}};
-      e.inputs["roughness"] = {roughness};
-      const ref::standard::Pixel px = ref::standard::prepare(e);
-      double truth = 0, irradiance = 0, area = 0;
-      Vec3 shaded;
-      if (!tube) {
-        const double R = sinA * d;
-        const ref::arealights::LobeIntegrals t =
-            ref::arealights::sphereLobe(ref::makeGeometry(n, v, dir), alpha, sinA, 64);
-        truth = t.specular;
-        irradiance = t.diffuse;
-        area = ref::kPi * R * R;
-        shaded = ref::standard::shadeSphere(e, px, ref::SphereLight{dir * d, R, intensity, falloffRadius});
-      } else {
-        const std::optional<LtcTube> drawn = drawLtcTube(c, dir, sinA, d);
-        if (!drawn) continue;  // where the representative point takes over or is mixed in
-        const Vec3 L0 = drawn->L0, L1 = drawn->L1;
-        const double R = drawn->R;
-        area = drawn->area;
-        const ref::arealights::LobeIntegrals tl =
-            ref::arealights::tubeLobe(ref::makeGeometry(n, v, n), alpha, L0, L1, R);
-        truth = tl.specular;
-        irradiance = tl.diffuse;
-        shaded = ref::standard::shadeTube(e, px, ref::TubeLight{L0, L1, R, intensity, falloffRadius});
-      }
-      if (!(irradiance > 0.0) || !(truth > 1e-6 * irradiance)) continue;  // below the horizon
-      errors.push_back(std::abs(shaded.x / (truth / area * px.energyCompensation.x) - 1.0));
-    }
-    std::sort(errors.begin(), errors.end());
+    const std::vector<double> errors = specularLtcErrors(tube, tube ? 160 : 1000, 31);
     const double median = errors[errors.size() / 2], p95 = errors[errors.size() * 95 / 100];
     INFO((tube ? "tube" : "sphere") << ": median " << median << ", 95th percentile " << p95 << ", worst "
                                     << errors.back());
     CHECK(median <= 0.01);
-    CHECK(p95 <= 0.05);
+    if (!tube) CHECK(p95 <= 0.05);
   }
+}
+
+TEST_CASE("lights: the model's tube specular by the ltc method meets the area-light bound on 3000 tubes",
+          "[model-lights][ltc][release-pass]") {
+  // The previous test's tubes, enough of them for the 95th percentile (its code path runs under
+  // the sanitizers there).
+  const std::vector<double> errors = specularLtcErrors(true, 3000, 43);
+  const double median = errors[errors.size() / 2], p95 = errors[errors.size() * 95 / 100];
+  INFO("tube: median " << median << ", 95th percentile " << p95 << ", worst " << errors.back());
+  CHECK(median <= 0.01);
+  CHECK(p95 <= 0.05);
 }
 
 TEST_CASE("lights: the model's sheen under area lights by its own LTC meets the area-light bound",
