@@ -92,6 +92,12 @@ Vec3 shadeWith(ref::ModelEvalInput in, double roughness,
 
 const Vec3 kIntensity{1.5, 0.9, 0.4};
 
+// The reference reads the shipped LTC tables as the fragment stage reads them.
+void readShippedLtcTables(ref::ModelEvalInput& in) {
+  const auto table = probeLtcTable(test::shippedLibrary());
+  in.fetchLtc = [table](ref::LtcLobe lobe, double NoV, double r) { return table->texel(lobe, NoV, r); };
+}
+
 // A roughness of 0.05-1 and a view of n.v 0.05-1 about n = z, as mb_bench_area_lights draws them.
 struct DrawnView {
   double roughness;
@@ -137,8 +143,7 @@ std::vector<double> specularLtcErrors(bool tube, size_t count, uint32_t seed) {
   REQUIRE(in.bound("tube_light_ltc_cv"));
   in.inputs["metallic"] = {1.0};
   in.inputs["baseColor"] = {1.0, 1.0, 1.0};
-  const auto table = probeLtcTable(test::shippedLibrary());
-  in.fetchLtc = [table](ref::LtcLobe lobe, double NoV, double r) { return table->texel(lobe, NoV, r); };
+  readShippedLtcTables(in);
   const Vec3 n{0, 0, 1}, intensity{1.0, 1.0, 1.0};
   const double d = 2.0, falloffRadius = 1e6;
   Configs c(seed);
@@ -200,8 +205,7 @@ std::vector<double> sheenLtcErrors(const std::string& shape, size_t count, uint3
        {"rect_light_ltc_sheen", "disk_light_ltc_sheen", "sphere_light_ltc_sheen", "tube_light_ltc_sheen"})
     REQUIRE(in.bound(role));
   in.features.insert("sheen");
-  const auto table = probeLtcTable(test::shippedLibrary());
-  in.fetchLtc = [table](ref::LtcLobe lobe, double NoV, double r) { return table->texel(lobe, NoV, r); };
+  readShippedLtcTables(in);
   namespace rl = ref::ltc;
   const Vec3 n{0, 0, 1}, one{1.0, 1.0, 1.0};
   const double d = 2.0, falloffRadius = 1e6;
@@ -523,8 +527,7 @@ TEST_CASE("lights: the model's rectangle and disk specular meets the area-light 
   ref::ModelEvalInput in = referenceInput(m);
   in.inputs["metallic"] = {1.0};
   in.inputs["baseColor"] = {1.0, 1.0, 1.0};
-  const auto table = probeLtcTable(test::shippedLibrary());
-  in.fetchLtc = [table](ref::LtcLobe lobe, double NoV, double r) { return table->texel(lobe, NoV, r); };
+  readShippedLtcTables(in);
   namespace rl = ref::ltc;
   const Vec3 n{0, 0, 1}, luminance{1.0, 1.0, 1.0};
   Configs c(29);
@@ -620,8 +623,7 @@ TEST_CASE("lights: the ltc method mixes in the representative point on small lig
   MaterialDesc m = shippedMaterial("filament_plastic");
   ref::ModelEvalInput ltc = referenceInput(m, {}, {});
   ref::ModelEvalInput rp = referenceInput(m);
-  const auto table = probeLtcTable(test::shippedLibrary());
-  ltc.fetchLtc = [table](ref::LtcLobe lobe, double NoV, double r) { return table->texel(lobe, NoV, r); };
+  readShippedLtcTables(ltc);
   Configs c(37);
   for (int i = 0; i < 50; ++i) {
     c.frame(ltc);
