@@ -266,11 +266,7 @@ json measureLtcAreaLights(const mb::ltc::Table& table, const SphereLightBricks& 
 
 std::string ltcMarkdown(const json& section) {
   std::ostringstream md;
-  auto num = [](double x) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.3g", x);
-    return std::string(b);
-  };
+  auto num = [](double x) { return threeDigits(x); };
   const std::map<std::string, std::string> titles = {{"sphere", "Sphere, LTC and representative point"},
                                                      {"tube", "Tube, LTC and representative point"},
                                                      {"rect", "Rectangle, LTC"},

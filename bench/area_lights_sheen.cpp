@@ -134,11 +134,7 @@ json measureLtcSheen(const mb::ltc::Table& table, int samples, uint64_t seed) {
 
 std::string ltcSheenMarkdown(const json& section) {
   std::ostringstream md;
-  auto num = [](double x) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.3g", x);
-    return std::string(b);
-  };
+  auto num = [](double x) { return threeDigits(x); };
   md << "**Sheen (Charlie D, Ashikhmin V)** (ratio to the brute-force integral; partly below the horizon included; "
      << section.at("skipped_below_1e-6_of_irradiance").get<int>()
      << " lights whose sheen is below 1e-6 of their irradiance left out)\n\n"

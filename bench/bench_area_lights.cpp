@@ -89,11 +89,7 @@ const double kPiD = std::numbers::pi;
 // its generated-part markers when the file has them, else the whole file.
 void writeMarkdown(const json& out, const std::string& path) {
   std::ostringstream md;
-  auto num = [](double x) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.3g", x);
-    return std::string(b);
-  };
+  auto num = [](double x) { return mb::bench::threeDigits(x); };
   auto table = [&](const char* title, const json& rows, const char* what) {
     md << "**" << title << "** (" << what << ")\n\n"
        << "| composition | ns/eval | SPIR-V instructions | samples | median | 5 % | 95 % | min | max | mean \\|ratio − 1\\| |\n"

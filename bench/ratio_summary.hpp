@@ -4,11 +4,19 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 namespace mb::bench {
+
+// A figure of the benches' Markdown tables: three significant digits.
+inline std::string threeDigits(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", x);
+  return b;
+}
 
 // ratio = approximation / truth, summarized.
 struct Summary {

@@ -245,7 +245,7 @@ ProbeScene probeSceneOf(const Permutation& perm, bool illuminanceInput, EmitMode
   scene.environment = perm.environment;
   scene.illuminanceInput = illuminanceInput;
   scene.ltcTable = perm.readsLtcTable();
-  scene.ltcSheen = scene.ltcTable && perm.material->has("sheen");
+  scene.ltcSheen = perm.readsSheenLtcTable();
   scene.ltcTableBuffer = mode == EmitMode::Probe && scene.ltcTable;
   bool slice = perm.lights == std::vector<LightType>{LightType::Dir} && perm.environment == EnvironmentMode::None;
   scene.fullFrame = !slice || !perm.material->features.empty();

@@ -22,6 +22,8 @@ bool Permutation::readsLtcTable() const {
   return std::any_of(lights.begin(), lights.end(), [&](LightType t) { return lightReadsLtcTable(*material, t); });
 }
 
+bool Permutation::readsSheenLtcTable() const { return readsLtcTable() && material->has("sheen"); }
+
 std::string Permutation::key() const {
   std::string k = material->name + "." + material->model + "." + lightsKey() + "." + environmentModeName(environment) +
                   "." + precisionName(precision);

@@ -33,6 +33,8 @@ struct Permutation {
   bool hasLight(LightType type) const;
   // A light of the permutation reads the LTC table (lightReadsLtcTable).
   bool readsLtcTable() const;
+  // ...and its material has a sheen, whose lobe reads the sheen's LTC table too.
+  bool readsSheenLtcTable() const;
 };
 
 // `light` reads the LTC table when `material` shades it: a rectangle or disk, or a light the

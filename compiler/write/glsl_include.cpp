@@ -73,7 +73,7 @@ std::string engineInclude(const PackagedPermutation& p) {
         << (perm.precision == Precision::Fp16 ? ", in half types (f16vec4, f16vec2)" : "") << ":\n"
         << "//   vec4 mb_fetch_ltc_matrix(float NoV, float perceptualRoughness);   M^-1's (m00, m02, m20, m22)\n"
         << "//   vec2 mb_fetch_ltc_magnitude(float NoV, float perceptualRoughness);   (norm, fresnel)\n";
-  if (perm.readsLtcTable() && perm.material->has("sheen"))
+  if (perm.readsSheenLtcTable())
     out << "//   vec4 mb_fetch_ltc_sheen_matrix(float NoV, float perceptualRoughness);   the sheen table's M^-1\n"
         << "//   vec2 mb_fetch_ltc_sheen_magnitude(float NoV, float perceptualRoughness);   (norm, 0)\n";
   out << "// Entry points (docs/models.md \"GLSL contract\"): MaterialInputs materialInputs(...),\n"

@@ -348,13 +348,15 @@ inline double ggxLobeLocal(const Vec3& v, double alpha, const Vec3& l) {
 // (Estevez & Kulla 2017, eq. 2) times V = 1 / (4 (n.l + n.v - n.l n.v)) (Neubelt & Pettineo
 // 2013) times n.l; 0 below the horizon. sin^(1/alpha) from sin^2 = (H.x^2 + H.y^2) / |H|^2 of
 // the unnormalized half vector, exact where theta_h nears 90 degrees (D's peak).
+inline double charlieD(double sin2, double alpha) {
+  return (2.0 + 1.0 / alpha) * std::pow(sin2, 0.5 / alpha) / (2.0 * kPi);
+}
 inline double charlieLobeLocal(const Vec3& v, double alpha, const Vec3& l) {
   if (!(l.z > 0.0)) return 0.0;
   const Vec3 H = v + l;
   const double HH = dot(H, H);
   if (!(HH > 0.0)) return 0.0;
-  const double sin2 = (H.x * H.x + H.y * H.y) / HH;
-  const double D = (2.0 + 1.0 / alpha) * std::pow(sin2, 0.5 / alpha) / (2.0 * kPi);
+  const double D = charlieD((H.x * H.x + H.y * H.y) / HH, alpha);
   const double NoV = std::max(v.z, kMinNoV), NoL = l.z;
   return D * NoL / (4.0 * (NoL + NoV - NoL * NoV));
 }
