@@ -163,6 +163,11 @@ TEST_CASE("matbricks ltc fits the same table on one thread and on two", "[ltc][c
   REQUIRE(sheen.exitCode == 0);
   CHECK(ltc::loadTable((dir / "s.json").string()).settings.lobe == ltc::LobeKind::Charlie);
   CHECK(test::readFile(dir / "s.json") != first);
+  // A lobe it does not fit is refused, and nothing is written.
+  const auto unknown = test::runCli("ltc -q --lobe beckmann --size 2 -o " + (dir / "b.json").string());
+  CHECK(unknown.exitCode != 0);
+  CHECK(unknown.output.find("--lobe") != std::string::npos);
+  CHECK(!std::filesystem::exists(dir / "b.json"));
   // A directory where the table should go is refused, and left as it was.
   std::filesystem::create_directories(dir / "d");
   const auto refused = test::runCli("ltc -q --size 2 -o " + (dir / "d").string());
