@@ -59,4 +59,9 @@ step 20-validate-sheen-ltc 90 "$MB" --device "$DEVICE" validate "${SHEEN[@]}" --
 step 21-validate-sheen-lights 90 "$MB" --device "$DEVICE" validate "$M"/satin_sheen.json \
   --lights rect,disk,sphere,tube --samples 50000
 step 22-stress-sheen-fp16-driver 60 "$MB" --device "$DEVICE" stress "${SHEEN[@]}" --precision fp16 --fp16 driver
+# The emitted GLSL 450 and ESSL 3.10 through the driver's own GLSL compiler (EGL, surfaceless), and
+# the HLSL through glslang's HLSL front end to the device's Vulkan: docs/targets.md.
+step 23-validate-glsl450 90 "$MB" validate "$M"/*.json --target glsl450
+step 24-validate-essl310 90 "$MB" validate "$M"/*.json --target essl310
+step 25-validate-hlsl 90 "$MB" --device "$DEVICE" validate "$M"/*.json --target hlsl
 tar czf "$O.tgz" -C "$O" . && mv "$O.tgz" "$O/all.tgz"
