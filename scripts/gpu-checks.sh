@@ -61,8 +61,8 @@ step 21-validate-sheen-lights 90 "$MB" --device "$DEVICE" validate "$M"/satin_sh
 step 22-stress-sheen-fp16-driver 60 "$MB" --device "$DEVICE" stress "${SHEEN[@]}" --precision fp16 --fp16 driver
 # The emitted GLSL 450 and ESSL 3.10 through the driver's own GLSL compiler (EGL, surfaceless), and
 # the HLSL through glslang's HLSL front end to the device's Vulkan: docs/targets.md.
-# Two materials with all seven lights and no environment: the whole 35 take ~8 minutes per GL target
-# on the H200 (most of it the driver's compile of each program).
+# Two materials with all seven lights and no environment: the NVIDIA GL driver's compile of one such
+# permutation took 15-66 s on the H200 (docs/devices.md), so all 35 do not fit a lease.
 TWO=("$M"/satin_sheen.json "$M"/worn_car_paint.json)
 step 23-validate-glsl450 90 "$MB" validate "${TWO[@]}" --target glsl450 --environment none
 step 24-validate-essl310 90 "$MB" validate "${TWO[@]}" --target essl310 --environment none
