@@ -154,6 +154,7 @@ StageArtifacts compileStage(const std::string& glsl, const std::string& displayN
   a.spirv = compileComputeGlsl(glsl, displayName, options).spirv;
   for (Target t : targets) {
     const std::string& name = targetName(t);
+    if (options.stage == ShaderStage::Compute && !targetInfo(t).compute) continue;  // webgl2: fragment only
     if (!targetInfo(t).float16 && !mediumpGlsl.empty()) {
       // RelaxedPrecision survives spirv-opt's passes, and no 16-bit constant is involved.
       CompileOptions relaxed;

@@ -1,5 +1,6 @@
 #include "compile/target_checks.hpp"
 
+#include <cctype>
 #include <sstream>
 
 #include <glslang/Public/ResourceLimits.h>
@@ -81,6 +82,51 @@ std::string checkGlsl(const std::string& source, bool es, bool fragment) {
   return reparse(source,
                  {glslang::EShSourceGlsl, glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450,
                   glslang::EShTargetSpv_1_0, es ? 310 : 450, EShMsgSpvRules, SPV_ENV_OPENGL_4_5, stageOf(fragment)});
+}
+
+namespace {
+
+// The WebGL 2.0 identifier rules (target_checks.hpp checkWebgl2), over the source's words.
+std::string webglIdentifierProblem(const std::string& source) {
+  constexpr size_t kMaxIdentifier = 1024;
+  auto wordChar = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (size_t i = 0; i < source.size();) {
+    if (!wordChar(source[i])) {
+      ++i;
+      continue;
+    }
+    size_t end = i;
+    while (end < source.size() && wordChar(source[end])) ++end;
+    const std::string word = source.substr(i, end - i);
+    if (!std::isdigit(static_cast<unsigned char>(word[0]))) {
+      if (word.rfind("webgl_", 0) == 0 || word.rfind("_webgl_", 0) == 0)
+        return "WebGL 2.0: identifier '" + word + "' uses the reserved prefix webgl_ or _webgl_";
+      if (word.size() > kMaxIdentifier)
+        return "WebGL 2.0: an identifier of " + std::to_string(word.size()) + " characters (at most 1024)";
+    }
+    i = end;
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string checkWebgl2(const std::string& source, ShaderStage stage) {
+  const std::string version = "#version 300 es\n";
+  if (source.rfind(version, 0) != 0) return "expected the source to start with '#version 300 es'";
+  if (stage == ShaderStage::Compute) return "WebGL 2.0 has no compute shaders";
+  ensureGlslangInitialized();
+  const EShLanguage language = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
+  glslang::TShader shader(language);
+  const char* str = source.c_str();
+  shader.setStrings(&str, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, language, glslang::EShClientNone, 0);
+  if (!shader.parse(GetDefaultResources(), 300, true, EShMsgDefault))
+    return "glslang: " + firstError(shader.getInfoLog());
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(EShMsgDefault)) return "glslang link: " + firstError(program.getInfoLog());
+  return webglIdentifierProblem(source);
 }
 
 namespace {

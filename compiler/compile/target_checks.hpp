@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "compile/glsl_compiler.hpp"
 #include "compile/spvc_module.hpp"
 
 namespace mb {
@@ -12,6 +13,12 @@ namespace mb {
 // glslang reparses a GLSL compute (or, with `fragment`, fragment) shader for OpenGL (desktop
 // 450, or ES 310 with `es`), generates SPIR-V for OpenGL and runs spirv-val (OpenGL 4.5 rules).
 std::string checkGlsl(const std::string& source, bool es, bool fragment = false);
+// WebGL 2.0's ESSL 3.00 vertex or fragment shader: glslang parses and links it as ESSL 3.00
+// (no SPIR-V: glslang makes SPIR-V only from ES 3.10 on), which refuses what ES 3.00 lacks
+// (binding qualifiers, storage buffers, compute); then the WebGL 2.0 spec's own rules that
+// glslang does not know (section 5 "Differences Between WebGL and OpenGL ES 3.0"): no
+// identifier starting with "webgl_" or "_webgl_", none longer than 1024 characters.
+std::string checkWebgl2(const std::string& source, ShaderStage stage);
 // glslang's HLSL front end reparses a compute (or fragment) shader (entry point "main"),
 // generates SPIR-V for Vulkan 1.1 and runs spirv-val on it.
 std::string checkHlsl(const std::string& source, bool fragment = false);

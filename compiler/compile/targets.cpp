@@ -83,9 +83,14 @@ void setOptions(const SpvcModule& m, spvc_compiler_options o, const TargetInfo& 
 
 // The language's checker (target_checks.hpp): "" when the output passes.
 std::string check(const std::string& source, const SpvcModule& m, const TargetInfo& info) {
-  const bool fragment = spvc_compiler_get_execution_model(m.compiler()) == SpvExecutionModelFragment;
+  const SpvExecutionModel model = spvc_compiler_get_execution_model(m.compiler());
+  const bool fragment = model == SpvExecutionModelFragment;
   switch (info.language) {
     case TargetLanguage::Glsl:
+      if (!info.compute)
+        return checkWebgl2(source, fragment                           ? ShaderStage::Fragment
+                                   : model == SpvExecutionModelVertex ? ShaderStage::Vertex
+                                                                      : ShaderStage::Compute);
       return checkGlsl(source, info.es, fragment);
     case TargetLanguage::Hlsl:
       return checkHlsl(source, fragment);

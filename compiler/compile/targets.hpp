@@ -5,6 +5,8 @@
 //   glsl450  glslang reparses it as a GLSL 450 compute shader and generates SPIR-V
 //   essl310  glslang reparses it as ESSL 3.10 (#version 310 es) and generates SPIR-V
 //   hlsl     glslang's HLSL front end reparses it (shader model 6.0 source) and generates SPIR-V
+//   webgl2   (fragment and vertex shaders only) glslang parses and links it as ESSL 3.00, plus
+//            the WebGL 2.0 identifier rules (target_checks.hpp checkWebgl2)
 //   msl      no Metal compiler runs on Debian: SPIRV-Cross must succeed, and the kernel's entry
 //            point and the [[buffer(n)]] index of every buffer it uses must appear in the source
 #pragma once

@@ -7,7 +7,7 @@ namespace mb {
 namespace {
 
 // The one place a target is described. SPIR-V is what every other target is made from.
-constexpr std::array<TargetInfo, 5> kTargets{{
+constexpr std::array<TargetInfo, 6> kTargets{{
     {Target::Spirv, "spirv", ".spv", ".spv", TargetLanguage::Spirv, false, 0, true, "", ""},
     {Target::Glsl450, "glsl450", ".comp", ".frag", TargetLanguage::Glsl, false, 450, true, " non-vulkan push-as-ubo",
      ""},
@@ -15,6 +15,10 @@ constexpr std::array<TargetInfo, 5> kTargets{{
      " non-vulkan push-as-ubo fp16-as-mediump", ""},
     {Target::Hlsl, "hlsl", ".hlsl", ".hlsl", TargetLanguage::Hlsl, false, 60, true, " min16float", ".hlsl"},
     {Target::Msl, "msl", ".metal", ".metal", TargetLanguage::Msl, false, 20300, true, " macos", ".metal"},
+    // WebGL 2.0 runs ESSL 3.00 (WebGL 2.0 spec, "Differences Between WebGL and OpenGL ES 3.0"):
+    // no compute, no binding qualifiers; blocks and samplers are bound by name.
+    {Target::Webgl2, "webgl2", "", ".webgl2.frag", TargetLanguage::Glsl, true, 300, false,
+     " non-vulkan push-as-ubo fp16-as-mediump no-bindings", "", false},
 }};
 
 }  // namespace

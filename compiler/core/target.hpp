@@ -13,7 +13,7 @@
 namespace mb {
 
 // In package order: the manifest's "targets", a package's files and the cache key list them so.
-enum class Target { Spirv, Glsl450, Essl310, Hlsl, Msl };
+enum class Target { Spirv, Glsl450, Essl310, Hlsl, Msl, Webgl2 };
 
 // The language a target is written in: SPIRV-Cross's backend for it and its checker
 // (compile/target_checks.hpp). Spirv is glslang's own output, checked by spirv-val.
@@ -22,10 +22,10 @@ enum class TargetLanguage { Spirv, Glsl, Hlsl, Msl };
 struct TargetInfo {
   Target target;
   const char* name;
-  const char* kernelExtension;    // of the compute kernel's file in the package
+  const char* kernelExtension;    // of the compute kernel's file in the package ("": no kernel)
   const char* fragmentExtension;  // of the fragment shader's file in the package
   TargetLanguage language;
-  bool es;  // Glsl: the ES profile (#version 310 es)
+  bool es;  // Glsl: the ES profile (#version 310 es, 300 es)
   // GLSL/ESSL #version, HLSL shader model (60 = 6.0), MSL SPVC_MAKE_MSL_VERSION (20300 = 2.3.0).
   unsigned version;
   // False: the language has no 16-bit float type, so an fp16 permutation is cross-compiled
@@ -37,6 +37,9 @@ struct TargetInfo {
   // The engine include's extension (include/<key><ext>, compile/engine_includes.hpp), made
   // for this target when it is asked for; "" when the target has none of its own.
   const char* includeExtension;
+  // False: the language has no compute shaders (WebGL2's ESSL 3.00), so only the fragment
+  // stage is built for it, and with it the reference vertex shader (compile/webgl2.hpp).
+  bool compute = true;
 };
 
 const TargetInfo& targetInfo(Target t);
