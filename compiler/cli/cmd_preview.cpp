@@ -9,6 +9,7 @@
 
 #include "cli/cli_common.hpp"
 #include "permute/axes.hpp"
+#include "preview/draw_passes.hpp"
 #include "preview/preview.hpp"
 #include "preview/preview_scene.hpp"
 #include "write/package_writer.hpp"
@@ -24,6 +25,7 @@ struct PreviewArgs {
   std::string precision = "fp32";           // options.precision, parsed once the command line is read
   std::string environmentMode = "ibl_lut";  // options.environmentMode, likewise
   std::vector<std::string> lights{"dir"};   // options.lights, checked with the other options
+  std::string target = "spirv";             // options.target, likewise
   preview::PreviewOptions options;
   bool json = false;
 };
@@ -64,6 +66,7 @@ nlohmann::json resultJson(const preview::PreviewResult& r, const std::string& gp
           {"reference_ms", r.referenceMs},
           {"compare_ms", r.compareMs},
           {"tonemap_ms", r.tonemapMs},
+          {"drawn_by", r.device},
           {"passed", r.passed()}};
 }
 
@@ -84,6 +87,7 @@ void printResult(const preview::PreviewResult& r, const std::string& gpuPng) {
       "tolerance max %.3g, mean %.3g\n",
       r.samplerPrecision.subTexelBits, r.samplerPrecision.mipmapBits, r.samplingMax, r.samplingOverArithmeticMax,
       r.samplingOverArithmeticMean);
+  std::printf("  drawn by %s\n", r.device.c_str());
   std::printf(
       "  compile %.0f ms, pipelines %.0f ms, render %.0f ms, attributes %.0f ms, reference %.0f ms, "
       "tonemap %.0f ms: %s\n",
@@ -93,6 +97,7 @@ void printResult(const preview::PreviewResult& r, const std::string& gpuPng) {
 int runPreview(PreviewArgs& a, const GlobalOptions& g) {
   a.options.precision = *parsePrecision(a.precision);                    // checked by --precision's IsMember
   a.options.environmentMode = *parseEnvironmentMode(a.environmentMode);  // checked by --environment-mode's IsMember
+  a.options.target = *parseTarget(a.target);                             // checked by --target's IsMember
   const ShaderLibrary lib = loadLibrary(g);
   const std::vector<MaterialDesc> materials = loadMaterials(a.materials, lib, g);
   std::vector<const MaterialDesc*> pointers;
@@ -168,6 +173,7 @@ int runPreview(PreviewArgs& a, const GlobalOptions& g) {
   }
   if (a.json) {
     std::cout << nlohmann::json{{"environment", a.environment},
+                                {"target", a.target},
                                 {"environment_build_ms", env.buildMs},
                                 {"device", gpu->deviceName()},
                                 {"previews", out},
@@ -203,6 +209,11 @@ Command addPreviewCommand(CLI::App& app, GlobalOptions& g) {
       ->delimiter(',');
   cmd->add_option("--environment-mode", args->environmentMode, "The permutation's environment mode (default: ibl_lut)")
       ->check(CLI::IsMember(allEnvironmentModeNames()));
+  cmd->add_option("--target", args->target,
+                  "Language the spheres are drawn in: spirv (default; the Vulkan device), glsl450 or essl310 (the "
+                  "driver's GLSL compiler, OpenGL 4.5 core / ES 3.1 through EGL) or webgl2 (WebGL 2.0 in headless "
+                  "Chromium). docs/preview.md")
+      ->check(CLI::IsMember(targetNames(preview::previewTargets())));
   cmd->add_option("--precision", args->precision, "The permutation's precision (default: fp32)")
       ->check(CLI::IsMember(allPrecisionNames()));
   cmd->add_option("--sweep", args->options.sweep, "A row of spheres sweeping this parameter over its range");

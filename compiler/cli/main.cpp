@@ -5,6 +5,7 @@
 #include "compile/glsl_compiler.hpp"
 #include "compile/targets.hpp"
 #include "glrun/gl_compute.hpp"
+#include "webgl/webgl_draw.hpp"
 
 using namespace mb;
 using namespace mb::cli;
@@ -63,6 +64,9 @@ int main(int argc, char** argv) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitDeviceError;
   } catch (const gl::GlError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitDeviceError;
+  } catch (const webgl::WebglError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitDeviceError;
   } catch (const std::exception& e) {

@@ -70,9 +70,13 @@ std::string reparse(const std::string& text, const Reparse& r, std::vector<uint3
 
 EShLanguage stageOf(bool fragment) { return fragment ? EShLangFragment : EShLangCompute; }
 
+EShLanguage languageOf(ShaderStage stage) {
+  return stage == ShaderStage::Vertex ? EShLangVertex : stage == ShaderStage::Fragment ? EShLangFragment : EShLangCompute;
+}
+
 }  // namespace
 
-std::string checkGlsl(const std::string& source, bool es, bool fragment) {
+std::string checkGlsl(const std::string& source, bool es, ShaderStage stage) {
   // The #version line decides how glslang parses: check that it is the target's.
   const std::string version = es ? "#version 310 es\n" : "#version 450\n";
   if (source.rfind(version, 0) != 0)
@@ -81,7 +85,7 @@ std::string checkGlsl(const std::string& source, bool es, bool fragment) {
   // to what a GL/GLES driver's compiler accepts.
   return reparse(source,
                  {glslang::EShSourceGlsl, glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450,
-                  glslang::EShTargetSpv_1_0, es ? 310 : 450, EShMsgSpvRules, SPV_ENV_OPENGL_4_5, stageOf(fragment)});
+                  glslang::EShTargetSpv_1_0, es ? 310 : 450, EShMsgSpvRules, SPV_ENV_OPENGL_4_5, languageOf(stage)});
 }
 
 namespace {
@@ -116,7 +120,7 @@ std::string checkWebgl2(const std::string& source, ShaderStage stage) {
   if (source.rfind(version, 0) != 0) return "expected the source to start with '#version 300 es'";
   if (stage == ShaderStage::Compute) return "WebGL 2.0 has no compute shaders";
   ensureGlslangInitialized();
-  const EShLanguage language = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
+  const EShLanguage language = languageOf(stage);
   glslang::TShader shader(language);
   const char* str = source.c_str();
   shader.setStrings(&str, 1);

@@ -10,9 +10,9 @@
 
 namespace mb {
 
-// glslang reparses a GLSL compute (or, with `fragment`, fragment) shader for OpenGL (desktop
+// glslang reparses a GLSL shader of `stage` for OpenGL (desktop
 // 450, or ES 310 with `es`), generates SPIR-V for OpenGL and runs spirv-val (OpenGL 4.5 rules).
-std::string checkGlsl(const std::string& source, bool es, bool fragment = false);
+std::string checkGlsl(const std::string& source, bool es, ShaderStage stage = ShaderStage::Compute);
 // WebGL 2.0's ESSL 3.00 vertex or fragment shader: glslang parses and links it as ESSL 3.00
 // (no SPIR-V: glslang makes SPIR-V only from ES 3.10 on), which refuses what ES 3.00 lacks
 // (binding qualifiers, storage buffers, compute); then the WebGL 2.0 spec's own rules that

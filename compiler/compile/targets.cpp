@@ -85,13 +85,12 @@ void setOptions(const SpvcModule& m, spvc_compiler_options o, const TargetInfo& 
 std::string check(const std::string& source, const SpvcModule& m, const TargetInfo& info) {
   const SpvExecutionModel model = spvc_compiler_get_execution_model(m.compiler());
   const bool fragment = model == SpvExecutionModelFragment;
+  const ShaderStage stage = fragment                          ? ShaderStage::Fragment
+                            : model == SpvExecutionModelVertex ? ShaderStage::Vertex
+                                                               : ShaderStage::Compute;
   switch (info.language) {
     case TargetLanguage::Glsl:
-      if (!info.compute)
-        return checkWebgl2(source, fragment                           ? ShaderStage::Fragment
-                                   : model == SpvExecutionModelVertex ? ShaderStage::Vertex
-                                                                      : ShaderStage::Compute);
-      return checkGlsl(source, info.es, fragment);
+      return info.compute ? checkGlsl(source, info.es, stage) : checkWebgl2(source, stage);
     case TargetLanguage::Hlsl:
       return checkHlsl(source, fragment);
     case TargetLanguage::Msl:

@@ -8,13 +8,17 @@ std::shared_ptr<harness::GpuTexture> uploadEnvironmentCube(harness::VulkanHarnes
   return harness::uploadTexture(gpu, true, levels);
 }
 
-std::shared_ptr<harness::GpuTexture> uploadDfgLut(harness::VulkanHarness& gpu, const lut::LutTable& table) {
-  harness::TextureLevel level{table.size, table.size, {}};
-  level.rgba.reserve(size_t{table.size} * table.size * 4);
+std::vector<float> dfgLutTexels(const lut::LutTable& table) {
+  std::vector<float> rgba;
+  rgba.reserve(size_t{table.size} * table.size * 4);
   for (uint32_t j = 0; j < table.size; ++j)
     for (uint32_t i = 0; i < table.size; ++i)
-      level.rgba.insert(level.rgba.end(), {table.at(i, j, 0), table.at(i, j, 1), table.at(i, j, 2), 1.0f});
-  return harness::uploadTexture(gpu, false, {level});
+      rgba.insert(rgba.end(), {table.at(i, j, 0), table.at(i, j, 1), table.at(i, j, 2), 1.0f});
+  return rgba;
+}
+
+std::shared_ptr<harness::GpuTexture> uploadDfgLut(harness::VulkanHarness& gpu, const lut::LutTable& table) {
+  return harness::uploadTexture(gpu, false, {{table.size, table.size, dfgLutTexels(table)}});
 }
 
 std::shared_ptr<harness::GpuTexture> uploadLtcTable(harness::VulkanHarness& gpu, const ProbeLtcTable& tables) {

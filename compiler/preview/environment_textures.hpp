@@ -21,6 +21,8 @@ std::shared_ptr<harness::GpuTexture> uploadEnvironmentCube(harness::VulkanHarnes
 // The LUT as a size x size 2D image, one level; its three channels in r, g, b (lut/dfg_lut.hpp
 // order, row 0 = smoothest at t = 0) and a = 1.
 std::shared_ptr<harness::GpuTexture> uploadDfgLut(harness::VulkanHarness& gpu, const lut::LutTable& table);
+// Its texels as uploaded (RGBA32F, row-major), for the APIs that take CPU data (draw_passes.cpp).
+std::vector<float> dfgLutTexels(const lut::LutTable& table);
 
 // The LTC tables as the fragment stage reads them (docs/fragment-stage.md "LTC table"): 4 size x
 // size texels, the specular table's entry (i, j) at texel (j, i) as (m00, m02, m20, m22) and at

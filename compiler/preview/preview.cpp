@@ -20,7 +20,8 @@
 #include "preview/environment_textures.hpp"
 #include "preview/preview_reference.hpp"
 #include "preview/preview_scene.hpp"
-#include "preview/sphere_mesh.hpp"
+#include "preview/draw_passes.hpp"
+#include "preview/sphere_draws.hpp"
 #include "validate/probe_program.hpp"
 
 namespace mb::preview {
@@ -40,9 +41,6 @@ std::string joined(const std::vector<std::string>& names) {
   return s;
 }
 
-// Per sphere: every non-constant parameter's value (its default, or the sweep's step).
-using SphereParams = std::map<std::string, std::vector<double>>;
-
 std::vector<SphereParams> sphereParams(const MaterialDesc& m, const PreviewOptions& o) {
   const uint32_t count = o.sweep.empty() ? 1 : std::max(o.sweepCount, 1u);
   std::vector<SphereParams> spheres(count);
@@ -61,30 +59,13 @@ std::vector<SphereParams> sphereParams(const MaterialDesc& m, const PreviewOptio
   return spheres;
 }
 
-// std140 (GLSL 4.50 spec 7.6.2.2) of the fragment shader's MbMaterialParams: float aligned to
-// 4, vec2 to 8, vec3 to 16 bytes; the block's size rounded up to 16.
-std::vector<uint8_t> paramsBlock(const MaterialDesc& m, const SphereParams& values) {
-  std::vector<uint8_t> bytes;
-  size_t offset = 0;
-  for (const auto& prm : m.params) {
-    if (prm.constant) continue;
-    const int n = componentCount(prm.type);
-    const size_t align = n == 1 ? 4 : (n == 2 ? 8 : 16);
-    offset = (offset + align - 1) / align * align;
-    bytes.resize(offset + 4 * n, 0);
-    for (int k = 0; k < n; ++k) {
-      const float f = static_cast<float>(values.at(prm.name)[k]);
-      std::memcpy(bytes.data() + offset + 4 * k, &f, 4);
-    }
-    offset += 4 * n;
-  }
-  bytes.resize((bytes.size() + 15) / 16 * 16, 0);
-  return bytes;
-}
-
-std::vector<uint32_t> compileStage(const std::string& glsl, const std::string& name, ShaderStage stage) {
+// `optimization`: O0 for a module with 16-bit floats, as the package builds them (spirv-opt's
+// folding of SPIRV-Tools v2023.1 emits 16-bit constants spirv-val rejects; docs/targets.md).
+std::vector<uint32_t> compileStage(const std::string& glsl, const std::string& name, ShaderStage stage,
+                                   OptimizationLevel optimization = OptimizationLevel::O2) {
   CompileOptions options;
   options.stage = stage;
+  options.optimization = optimization;
   return compileComputeGlsl(glsl, name, options).spirv;
 }
 
@@ -121,42 +102,6 @@ std::vector<std::map<std::string, std::vector<double>>> sphereModelInputs(harnes
     }
   }
   return out;
-}
-
-harness::GraphicsJob sphereJob(const PreviewOptions& o, const MaterialDesc& m, const std::vector<SphereParams>& spheres,
-                               const std::vector<PreviewLight>& lights, const PreviewEnvironment& env,
-                               EnvironmentMode environmentMode) {
-  const bool ltcTable =
-      std::any_of(lights.begin(), lights.end(), [&](const PreviewLight& l) { return lightReadsLtcTable(m, l.type); });
-  harness::GraphicsJob job;
-  job.width = o.size * static_cast<uint32_t>(spheres.size());
-  job.height = o.size;
-  job.mesh = uvSphere();
-  // engine_vertex.vert's push constants: model (object -> world), then viewProjection. Every
-  // sphere sits at the origin with radius 1, so the model matrix is the identity, which the
-  // shader applies exactly (its normal matrix, the inverse transpose, is the identity too).
-  const auto vp = viewProjection();
-  std::vector<uint8_t> push(128);
-  const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  std::memcpy(push.data(), identity, 64);
-  std::memcpy(push.data() + 64, vp.data(), 64);
-  const bool ibl = isIbl(environmentMode);
-  const std::vector<uint8_t> frame =
-      frameBlockBytes(lights, environmentMode == EnvironmentMode::None ? nullptr : &env.maps);
-  for (size_t s = 0; s < spheres.size(); ++s) {
-    harness::DrawResources d;
-    const std::vector<uint8_t> params = paramsBlock(m, spheres[s]);
-    if (!params.empty()) d.uniforms.push_back({kFragmentParamsBinding, params});
-    d.uniforms.push_back({kFragmentFrameBinding, frame});
-    if (ibl) d.textures.push_back({kFragmentPrefilteredBinding, {env.cube->view(), env.cube->sampler()}});
-    if (usesDfgLut(environmentMode))
-      d.textures.push_back({kFragmentDfgBinding, {env.dfgTexture->view(), env.dfgTexture->sampler()}});
-    if (ltcTable) d.textures.push_back({kFragmentLtcBinding, {env.ltcTexture->view(), env.ltcTexture->sampler()}});
-    d.pushConstants = push;
-    d.viewport = {o.size * static_cast<uint32_t>(s), 0, o.size, o.size};
-    job.draws.push_back(std::move(d));
-  }
-  return job;
 }
 
 // Display values: exposure, the tonemap brick, the sRGB OETF. The GPU image goes through the
@@ -338,41 +283,37 @@ PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& li
   r.spheres = static_cast<uint32_t>(spheres.size());
 
   auto t0 = Clock::now();
-  const EmittedShader fragment = emitFragmentShader(lib, perm);
-  harness::GraphicsJob job = sphereJob(o, material, spheres, lights, env, perm.environment);
-  job.vertexSpirv = compileStage(lib.source("common/engine_vertex.vert"), "engine_vertex.vert", ShaderStage::Vertex);
-  job.fragmentSpirv = compileStage(fragment.glsl, fragment.fileName, ShaderStage::Fragment);
-  const std::vector<uint32_t> attributesSpirv =
+  // A language without 16-bit floats (essl310, webgl2) runs an fp16 permutation's mediump form,
+  // as the package ships it (docs/targets.md "fp16 permutations").
+  const bool mediump = perm.precision == Precision::Fp16 && !targetInfo(o.target).float16;
+  const EmittedShader fragment = emitFragmentShader(lib, perm, mediump);
+  const SphereDraws draws = sphereDraws(o, material, spheres, lights, perm.environment, env.maps);
+  PassShaders shaders;
+  shaders.vertex = compileStage(lib.source("common/engine_vertex.vert"), "engine_vertex.vert", ShaderStage::Vertex);
+  const bool float16 = perm.precision == Precision::Fp16 && !mediump;
+  shaders.fragment = compileStage(fragment.glsl, fragment.fileName, ShaderStage::Fragment,
+                                  float16 ? OptimizationLevel::O0 : OptimizationLevel::O2);
+  shaders.attributes =
       compileStage(lib.source("common/engine_attributes.frag"), "engine_attributes.frag", ShaderStage::Fragment);
+  shaders.fragmentName = fragment.fileName;
   r.compileMs = msSince(t0);
-  r.width = job.width;
-  r.height = job.height;
+  r.width = draws.width;
+  r.height = draws.height;
 
-  // Pass 1: the permutation's fragment shader.
-  job.clearColors = {{kBackground[0], kBackground[1], kBackground[2], 0.0f}};
-  const harness::GraphicsResult shaded = harness::render(gpu, job);
-  r.pipelineMs = shaded.pipelineMs;
-  r.renderMs = shaded.renderMs;
-  // Pass 2: the same draws with the attributes shader.
-  job.fragmentSpirv = attributesSpirv;
-  job.colorTargets = 4;
-  job.clearColors.clear();
-  harness::GraphicsResult attributes = harness::render(gpu, job);
-  r.pipelineMs += attributes.pipelineMs;
-  r.attributesMs = attributes.renderMs;
-  PixelAttributes a{r.width,
-                    r.height,
-                    std::move(attributes.targets[0]),
-                    std::move(attributes.targets[1]),
-                    std::move(attributes.targets[2]),
-                    std::move(attributes.targets[3])};
+  // Pass 1: the permutation's fragment shader; pass 2: the same draws with the attributes shader.
+  DrawnPasses drawn = drawPasses(o.target, gpu, draws, env, shaders);
+  r.device = drawn.device;
+  r.pipelineMs = drawn.pipelineMs;
+  r.renderMs = drawn.renderMs;
+  r.attributesMs = drawn.attributesMs;
+  PixelAttributes a = std::move(drawn.attributes);
 
   const size_t pixels = size_t{r.width} * r.height;
   r.gpu.resize(pixels * 3);
   r.covered.resize(pixels);
   for (size_t p = 0; p < pixels; ++p) {
     r.covered[p] = a.position[p * 4 + 3] == 1.0f;
-    for (int c = 0; c < 3; ++c) r.gpu[p * 3 + c] = shaded.targets[0][p * 4 + c];
+    for (int c = 0; c < 3; ++c) r.gpu[p * 3 + c] = drawn.color[p * 4 + c];
   }
 
   ReferenceScene scene;
@@ -386,7 +327,10 @@ PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& li
   scene.environment = &env.maps;
   scene.dfg = &env.dfg;
   scene.ltc = env.ltc.get();
-  scene.samplerLimits = r.samplerPrecision = o.samplerLimits.value_or(harness::samplerPrecision(gpu));
+  // GL and WebGL expose no sampler precision: their bound assumes the least Vulkan allows.
+  const harness::SamplerPrecision device =
+      o.target == Target::Spirv ? harness::samplerPrecision(gpu) : harness::SamplerPrecision{};
+  scene.samplerLimits = r.samplerPrecision = o.samplerLimits.value_or(device);
   scene.tile = o.size;
   scene.sphereInputs = sphereModelInputs(gpu, lib, perm, spheres);
   for (auto& inputs : scene.sphereInputs)

@@ -16,6 +16,7 @@
 #include "core/environment_mode.hpp"
 #include "core/light_type.hpp"
 #include "core/precision.hpp"
+#include "core/target.hpp"
 #include "harness/vulkan_harness.hpp"
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
@@ -41,6 +42,9 @@ struct PreviewOptions {
   std::vector<LightType> lights{LightType::Dir};  // one light each (preview_scene.hpp)
   EnvironmentMode environmentMode = EnvironmentMode::IblLut;
   Precision precision = Precision::Fp32;
+  // The language the spheres are drawn in (draw_passes.hpp previewTargets()): SPIR-V on the
+  // Vulkan device, or the cross-compiled GLSL 450, ESSL 3.10 (EGL) or WebGL 2.0 (Chromium).
+  Target target = Target::Spirv;
   std::string sweep;  // a non-constant parameter of every material; empty: one sphere
   uint32_t sweepCount = kDefaultSweepCount;
   // A brick of the tonemap slot; empty: the one with kernel role "preview_tonemap" (slot.json).
@@ -88,6 +92,7 @@ struct ChannelError {
 
 struct PreviewResult {
   std::string material, key;  // material name, permutation key
+  std::string device;         // what drew the spheres (the Vulkan device, GL_RENDERER, WebGL's renderer)
   uint32_t width = 0, height = 0, spheres = 0;
   std::vector<float> gpu;          // linear radiance, rgb per pixel (background: kBackground)
   std::vector<double> reference;   // the same from the reference render

@@ -1,4 +1,4 @@
-// Opens a page in headless Chromium (support/chromium_pipe.hpp) and reports what a person
+// Opens a page in headless Chromium (webgl/chromium_pipe.hpp) and reports what a person
 // would notice: images that did not load (naturalWidth == 0), errors on the console (console
 // error/assert calls, uncaught exceptions, and the browser's own log errors such as a file
 // that failed to load), and a blank screenshot (decoded with stb_image: a single colour).
@@ -8,9 +8,14 @@
 #include <vector>
 
 #include "write/png_image.hpp"
-#include "support/chromium_pipe.hpp"
+#include "webgl/base64.hpp"
+#include "webgl/chromium_pipe.hpp"
 
 namespace mb::test {
+
+using webgl::base64Decode;
+using webgl::ChromiumPipe;
+using webgl::findChromium;
 
 struct PageCheck {
   size_t images = 0;
@@ -28,30 +33,6 @@ struct PageCheck {
     return s + "; screenshot " + std::to_string(screenshotColours) + " colours";
   }
 };
-
-inline std::string base64Decode(const std::string& in) {
-  auto value = [](char c) -> int {
-    if (c >= 'A' && c <= 'Z') return c - 'A';
-    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
-    if (c >= '0' && c <= '9') return c - '0' + 52;
-    if (c == '+') return 62;
-    if (c == '/') return 63;
-    return -1;
-  };
-  std::string out;
-  unsigned bits = 0;
-  int count = 0;
-  for (char c : in) {
-    int v = value(c);
-    if (v < 0) continue;  // padding, line breaks
-    bits = (bits << 6) | unsigned(v);
-    if ((count += 6) >= 8) {
-      count -= 8;
-      out.push_back(char((bits >> count) & 0xff));
-    }
-  }
-  return out;
-}
 
 // The console and log errors among the browser's events for `sessionId`.
 inline std::vector<std::string> consoleErrors(const std::vector<nlohmann::json>& events, const std::string& sessionId) {

@@ -1,8 +1,9 @@
 // Headless Chromium driven over its DevTools protocol on a pipe (--remote-debugging-pipe:
 // the browser reads commands on fd 3 and writes replies and events on fd 4, each one JSON
 // message ending in a NUL byte; https://chromedevtools.github.io/devtools-protocol/). No
-// network port, no download: the Debian `chromium` package and this file. Used by
-// tests/test_report_browser.cpp to open a report the way a person would.
+// network port, no download: the Debian `chromium` package and this file. Used to run the
+// webgl2 target in WebGL 2.0 (webgl_draw.hpp) and by tests/test_report_browser.cpp to open a
+// report the way a person would.
 #pragma once
 #include <fcntl.h>
 #include <poll.h>
@@ -20,7 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace mb::test {
+namespace mb::webgl {
 
 // The chromium program on $PATH, or "" when there is none.
 inline std::string findChromium() {
@@ -43,7 +44,9 @@ class ChromiumPipe {
 
   // Starts `chromium` headless with a fresh profile in `profileDir` (its log goes to
   // profileDir/chromium.log). As root Chromium refuses to start without --no-sandbox.
-  ChromiumPipe(const std::string& chromium, const std::filesystem::path& profileDir, int width, int height)
+  // `extraArgs` go before the start page (e.g. the WebGL backend's flags).
+  ChromiumPipe(const std::string& chromium, const std::filesystem::path& profileDir, int width, int height,
+               const std::vector<std::string>& extraArgs = {})
       : log_(profileDir / "chromium.log") {
     ::signal(SIGPIPE, SIG_IGN);  // a browser that died must fail a write, not kill the tests
     std::filesystem::create_directories(profileDir);
@@ -61,8 +64,9 @@ class ChromiumPipe {
                                   "--no-default-browser-check",
                                   "--disable-extensions",
                                   "--disable-background-networking",
-                                  "--hide-scrollbars",
-                                  "about:blank"};
+                                  "--hide-scrollbars"};
+    args.insert(args.end(), extraArgs.begin(), extraArgs.end());
+    args.push_back("about:blank");
     pid_ = ::fork();
     if (pid_ < 0) throw std::runtime_error("fork failed");
     if (pid_ == 0) {
@@ -184,4 +188,4 @@ class ChromiumPipe {
   std::vector<nlohmann::json> events_;
 };
 
-}  // namespace mb::test
+}  // namespace mb::webgl
