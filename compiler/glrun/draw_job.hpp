@@ -4,11 +4,14 @@
 // harness/vulkan_graphics.hpp for SPIR-V. Everything is CPU data: the textures' texels, the
 // uniform blocks' std140 bytes, the mesh.
 //
-// Fixed state, the same as the Vulkan path's: triangle list, back faces culled (counter-clockwise
-// front), depth test LESS with writes (depth cleared to 1), no blending, no multisampling. The
-// vertex shader's clip space is Vulkan's (y down, depth 0..1): the rows GL's glReadPixels returns
-// bottom-up then hold what Vulkan's framebuffer holds top-down, so results[t] row 0 is the same
-// pixel row as the Vulkan path's row 0, and the winding seen in window coordinates is the same.
+// Fixed state, the same as the Vulkan path's: triangle list, back faces culled, depth test LESS
+// with writes (depth cleared to 1), no blending, no multisampling. The vertex shader's clip space
+// is Vulkan's (y down, depth 0..1): the rows GL's glReadPixels returns bottom-up then hold what
+// Vulkan's framebuffer holds top-down, so results[t] row 0 is the same pixel row as the Vulkan
+// path's row 0. The window coordinates are the same numbers in both APIs, but their facing
+// formulas differ in sign (Vulkan spec "Basic Polygon Rasterization": a = -1/2 sum(...); OpenGL
+// 4.5 and ES 3.0 section 14.6.1 / 3.6.1: a = +1/2 sum(...)), so the mesh's counter-clockwise
+// front in Vulkan is glFrontFace(GL_CW) here.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -68,9 +71,9 @@ struct DrawJob {
 struct DrawResult {
   // Per colour target: width * height RGBA floats, row 0 = the Vulkan path's row 0 (above).
   std::vector<std::vector<float>> targets;
-  std::string device;     // the renderer, e.g. GL_RENDERER and GL_VERSION
-  double compileMs = 0;   // the driver's compile and link of the program
-  double renderMs = 0;    // uploads, draws and read-back (host time)
+  std::string device;    // the renderer, e.g. GL_RENDERER and GL_VERSION
+  double compileMs = 0;  // the driver's compile and link of the program
+  double renderMs = 0;   // uploads, draws and read-back (host time)
 };
 
 }  // namespace mb::gl
