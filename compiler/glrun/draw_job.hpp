@@ -71,9 +71,9 @@ struct DrawJob {
 struct DrawResult {
   // Per colour target: width * height RGBA floats, row 0 = the Vulkan path's row 0 (above).
   std::vector<std::vector<float>> targets;
-  std::string device;     // the renderer, e.g. GL_RENDERER and GL_VERSION
-  double compileMs = 0;   // the driver's compile and link of the program
-  double renderMs = 0;    // uploads, draws and read-back (host time)
+  std::string device;    // the renderer, e.g. GL_RENDERER and GL_VERSION
+  double compileMs = 0;  // the driver's compile and link of the program
+  double renderMs = 0;   // uploads, draws and read-back (host time)
 };
 
 }  // namespace mb::gl
