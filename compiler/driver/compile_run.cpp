@@ -1,5 +1,6 @@
 #include "driver/compile_run.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <map>
 #include <memory>
@@ -141,6 +142,10 @@ CompileOutcome runCompile(const CompileRequest& r, const CompileHooks& hooks, co
   PackageStages stages;
   if (std::string why; !r.stages.empty() && !parsePackageStages(r.stages, stages, why))
     throw CompileUsageError("--stages: " + why);
+  if (!stages.fragment && std::find(targets.begin(), targets.end(), Target::Webgl2) != targets.end())
+    throw CompileUsageError(
+        "--targets webgl2: WebGL 2.0 has no compute shaders, so webgl2 is built for the fragment stage only, which "
+        "--stages leaves out");
 
   BuildOptions options;
   options.jobs = r.jobs;

@@ -115,7 +115,7 @@ gl::DrawJob glJob(const SphereDraws& d, const PreviewEnvironment& env, const Pas
 DrawnPasses drawByName(Target target, const SphereDraws& d, const PreviewEnvironment& env, const PassShaders& s) {
   const auto t0 = Clock::now();
   gl::DrawJob job = glJob(d, env, s);
-  job.vertexSource = crossCompile(s.vertex, target, "engine_vertex.vert");
+  job.vertexSource = crossCompile(s.vertex, target, "engine_vertex.vert");  // as the webgl2 package ships it
   job.fragmentSource = crossCompile(s.fragment, target, s.fragmentName);
   const std::string attributesSource = crossCompile(s.attributes, target, "engine_attributes.frag");
   const double crossMs = msSince(t0);

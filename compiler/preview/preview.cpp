@@ -10,6 +10,7 @@
 
 #include "common/reference.hpp"
 #include "compile/glsl_compiler.hpp"
+#include "compile/reference_vertex.hpp"
 #include "core/diagnostics.hpp"
 #include "emit/fragment_shader.hpp"
 #include "emit/fragment_textures.hpp"
@@ -289,7 +290,7 @@ PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& li
   const EmittedShader fragment = emitFragmentShader(lib, perm, mediump);
   const SphereDraws draws = sphereDraws(o, material, spheres, lights, perm.environment, env.maps);
   PassShaders shaders;
-  shaders.vertex = compileStage(lib.source("common/engine_vertex.vert"), "engine_vertex.vert", ShaderStage::Vertex);
+  shaders.vertex = referenceVertexSpirv(lib);
   const bool float16 = perm.precision == Precision::Fp16 && !mediump;
   shaders.fragment = compileStage(fragment.glsl, fragment.fileName, ShaderStage::Fragment,
                                   float16 ? OptimizationLevel::O0 : OptimizationLevel::O2);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "compile/glsl_compiler.hpp"
+#include "compile/reference_vertex.hpp"
 #include "compile/targets.hpp"
 #include "core/descriptor_bindings.hpp"
 #include "emit/emitter.hpp"
@@ -140,7 +141,11 @@ void ManifestWriter::write(std::ostream& out) const {
                           {"results", {{"set", 0}, {"binding", kKernelOutputBinding}}},
                           {"material_params", {{"set", 0}, {"binding", kKernelParamsBinding}, {"layout", "std140"}}},
                           {"push_constant", "uint count"}};
-  if (in_.stages.fragment) manifest["fragment"] = fragmentInterfaceJson();
+  if (in_.stages.fragment) {
+    manifest["fragment"] = fragmentInterfaceJson();
+    if (std::find(in_.targets.begin(), in_.targets.end(), Target::Webgl2) != in_.targets.end())
+      manifest["fragment"]["webgl2"] = webgl2VertexJson(*in_.lib);
+  }
   if (!in_.sceneFile.empty()) {
     manifest["scene"] = {{"file", in_.sceneFile},
                          {"possible", in_.plan->possible},

@@ -4,8 +4,10 @@
 // across runs and job counts.
 #include "write/package_contents.hpp"
 
+#include <algorithm>
 #include <set>
 
+#include "compile/reference_vertex.hpp"
 #include "compile/targets.hpp"
 #include "write/package_parts.hpp"
 
@@ -71,6 +73,10 @@ void PackageStream::add(const Permutation& perm, const BuiltPermutation& built) 
 }
 
 void PackageStream::finish() {
+  // WebGL 2.0 links a vertex and a fragment shader of one language: the webgl2 package ships the
+  // reference vertex shader in ESSL 3.00, once for every permutation (compile/reference_vertex.hpp).
+  if (in_.stages.fragment && std::find(in_.targets.begin(), in_.targets.end(), Target::Webgl2) != in_.targets.end())
+    pkg_.addFile(kWebgl2VertexPath, referenceVertexShader(*in_.lib, Target::Webgl2));
   pkg_.addFileStreamed("manifest.json", [&](std::ostream& out) { manifest_->write(out); });
   pkg_.addFileStreamed(in_.headerName, [&](std::ostream& out) { header_->write(out); });
 }
