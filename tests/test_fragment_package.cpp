@@ -213,3 +213,50 @@ TEST_CASE("the fragment shader is cached with its kernel: a warm build compiles 
   CHECK(again.cacheHits == again.shardUnits);
   CHECK(again.compiled == 0);
 }
+
+// The names a WebGL 2.0 program binds: each `uniform NAME` block and sampler the reflection lists
+// is declared in the ESSL 3.00 under that name, and the vertex shader's outputs are the fragment
+// shader's inputs by name (ES 3.00 has no locations on them).
+TEST_CASE("--targets webgl2: ESSL 3.00 fragment shaders, the vertex shader once, and the names a program binds",
+          "[fragment][package]") {
+  const fs::path dir = test::freshTempDir("fragment", "webgl2");
+  const std::string inputs = test::materialPath("satin_sheen.json") + " " + test::materialPath("velvet_green.json") +
+                             " --lights dir,point,spot --environment ibl_lut --targets webgl2";
+  const nlohmann::json manifest = compileTo(inputs, dir / "pkg");
+  CHECK(manifest["targets"] == nlohmann::json{"spirv", "webgl2"});
+  const nlohmann::json& vertex = manifest["fragment"]["webgl2"];
+  CHECK(vertex["file"] == "fragment/webgl2/engine_vertex.webgl2.vert");
+  CHECK(vertex["block"]["name"] == "MbVertexPush");
+  CHECK(vertex["block"]["size"] == 128);
+  CHECK(vertex["attributes"].size() == 4);
+  const std::string vert = test::readFile(dir / "pkg" / vertex["file"].get<std::string>());
+  CHECK(vert.rfind("#version 300 es\n", 0) == 0);
+  CHECK(vert.find("uniform MbVertexPush") != std::string::npos);
+  for (const auto& a : vertex["attributes"])
+    CHECK(vert.find("layout(location = " + std::to_string(a["location"].get<int>()) + ") in " +
+                    a["type"].get<std::string>() + " " + a["name"].get<std::string>() + ";") != std::string::npos);
+  REQUIRE(manifest["permutations"].size() == 2);
+  for (const auto& p : manifest["permutations"]) {
+    INFO(p["key"]);
+    const nlohmann::json& f = p["fragment"];
+    REQUIRE(f["files"].contains("webgl2"));
+    CHECK_FALSE(p["files"].contains("webgl2"));  // no kernel: WebGL 2.0 has no compute
+    const std::string frag = test::readFile(dir / "pkg" / f["files"]["webgl2"].get<std::string>());
+    CHECK(frag.rfind("#version 300 es\n", 0) == 0);
+    CHECK(frag.find("binding") == std::string::npos);
+    for (const auto& u : f["reflection"]["uniform_buffers"])
+      CHECK(frag.find("uniform " + u["name"].get<std::string>()) != std::string::npos);
+    for (const auto& s : f["reflection"]["sampled_images"])
+      CHECK(frag.find(s["type"].get<std::string>() + " " + s["name"].get<std::string>() + ";") != std::string::npos);
+    for (const auto& in : f["reflection"]["stage_inputs"])
+      CHECK(vert.find("out " + in["type"].get<std::string>() + " " + in["name"].get<std::string>() + ";") !=
+            std::string::npos);
+  }
+  // Without the fragment stage there is nothing to build for webgl2: refused before any output.
+  auto r = test::runCli("compile -q --no-cache " + test::materialPath("satin_sheen.json") +
+                        " --targets webgl2 --stages kernel -o " + (dir / "kernel").string());
+  CHECK(r.exitCode == 2);
+  CHECK(r.output.find("webgl2") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "kernel"));
+  fs::remove_all(dir);
+}

@@ -256,3 +256,54 @@ TEST_CASE("crossCompile names the permutation and the target when SPIRV-Cross ca
   CHECK(spirvCrossVersion().find("SPIRV-Cross") != std::string::npos);
   for (const auto& t : allTargets()) CHECK(!targetOptions(t).empty());
 }
+
+TEST_CASE("the webgl2 check: ESSL 3.00 as glslang reads it, and WebGL 2.0's own identifier rules", "[targets]") {
+  const std::string frag =
+      "#version 300 es\nprecision highp float;\nuniform Blk { vec4 c; } blk;\nout vec4 o;\n"
+      "void main() { o = blk.c; }\n";
+  CHECK(checkWebgl2(frag, ShaderStage::Fragment).empty());
+  CHECK(checkWebgl2("#version 300 es\nlayout(location = 0) in vec3 p;\nvoid main() { gl_Position = vec4(p, 1.0); }\n",
+                    ShaderStage::Vertex)
+            .empty());
+  // What ES 3.00 lacks: binding qualifiers (ES 3.10), storage buffers, compute.
+  std::string bound = frag;
+  bound.replace(bound.find("uniform Blk"), 11, "layout(binding = 1) uniform Blk");
+  CHECK(checkWebgl2(bound, ShaderStage::Fragment).find("glslang") != std::string::npos);
+  CHECK(!checkWebgl2("#version 300 es\nbuffer B { float x[]; };\nvoid main() {}\n", ShaderStage::Fragment).empty());
+  CHECK(checkWebgl2(frag, ShaderStage::Compute).find("no compute") != std::string::npos);
+  CHECK(checkWebgl2("#version 310 es\n" + frag.substr(16), ShaderStage::Fragment).find("#version 300 es") !=
+        std::string::npos);
+  // WebGL 2.0 section 5: reserved prefixes; identifiers of at most 1024 characters.
+  std::string reserved = frag;
+  reserved.replace(reserved.find("blk;"), 3, "webgl_blk");
+  reserved.replace(reserved.find("blk.c"), 3, "webgl_blk");
+  CHECK(checkWebgl2(reserved, ShaderStage::Fragment).find("webgl_") != std::string::npos);
+  std::string longName = frag;
+  const std::string name(1025, 'a');
+  longName.replace(longName.find("blk;"), 3, name);
+  longName.replace(longName.find("blk.c"), 3, name);
+  CHECK(checkWebgl2(longName, ShaderStage::Fragment).find("name too long") != std::string::npos);  // glslang's
+
+  // A compute module is refused by name; a fragment module cross-compiles without bindings.
+  const std::string kernel =
+      "#version 450\nlayout(local_size_x = 1) in;\nlayout(binding = 0, std430) buffer B { "
+      "float x[]; } b;\nvoid main() { b.x[0] = 1.0; }\n";
+  try {
+    crossCompile(compileComputeGlsl(kernel, "k.comp").spirv, Target::Webgl2, "k.comp");
+    FAIL("a compute shader cross-compiled to webgl2");
+  } catch (const DiagnosticError& e) {
+    CHECK(e.diagnostics().at(0).code == "E-TARGET-FAILED");
+  }
+  CompileOptions fragment;
+  fragment.stage = ShaderStage::Fragment;
+  const std::string vulkan =
+      "#version 450\nlayout(binding = 3) uniform sampler2D tex;\nlayout(binding = 1) uniform "
+      "Blk { vec4 c; } blk;\nlayout(location = 0) in vec2 uv;\nlayout(location = 0) out vec4 "
+      "o;\nvoid main() { o = blk.c * texture(tex, uv); }\n";
+  const std::string webgl =
+      crossCompile(compileComputeGlsl(vulkan, "f.frag", fragment).spirv, Target::Webgl2, "f.frag");
+  CHECK(webgl.rfind("#version 300 es\n", 0) == 0);
+  CHECK(webgl.find("binding") == std::string::npos);
+  CHECK(webgl.find("uniform Blk") != std::string::npos);
+  CHECK(webgl.find("sampler2D tex;") != std::string::npos);
+}

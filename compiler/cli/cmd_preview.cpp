@@ -172,14 +172,11 @@ int runPreview(PreviewArgs& a, const GlobalOptions& g) {
       printResult(r, png);
   }
   if (a.json) {
-    std::cout << nlohmann::json{{"environment", a.environment},
-                                {"target", a.target},
-                                {"environment_build_ms", env.buildMs},
-                                {"device", gpu->deviceName()},
-                                {"previews", out},
-                                {"passed", ok}}
-                     .dump(2)
-              << "\n";
+    std::cout
+        << nlohmann::json{{"environment", a.environment}, {"target", a.target}, {"environment_build_ms", env.buildMs},
+                          {"device", gpu->deviceName()},  {"previews", out},    {"passed", ok}}
+               .dump(2)
+        << "\n";
   } else {
     std::printf("environment %s built in %.0f ms on %s; %s\n", a.environment.c_str(), env.buildMs,
                 gpu->deviceName().c_str(), ok ? "passed" : "FAILED: GPU pixels outside the reference's tolerance");

@@ -71,7 +71,9 @@ std::string reparse(const std::string& text, const Reparse& r, std::vector<uint3
 EShLanguage stageOf(bool fragment) { return fragment ? EShLangFragment : EShLangCompute; }
 
 EShLanguage languageOf(ShaderStage stage) {
-  return stage == ShaderStage::Vertex ? EShLangVertex : stage == ShaderStage::Fragment ? EShLangFragment : EShLangCompute;
+  return stage == ShaderStage::Vertex     ? EShLangVertex
+         : stage == ShaderStage::Fragment ? EShLangFragment
+                                          : EShLangCompute;
 }
 
 }  // namespace
@@ -90,9 +92,8 @@ std::string checkGlsl(const std::string& source, bool es, ShaderStage stage) {
 
 namespace {
 
-// The WebGL 2.0 identifier rules (target_checks.hpp checkWebgl2), over the source's words.
+// WebGL 2.0's reserved prefixes (target_checks.hpp checkWebgl2), over the source's words.
 std::string webglIdentifierProblem(const std::string& source) {
-  constexpr size_t kMaxIdentifier = 1024;
   auto wordChar = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
   for (size_t i = 0; i < source.size();) {
     if (!wordChar(source[i])) {
@@ -102,12 +103,8 @@ std::string webglIdentifierProblem(const std::string& source) {
     size_t end = i;
     while (end < source.size() && wordChar(source[end])) ++end;
     const std::string word = source.substr(i, end - i);
-    if (!std::isdigit(static_cast<unsigned char>(word[0]))) {
-      if (word.rfind("webgl_", 0) == 0 || word.rfind("_webgl_", 0) == 0)
-        return "WebGL 2.0: identifier '" + word + "' uses the reserved prefix webgl_ or _webgl_";
-      if (word.size() > kMaxIdentifier)
-        return "WebGL 2.0: an identifier of " + std::to_string(word.size()) + " characters (at most 1024)";
-    }
+    if (word.rfind("webgl_", 0) == 0 || word.rfind("_webgl_", 0) == 0)
+      return "WebGL 2.0: identifier '" + word + "' uses the reserved prefix webgl_ or _webgl_";
     i = end;
   }
   return "";

@@ -17,7 +17,8 @@ std::string checkGlsl(const std::string& source, bool es, ShaderStage stage = Sh
 // (no SPIR-V: glslang makes SPIR-V only from ES 3.10 on), which refuses what ES 3.00 lacks
 // (binding qualifiers, storage buffers, compute); then the WebGL 2.0 spec's own rules that
 // glslang does not know (section 5 "Differences Between WebGL and OpenGL ES 3.0"): no
-// identifier starting with "webgl_" or "_webgl_", none longer than 1024 characters.
+// identifier starting with "webgl_" or "_webgl_". (WebGL's 1024-character limit on identifiers
+// is glslang's own: it refuses longer names.)
 std::string checkWebgl2(const std::string& source, ShaderStage stage);
 // glslang's HLSL front end reparses a compute (or fragment) shader (entry point "main"),
 // generates SPIR-V for Vulkan 1.1 and runs spirv-val on it.

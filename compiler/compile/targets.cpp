@@ -85,7 +85,7 @@ void setOptions(const SpvcModule& m, spvc_compiler_options o, const TargetInfo& 
 std::string check(const std::string& source, const SpvcModule& m, const TargetInfo& info) {
   const SpvExecutionModel model = spvc_compiler_get_execution_model(m.compiler());
   const bool fragment = model == SpvExecutionModelFragment;
-  const ShaderStage stage = fragment                          ? ShaderStage::Fragment
+  const ShaderStage stage = fragment                           ? ShaderStage::Fragment
                             : model == SpvExecutionModelVertex ? ShaderStage::Vertex
                                                                : ShaderStage::Compute;
   switch (info.language) {

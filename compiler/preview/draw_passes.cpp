@@ -97,7 +97,8 @@ gl::DrawJob glJob(const SphereDraws& d, const PreviewEnvironment& env, const Pas
     addTexture(kFragmentPrefilteredBinding, std::move(cube));
   }
   if (d.dfg) addTexture(kFragmentDfgBinding, {false, {{env.dfg.size, env.dfg.size, dfgLutTexels(env.dfg)}}});
-  if (d.ltc) addTexture(kFragmentLtcBinding, {false, {{4 * env.ltc->table.size, env.ltc->table.size, env.ltc->texels}}});
+  if (d.ltc)
+    addTexture(kFragmentLtcBinding, {false, {{4 * env.ltc->table.size, env.ltc->table.size, env.ltc->texels}}});
   for (size_t k = 0; k < d.params.size(); ++k) {
     gl::DrawCall call;
     call.uniformBlocks[vertexBlock] = d.vertexBlock;

@@ -312,9 +312,13 @@ PreviewResult renderPreview(harness::VulkanHarness& gpu, const ShaderLibrary& li
   const size_t pixels = size_t{r.width} * r.height;
   r.gpu.resize(pixels * 3);
   r.covered.resize(pixels);
+  r.position.resize(pixels * 3);
   for (size_t p = 0; p < pixels; ++p) {
     r.covered[p] = a.position[p * 4 + 3] == 1.0f;
-    for (int c = 0; c < 3; ++c) r.gpu[p * 3 + c] = drawn.color[p * 4 + c];
+    for (int c = 0; c < 3; ++c) {
+      r.gpu[p * 3 + c] = drawn.color[p * 4 + c];
+      r.position[p * 3 + c] = a.position[p * 4 + c];
+    }
   }
 
   ReferenceScene scene;

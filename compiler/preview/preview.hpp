@@ -97,6 +97,7 @@ struct PreviewResult {
   std::vector<float> gpu;          // linear radiance, rgb per pixel (background: kBackground)
   std::vector<double> reference;   // the same from the reference render
   std::vector<uint8_t> covered;    // 1 where a sphere covers the pixel
+  std::vector<float> position;     // xyz per pixel: the world-space point the pixel shaded (attributes pass)
   std::vector<double> errorRatio;  // per pixel: max over channels of |gpu - ref| / allowed (0 background)
   std::array<ChannelError, 3> channels;
   double maxErrorRatio = 0;

@@ -32,7 +32,8 @@ nlohmann::json jobJson(const gl::DrawJob& job) {
   nlohmann::json textures = nlohmann::json::array();
   for (const auto& t : job.textures) {
     nlohmann::json levels = nlohmann::json::array();
-    for (const auto& l : t.levels) levels.push_back({{"width", l.width}, {"height", l.height}, {"rgba", encoded(l.rgba)}});
+    for (const auto& l : t.levels)
+      levels.push_back({{"width", l.width}, {"height", l.height}, {"rgba", encoded(l.rgba)}});
     textures.push_back({{"cube", t.cube}, {"levels", std::move(levels)}});
   }
   nlohmann::json draws = nlohmann::json::array();
@@ -116,15 +117,19 @@ gl::DrawResult resultOf(const nlohmann::json& value, const gl::DrawJob& job) {
 }  // namespace
 
 std::string chromiumProgram() {
-  if (const char* env = std::getenv("MATBRICKS_CHROMIUM"); env && *env) return env;
+  if (const char* env = std::getenv("MATBRICKS_CHROMIUM"); env && *env) {
+    if (::access(env, X_OK) != 0) throw WebglError(std::string("MATBRICKS_CHROMIUM=") + env + " is not an executable");
+    return env;
+  }
   return findChromium();
 }
 
 std::vector<gl::DrawResult> drawInBrowser(const std::vector<gl::DrawJob>& jobs) {
   const std::string chromium = chromiumProgram();
   if (chromium.empty())
-    throw WebglError("no chromium to run WebGL 2.0 in: install Debian's chromium (scripts/install-deps.sh) or set "
-                     "MATBRICKS_CHROMIUM");
+    throw WebglError(
+        "no chromium to run WebGL 2.0 in: install Debian's chromium (scripts/install-deps.sh) or set "
+        "MATBRICKS_CHROMIUM");
   ProfileDir profile;
   std::vector<gl::DrawResult> results;
   try {

@@ -19,7 +19,8 @@ class WebglError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The chromium program: $MATBRICKS_CHROMIUM when set, else `chromium` on PATH; "" when none.
+// The chromium program: $MATBRICKS_CHROMIUM when set (WebglError if it is not executable), else
+// `chromium` on PATH; "" when none.
 std::string chromiumProgram();
 
 // Draws each job as gl::drawOnGl does (the same state, targets and row order), in one browser
