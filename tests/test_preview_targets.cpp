@@ -1,6 +1,7 @@
 // preview --target (docs/preview.md "Targets"): the spheres drawn through the GLSL 450 and ESSL
-// 3.10 a package ships, by Mesa's own GLSL compiler on EGL, and through the webgl2 target's ESSL
-// 3.00 in WebGL 2.0 in headless Chromium; each picture within the tolerance of the double
+// 3.10 a package ships, by Mesa's own GLSL compiler on EGL, through its HLSL compiled back by
+// glslang's HLSL front end, and through the webgl2 target's ESSL 3.00 in WebGL 2.0 in headless
+// Chromium; each picture within the tolerance of the double
 // reference evaluated at the attributes that language's own pass read back, and those attributes
 // the same surface points as the Vulkan path's (a defect that moves both passes alike, such as
 // culling the wrong faces, passes the first check but not the second); a wrong reference is
@@ -120,7 +121,8 @@ void checkTarget(Target target, const std::string& material, std::vector<LightTy
 using namespace preview_targets_test;
 
 TEST_CASE("preview draws in every language it offers", "[preview]") {
-  CHECK(targetNames(preview::previewTargets()) == std::vector<std::string>{"spirv", "glsl450", "essl310", "webgl2"});
+  CHECK(targetNames(preview::previewTargets()) ==
+        std::vector<std::string>{"spirv", "glsl450", "essl310", "hlsl", "webgl2"});
 }
 
 TEST_CASE("GLSL 450 and ESSL 3.10 previews drawn by Mesa's GL match the reference and the Vulkan picture",
@@ -132,6 +134,17 @@ TEST_CASE("GLSL 450 and ESSL 3.10 previews drawn by Mesa's GL match the referenc
     // The LTC table (rect, disk) and the sheen's lobe: a second 2D texture, read by name.
     checkTarget(target, "satin_sheen", {LightType::Rect, LightType::Disk}, "llvmpipe");
   }
+}
+
+TEST_CASE("HLSL previews, compiled back by glslang and drawn with Vulkan, match the reference and the SPIR-V picture",
+          "[preview][vulkan]") {
+  checkTarget(Target::Hlsl, "filament_plastic", {LightType::Dir, LightType::Point}, "llvmpipe");
+  checkTarget(Target::Hlsl, "velvet_green", {LightType::Dir, LightType::Spot}, "llvmpipe");
+  checkTarget(Target::Hlsl, "satin_sheen", {LightType::Rect, LightType::Disk}, "llvmpipe");
+  const MaterialDesc m = test::shippedMaterial("ue4_metal");
+  preview::PreviewOptions o = options(Target::Hlsl);
+  o.referenceOverrides["roughness"] = {m.param("roughness")->value[0] + 0.01};
+  CHECK_FALSE(preview::renderPreview(preview_targets_test::device(), test::shippedLibrary(), m, o, studio()).passed());
 }
 
 TEST_CASE("a wrong reference is caught through the GL targets", "[preview][gl][vulkan]") {

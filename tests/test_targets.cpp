@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "compile/glsl_compiler.hpp"
+#include "compile/hlsl_spirv.hpp"
 #include "compile/target_checks.hpp"
 #include "compile/targets.hpp"
 #include "emit/emitter.hpp"
@@ -306,4 +307,35 @@ TEST_CASE("the webgl2 check: ESSL 3.00 as glslang reads it, and WebGL 2.0's own 
   CHECK(webgl.find("binding") == std::string::npos);
   CHECK(webgl.find("uniform Blk") != std::string::npos);
   CHECK(webgl.find("sampler2D tex;") != std::string::npos);
+}
+
+TEST_CASE("HLSL for Vulkan: inputs at their TEXCOORD locations, samplers shifted off their textures' bindings",
+          "[targets]") {
+  const std::string hlsl =
+      "Texture2D<float4> tex : register(t2, space0);\nSamplerState _tex_sampler : register(s2, space0);\n"
+      "struct SPIRV_Cross_Input\n{\n    float3 a : TEXCOORD0;\n    float2 uv : TEXCOORD3;\n};\n"
+      "struct SPIRV_Cross_Output\n{\n    float4 o : SV_Target0;\n};\n"
+      "SPIRV_Cross_Output main(SPIRV_Cross_Input i)\n{\n    SPIRV_Cross_Output r;\n"
+      "    r.o = tex.Sample(_tex_sampler, i.uv) + float4(i.a, 0.0);\n    return r;\n}\n";
+  const std::string located = hlslWithInputLocations(hlsl);
+  CHECK(located.find("[[vk::location(0)]] float3 a : TEXCOORD0;") != std::string::npos);
+  CHECK(located.find("[[vk::location(3)]] float2 uv : TEXCOORD3;") != std::string::npos);
+  CHECK(located.find("[[vk::location(0)]] float4 o") == std::string::npos);  // outputs are left alone
+  // The decorations glslang gives, as words of the module: OpDecorate id Location n / Binding n.
+  auto decorations = [](const std::vector<uint32_t>& spirv, uint32_t decoration) {
+    std::vector<uint32_t> values;
+    for (size_t i = 5; i < spirv.size() && (spirv[i] >> 16); i += spirv[i] >> 16)
+      if ((spirv[i] & 0xffff) == 71 && (spirv[i] >> 16) == 4 && spirv[i + 2] == decoration)
+        values.push_back(spirv[i + 3]);
+    std::sort(values.begin(), values.end());
+    return values;
+  };
+  constexpr uint32_t kLocation = 30, kBinding = 33;
+  std::vector<uint32_t> plain, shifted;
+  REQUIRE(compileHlsl(hlsl, plain, true) == "");
+  REQUIRE(compileHlsl(located, shifted, true, kHlslSamplerShift) == "");
+  CHECK(decorations(plain, kLocation) == std::vector<uint32_t>{0, 0, 1});  // declaration order: uv at 1
+  CHECK(decorations(shifted, kLocation) == std::vector<uint32_t>{0, 0, 3});
+  CHECK(decorations(plain, kBinding) == std::vector<uint32_t>{2, 2});  // both at 2: not a valid Vulkan layout
+  CHECK(decorations(shifted, kBinding) == std::vector<uint32_t>{2, 2 + kHlslSamplerShift});
 }

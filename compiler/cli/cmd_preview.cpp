@@ -208,8 +208,8 @@ Command addPreviewCommand(CLI::App& app, GlobalOptions& g) {
       ->check(CLI::IsMember(allEnvironmentModeNames()));
   cmd->add_option("--target", args->target,
                   "Language the spheres are drawn in: spirv (default; the Vulkan device), glsl450 or essl310 (the "
-                  "driver's GLSL compiler, OpenGL 4.5 core / ES 3.1 through EGL) or webgl2 (WebGL 2.0 in headless "
-                  "Chromium). docs/preview.md")
+                  "driver's GLSL compiler, OpenGL 4.5 core / ES 3.1 through EGL), hlsl (glslang's HLSL front end, "
+                  "then Vulkan) or webgl2 (WebGL 2.0 in headless Chromium). docs/preview.md")
       ->check(CLI::IsMember(targetNames(preview::previewTargets())));
   cmd->add_option("--precision", args->precision, "The permutation's precision (default: fp32)")
       ->check(CLI::IsMember(allPrecisionNames()));

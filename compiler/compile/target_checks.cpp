@@ -37,6 +37,7 @@ struct Reparse {
   EShMessages messages;
   spv_target_env validateEnv;
   EShLanguage stage = EShLangCompute;
+  unsigned samplerShift = 0;  // HLSL: s registers' binding offset (compileHlsl)
 };
 
 // `spirvOut`, when given, receives the generated module (valid when "" is returned).
@@ -49,12 +50,15 @@ std::string reparse(const std::string& text, const Reparse& r, std::vector<uint3
   shader.setEnvInput(r.source, r.stage, r.client, 100);
   shader.setEnvClient(r.client, r.clientVersion);
   shader.setEnvTarget(glslang::EShTargetSpv, r.spirvVersion);
+  if (r.samplerShift) shader.setShiftBinding(glslang::EResSampler, r.samplerShift);
   // The #version line of the source decides the profile; defaultVersion only applies without one.
   if (!shader.parse(GetDefaultResources(), r.defaultVersion, false, r.messages))
     return "glslang: " + firstError(shader.getInfoLog());
   glslang::TProgram program;
   program.addShader(&shader);
   if (!program.link(r.messages)) return "glslang link: " + firstError(program.getInfoLog());
+  // The binding shifts take effect in the I/O mapping pass (as glslangValidator runs it).
+  if (r.samplerShift && !program.mapIO()) return "glslang mapIO: " + firstError(program.getInfoLog());
   // Without the entry point glslang's HLSL front end only warns, and makes an empty main.
   if (std::string(program.getInfoLog()).find("Entry point not found") != std::string::npos)
     return "glslang link: no entry point 'main'";
@@ -148,8 +152,10 @@ Reparse hlslReparse(bool fragment) {
 
 std::string checkHlsl(const std::string& source, bool fragment) { return reparse(source, hlslReparse(fragment)); }
 
-std::string compileHlsl(const std::string& source, std::vector<uint32_t>& spirv, bool fragment) {
-  return reparse(source, hlslReparse(fragment), &spirv);
+std::string compileHlsl(const std::string& source, std::vector<uint32_t>& spirv, bool fragment, unsigned samplerShift) {
+  Reparse r = hlslReparse(fragment);
+  r.samplerShift = samplerShift;
+  return reparse(source, r, &spirv);
 }
 
 std::string checkMsl(const std::string& source, const SpvcModule& module) {

@@ -149,9 +149,16 @@ void createLayouts(GraphicsResources& res, const GraphicsJob& job) {
   for (const auto& u : first.uniforms)
     bindings.push_back({u.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
-  for (const auto& t : first.textures)
+  for (const auto& t : first.textures) {
+    if (job.separateSamplerShift == 0) {
+      bindings.push_back(
+          {t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+      continue;
+    }
+    bindings.push_back({t.binding, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
     bindings.push_back(
-        {t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+        {t.binding + job.separateSamplerShift, VK_DESCRIPTOR_TYPE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+  }
   VkDescriptorSetLayoutCreateInfo setInfo{};
   setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
   setInfo.bindingCount = static_cast<uint32_t>(bindings.size());
@@ -258,9 +265,13 @@ void createDescriptorSets(GraphicsResources& res, const GraphicsJob& job) {
   const auto& first = job.draws.front();
   if (!first.uniforms.empty())
     sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, static_cast<uint32_t>(first.uniforms.size()) * drawCount});
-  if (!first.textures.empty())
-    sizes.push_back(
-        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, static_cast<uint32_t>(first.textures.size()) * drawCount});
+  const auto textureCount = static_cast<uint32_t>(first.textures.size()) * drawCount;
+  if (textureCount && job.separateSamplerShift == 0)
+    sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount});
+  if (textureCount && job.separateSamplerShift != 0) {
+    sizes.push_back({VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, textureCount});
+    sizes.push_back({VK_DESCRIPTOR_TYPE_SAMPLER, textureCount});
+  }
   VkDescriptorPoolCreateInfo poolInfo{};
   poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
   poolInfo.maxSets = drawCount;
@@ -305,8 +316,14 @@ void createDescriptorSets(GraphicsResources& res, const GraphicsJob& job) {
       w.dstSet = res.sets[d];
       w.dstBinding = draw.textures[t].binding;
       w.descriptorCount = 1;
-      w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+      w.descriptorType =
+          job.separateSamplerShift ? VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
       w.pImageInfo = &imageInfos[t];
+      if (job.separateSamplerShift == 0) continue;
+      VkWriteDescriptorSet sampler = w;  // the same image info: a sampler descriptor reads its sampler
+      sampler.dstBinding = draw.textures[t].binding + job.separateSamplerShift;
+      sampler.descriptorType = VK_DESCRIPTOR_TYPE_SAMPLER;
+      writes.push_back(sampler);
     }
     vkUpdateDescriptorSets(res.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
   }

@@ -67,6 +67,10 @@ struct GraphicsJob {
   std::vector<std::array<float, 4>> clearColors;  // per target; missing ones clear to 0
   Mesh mesh;
   std::vector<DrawResources> draws;  // the whole mesh once per entry
+  // 0: each texture is a combined image sampler at its binding. Otherwise a sampled image at the
+  // binding and its sampler at binding + separateSamplerShift: HLSL's t and s registers, which
+  // glslang's HLSL front end (setShiftBinding) and DXC (-fvk-s-shift) place so.
+  uint32_t separateSamplerShift = 0;
 };
 
 struct GraphicsResult {

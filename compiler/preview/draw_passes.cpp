@@ -3,7 +3,9 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "compile/hlsl_spirv.hpp"
 #include "compile/targets.hpp"
+#include "core/diagnostics.hpp"
 #include "core/descriptor_bindings.hpp"
 #include "glrun/gl_draw.hpp"
 #include "harness/gpu_texture.hpp"
@@ -32,8 +34,9 @@ DrawnPasses fromTargets(std::vector<float> color, std::vector<std::vector<float>
 }
 
 DrawnPasses drawOnVulkan(harness::VulkanHarness& gpu, const SphereDraws& d, const PreviewEnvironment& env,
-                         const PassShaders& s) {
+                         const PassShaders& s, uint32_t samplerShift = 0) {
   harness::GraphicsJob job;
+  job.separateSamplerShift = samplerShift;
   job.width = d.width;
   job.height = d.height;
   job.mesh = d.mesh;
@@ -150,16 +153,42 @@ DrawnPasses drawByName(Target target, const SphereDraws& d, const PreviewEnviron
   return out;
 }
 
+// The hlsl target: the fragment and attributes shaders' SPIR-V cross-compiled to the HLSL the
+// package ships, compiled back by glslang's HLSL front end (DXC is not in Debian; docs/targets.md)
+// with their inputs at the reference vertex shader's locations and samplers at binding + 16, and
+// drawn with Vulkan after the SPIR-V vertex shader.
+std::vector<uint32_t> hlslFragment(const std::vector<uint32_t>& spirv, const std::string& name) {
+  const std::string hlsl = hlslWithInputLocations(crossCompile(spirv, Target::Hlsl, name));
+  std::vector<uint32_t> out;
+  if (const std::string problem = compileHlsl(hlsl, out, true, kHlslSamplerShift); !problem.empty())
+    throw DiagnosticError({{Severity::Error, "E-TARGET-FAILED", {name, 0, 0}, "target hlsl: " + problem}});
+  return out;
+}
+
+DrawnPasses drawHlsl(harness::VulkanHarness& gpu, const SphereDraws& d, const PreviewEnvironment& env,
+                     const PassShaders& s) {
+  const auto t0 = Clock::now();
+  PassShaders hlsl = s;
+  hlsl.fragment = hlslFragment(s.fragment, s.fragmentName);
+  hlsl.attributes = hlslFragment(s.attributes, "engine_attributes.frag");
+  const double crossMs = msSince(t0);
+  DrawnPasses out = drawOnVulkan(gpu, d, env, hlsl, kHlslSamplerShift);
+  out.pipelineMs += crossMs;
+  return out;
+}
+
 }  // namespace
 
 const std::vector<Target>& previewTargets() {
-  static const std::vector<Target> targets{Target::Spirv, Target::Glsl450, Target::Essl310, Target::Webgl2};
+  static const std::vector<Target> targets{Target::Spirv, Target::Glsl450, Target::Essl310, Target::Hlsl,
+                                           Target::Webgl2};
   return targets;
 }
 
 DrawnPasses drawPasses(Target target, harness::VulkanHarness& gpu, const SphereDraws& draws,
                        const PreviewEnvironment& env, const PassShaders& shaders) {
   if (target == Target::Spirv) return drawOnVulkan(gpu, draws, env, shaders);
+  if (target == Target::Hlsl) return drawHlsl(gpu, draws, env, shaders);
   return drawByName(target, draws, env, shaders);
 }
 

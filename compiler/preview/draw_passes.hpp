@@ -3,7 +3,8 @@
 // vertex shader. SPIR-V draws with Vulkan (harness/vulkan_graphics.hpp); glsl450 and essl310 are
 // the SPIR-V cross-compiled as the package ships them and drawn by the driver's own GLSL compiler
 // on EGL (glrun/gl_draw.hpp); webgl2 the same in ESSL 3.00, drawn by WebGL 2.0 in headless
-// Chromium (webgl/webgl_draw.hpp).
+// Chromium (webgl/webgl_draw.hpp); hlsl the package's HLSL compiled back by glslang's HLSL front
+// end and drawn with Vulkan.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -32,7 +33,7 @@ struct DrawnPasses {
   double pipelineMs = 0, renderMs = 0, attributesMs = 0;
 };
 
-// The targets preview draws with: spirv, glsl450, essl310, webgl2.
+// The targets preview draws with: spirv, glsl450, essl310, hlsl, webgl2 (msl: no Metal on Linux).
 const std::vector<Target>& previewTargets();
 
 // Throws DiagnosticError (E-TARGET-FAILED) when cross-compilation fails, and the language's

@@ -43,7 +43,8 @@ struct PreviewOptions {
   EnvironmentMode environmentMode = EnvironmentMode::IblLut;
   Precision precision = Precision::Fp32;
   // The language the spheres are drawn in (draw_passes.hpp previewTargets()): SPIR-V on the
-  // Vulkan device, or the cross-compiled GLSL 450, ESSL 3.10 (EGL) or WebGL 2.0 (Chromium).
+  // Vulkan device, or the cross-compiled GLSL 450, ESSL 3.10 (EGL), HLSL (glslang, Vulkan) or
+  // WebGL 2.0's ESSL 3.00 (Chromium).
   Target target = Target::Spirv;
   std::string sweep;  // a non-constant parameter of every material; empty: one sphere
   uint32_t sweepCount = kDefaultSweepCount;
