@@ -17,6 +17,8 @@
 #include <string>
 
 #include "glrun/gl_compute.hpp"
+#include "load/material_desc.hpp"
+#include "permute/permutation.hpp"
 #include "preview/draw_passes.hpp"
 #include "preview/preview.hpp"
 #include "preview/preview_scene.hpp"
@@ -214,4 +216,50 @@ TEST_CASE("preview --target refuses an unknown language and a missing chromium",
   CHECK(missing.exitCode == 4);
   CHECK(missing.output.find("MATBRICKS_CHROMIUM=") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "b"));
+}
+
+namespace preview_targets_test {
+
+// The sweep of one language: every shipped material under both environments, in every
+// environment mode its model supports, with all its lights together and with each alone (as
+// validate's sweep), each picture against the reference and the Vulkan picture's geometry.
+void sweepLanguage(Target target, const std::string& deviceWord) {
+  const ShaderLibrary& lib = test::shippedLibrary();
+  static const preview::PreviewEnvironment sky =
+      preview::prepareEnvironment(device(), lib, "sky", kTestCubeSize, kTestLutSize);
+  for (const auto& file : test::exampleMaterialFiles()) {
+    const MaterialDesc m = loadMaterialJson(file, lib);
+    for (const Permutation& perm : validationPermutationsFor(m, lib)) {
+      std::vector<std::vector<LightType>> lightSets = {perm.lights};
+      for (LightType light : perm.lights) lightSets.push_back({light});
+      for (const preview::PreviewEnvironment* env : {&studio(), &sky})
+        for (const auto& lights : lightSets) {
+          preview::PreviewOptions o = options(target, lights);
+          o.environmentMode = perm.environment;
+          const preview::PreviewResult r = preview::renderPreview(device(), lib, m, o, *env);
+          INFO(r.key << " under " << env->maps.name << " on " << r.device << ": max error/tolerance "
+                     << r.maxErrorRatio);
+          CHECK(r.device.find(deviceWord) != std::string::npos);
+          CHECK(r.passed());
+          o.target = Target::Spirv;
+          checkSameScene(r, preview::renderPreview(device(), lib, m, o, *env));
+        }
+    }
+  }
+}
+
+}  // namespace preview_targets_test
+
+// Hidden, one per language, so that CTest runs them side by side (preview_sweep_*, label sweep).
+TEST_CASE("every shipped material, light set and environment previews in GLSL 450", "[.preview-sweep-glsl450]") {
+  sweepLanguage(Target::Glsl450, "llvmpipe");
+}
+TEST_CASE("every shipped material, light set and environment previews in ESSL 3.10", "[.preview-sweep-essl310]") {
+  sweepLanguage(Target::Essl310, "llvmpipe");
+}
+TEST_CASE("every shipped material, light set and environment previews in HLSL", "[.preview-sweep-hlsl]") {
+  sweepLanguage(Target::Hlsl, "llvmpipe");
+}
+TEST_CASE("every shipped material, light set and environment previews in WebGL 2.0", "[.preview-sweep-webgl2]") {
+  sweepLanguage(Target::Webgl2, "WebGL 2.0");
 }
