@@ -15,6 +15,7 @@
 #include <string>
 #include <thread>
 
+#include "bench_stats.hpp"
 #include "harness/vulkan_harness.hpp"
 #include "library/shader_library.hpp"
 #include "preview/environment.hpp"
@@ -31,10 +32,7 @@ namespace {
 constexpr uint32_t kConvergedSamples = 64 * kPrefilterSamples;
 constexpr uint32_t kTexelsPerLevel = 48;
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
+using mb::bench::median;
 
 // Max and mean over `texels` of max_c |estimate(N) - estimate(64 x 1024)| / max_c estimate(64 x 1024).
 nlohmann::json noise(const std::string& name, uint32_t baseSize, const std::vector<uint32_t>& counts) {

@@ -18,6 +18,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "bench_stats.hpp"
 #include "load/material_desc.hpp"
 #include "permute/permutation.hpp"
 #include "validate/probe_language.hpp"
@@ -26,12 +27,7 @@ using namespace mb;
 
 namespace {
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using mb::bench::median;
 
 }  // namespace
 

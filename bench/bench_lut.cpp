@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "bench_stats.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "lut/lut_check.hpp"
 #include "lut/lut_gpu.hpp"
@@ -28,10 +29,7 @@ using namespace mb;
 
 namespace {
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
+using mb::bench::median;
 
 nlohmann::json channels(const std::array<lut::ChannelError, lut::kChannels>& e) {
   nlohmann::json out = nlohmann::json::object();

@@ -22,6 +22,7 @@
 #include <string>
 #include <thread>
 
+#include "bench_stats.hpp"
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
 #include "preview/preview.hpp"
@@ -33,19 +34,9 @@ namespace {
 
 double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using mb::bench::median;
 
-std::string loadAverage() {
-  std::ifstream in("/proc/loadavg");
-  std::string line;
-  std::getline(in, line);
-  return line;
-}
+using mb::bench::loadAverage;
 
 // GPU path of one result: everything renderPreview does except the reference and comparison.
 double gpuPathMs(const preview::PreviewResult& r) {

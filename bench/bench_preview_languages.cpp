@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 
+#include "bench_stats.hpp"
 #include "library/shader_library.hpp"
 #include "load/material_desc.hpp"
 #include "preview/draw_passes.hpp"
@@ -25,19 +26,9 @@ using namespace mb;
 
 namespace {
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using mb::bench::median;
 
-std::string loadAverage() {
-  std::ifstream in("/proc/loadavg");
-  std::string line;
-  std::getline(in, line);
-  return line;
-}
+using mb::bench::loadAverage;
 
 std::vector<std::string> split(const std::string& s) {
   std::vector<std::string> out;

@@ -32,6 +32,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "bench_stats.hpp"
 #include "compile/glsl_compiler.hpp"
 #include "compile/shader_cache.hpp"
 #include "permute/axes.hpp"
@@ -56,12 +57,7 @@ double processCpuMs() {
   return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using mb::bench::median;
 
 // A glTF texture becomes a user parameter named after it (load/gltf_mapping.cpp).
 bool textured(const MaterialDesc& m) {
