@@ -217,7 +217,7 @@ TEST_CASE("the fragment shader is cached with its kernel: a warm build compiles 
 // The names a WebGL 2.0 program binds: each `uniform NAME` block and sampler the reflection lists
 // is declared in the ESSL 3.00 under that name, and the vertex shader's outputs are the fragment
 // shader's inputs by name (ES 3.00 has no locations on them).
-TEST_CASE("--targets webgl2: ESSL 3.00 fragment shaders, the vertex shader once, and the names a program binds",
+TEST_CASE("compile --targets webgl2: ESSL 3.00 fragment shaders, the vertex shader once, and the names a program binds",
           "[fragment][package]") {
   const fs::path dir = test::freshTempDir("fragment", "webgl2");
   const std::string inputs = test::materialPath("satin_sheen.json") + " " + test::materialPath("velvet_green.json") +
